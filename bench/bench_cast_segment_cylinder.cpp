@@ -1,0 +1,138 @@
+// Segment cast against a cylinder: production, and FCL as far as it can
+// express the query (see fcl_adapter.hpp), on the same inputs in one run.
+//
+//   bench_cast_segment_cylinder [--benchmark_* flags]
+//   GEOMCHECK_BENCH_SEED=<n> bench_cast_segment_cylinder
+//
+// The batch: kBatch random segment/cylinder pairs from a fixed seed
+// (printed), exactly half of them hitting according to production. FCL has
+// no segment cast: BM_fcl_cast_capsule bisects on fcl::collide with a
+// radius-0 capsule (~50 FCL calls per query), BM_fcl_cast_ca runs
+// fcl::continuousCollide (conservative advancement) on a moving point.
+#include <benchmark/benchmark.h>
+
+#include <cmath>
+#include <cstdio>
+#include <utility>
+#include <vector>
+
+#include "bench_common.hpp"
+#include "bench_random.hpp"
+#include "geomcheck/cast_segment_cylinder.hpp"
+#include "geomcheck/oracles/fcl_adapter.hpp"
+
+namespace geomcheck::bench {
+namespace {
+
+constexpr std::size_t kBatch = 4096;
+
+struct Case {
+  Segment s;
+  Cylinder c;
+};
+
+struct Inputs {
+  std::uint64_t seed = 0;
+  std::vector<Case> cases;
+};
+
+Inputs make_inputs(std::uint64_t seed) {
+  Inputs in;
+  in.seed = seed;
+  Rng rng(seed);
+  std::size_t n_hit = 0, n_miss = 0;
+  while (in.cases.size() < kBatch) {
+    Case k;
+    k.c = rng.cylinder();
+    const Vec3 mid = 0.5 * k.c.p + 0.5 * k.c.q;
+    const double reach = 0.5 * length(k.c.q - k.c.p) + k.c.r;
+    k.s.a = mid + rng.in_box(reach + 3.0);
+    k.s.b = mid + rng.in_box(reach + 3.0);
+    const bool hit = cast(k.s, k.c).hit;
+    if (hit ? n_hit >= kBatch / 2 : n_miss >= kBatch / 2) continue;
+    (hit ? n_hit : n_miss)++;
+    in.cases.push_back(k);
+  }
+  for (std::size_t i = in.cases.size(); i > 1; --i) std::swap(in.cases[i - 1], in.cases[rng.next() % i]);
+  return in;
+}
+
+const Inputs& inputs() {
+  static const Inputs in = make_inputs(seed_from_env());
+  return in;
+}
+
+void BM_prod_cast(benchmark::State& state) {
+  const auto& cases = inputs().cases;
+  for (auto _ : state) {
+    for (const Case& k : cases) benchmark::DoNotOptimize(cast(k.s, k.c));
+  }
+  set_per_query(state, cases.size());
+}
+BENCHMARK(BM_prod_cast);
+
+void BM_fcl_cast_capsule(benchmark::State& state) {
+  const auto& cases = inputs().cases;
+  for (auto _ : state) {
+    for (const Case& k : cases)
+      benchmark::DoNotOptimize(oracles::fcl_cast(k.s, k.c, oracles::FclCastMethod::kCapsuleBisection));
+  }
+  set_per_query(state, cases.size());
+}
+BENCHMARK(BM_fcl_cast_capsule)->Unit(benchmark::kMillisecond);
+
+void BM_fcl_cast_ca(benchmark::State& state) {
+  const auto& cases = inputs().cases;
+  for (auto _ : state) {
+    for (const Case& k : cases)
+      benchmark::DoNotOptimize(oracles::fcl_cast(k.s, k.c, oracles::FclCastMethod::kConservativeAdvancement));
+  }
+  set_per_query(state, cases.size());
+}
+BENCHMARK(BM_fcl_cast_ca)->Unit(benchmark::kMillisecond);
+
+// ---------------------------------------------------------------------------
+// Exact oracle: to be added here, on the same `inputs().cases`, e.g.
+//   void BM_oracle_cast(benchmark::State&);   // exact first-hit parameter
+// registered with BENCHMARK(...) and set_per_query(state, cases.size()),
+// plus its ratio in the `ratios` list in main() below
+// ({"cast oracle/prod", {"BM_oracle_cast", "BM_prod_cast"}}).
+// ---------------------------------------------------------------------------
+
+void print_inputs(const Inputs& in) {
+  std::size_t prod_hits = 0, cap_hits = 0, cap_agree = 0, ca_hits = 0, ca_agree = 0;
+  double cap_err = 0, ca_err = 0;
+  for (const Case& k : in.cases) {
+    const CastHit p = cast(k.s, k.c);
+    const oracles::PeerCast cap = oracles::fcl_cast(k.s, k.c, oracles::FclCastMethod::kCapsuleBisection);
+    const oracles::PeerCast ca = oracles::fcl_cast(k.s, k.c, oracles::FclCastMethod::kConservativeAdvancement);
+    prod_hits += p.hit;
+    cap_hits += cap.hit;
+    ca_hits += ca.hit;
+    cap_agree += (cap.ok && cap.hit == p.hit);
+    ca_agree += (ca.ok && ca.hit == p.hit);
+    if (p.hit && cap.ok && cap.hit) cap_err = std::fmax(cap_err, std::fabs(cap.t - p.t));
+    if (p.hit && ca.ok && ca.hit) ca_err = std::fmax(ca_err, std::fabs(ca.t - p.t));
+  }
+  std::printf("segment/cylinder batch: %zu cases, seed = %llu (0x%llx; GEOMCHECK_BENCH_SEED overrides)\n",
+              in.cases.size(), static_cast<unsigned long long>(in.seed), static_cast<unsigned long long>(in.seed));
+  std::printf("hits: production %zu; FCL capsule %zu (verdicts agree %zu/%zu, max |dt| %.3g); "
+              "FCL CA %zu (agree %zu/%zu, max |dt| %.3g)\n\n",
+              prod_hits, cap_hits, cap_agree, in.cases.size(), cap_err, ca_hits, ca_agree, in.cases.size(), ca_err);
+  std::fflush(stdout);
+}
+
+}  // namespace
+}  // namespace geomcheck::bench
+
+int main(int argc, char** argv) {
+  using namespace geomcheck::bench;
+  print_inputs(inputs());
+  CaptureReporter reporter(kBatch);
+  if (int rc = run_benchmarks(argc, argv, reporter)) return rc;
+  print_summary(reporter, {
+                              {"cast fcl-capsule/prod", {"BM_fcl_cast_capsule", "BM_prod_cast"}},
+                              {"cast fcl-ca/prod", {"BM_fcl_cast_ca", "BM_prod_cast"}},
+                          });
+  return 0;
+}

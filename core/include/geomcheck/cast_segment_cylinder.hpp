@@ -1,0 +1,40 @@
+// geomcheck — cast_segment_cylinder: segment cast (line query) against a cylinder.
+//
+// Semantics: the segment S(t) = a + t (b - a), t in [0, 1], against the
+// closed solid cylinder. The result is the FIRST t at which S(t) lies in the
+// cylinder. If the start a is already in the cylinder (touching included):
+// t = 0, `starts_inside`, point = a, normal = zero vector. Otherwise the hit
+// is on the surface: `normal` is the cylinder's outward normal there (+-axis
+// on a cap, radial on the side; at a rim either is acceptable).
+//
+// Algorithm: Ericson, Real-Time Collision Detection, IntersectSegmentCylinder
+// (p. 197), as used by the engine ("Line vs Cylinder"): the quadratic in t
+// for the infinite cylinder, then the end-cap disks for hits beyond P or Q.
+// Differences from the printed form, each a known weakness of it:
+//   * the quadratic's coefficients are built from cross products (|n x d|^2,
+//     (m x d).(n x d), |m x d|^2 - r^2 |d|^2) instead of differences of
+//     products, which cancel catastrophically far from the axis origin;
+//   * the discriminant is dd (r^2 |n x d|^2 - (n.(m x d))^2) (Lagrange's
+//     identity), not b^2 - ac, which cancels catastrophically when the line
+//     passes near the axis (regression 0001);
+//   * the entry root is taken in the stable form c / (-b + sqrt(disc)), so
+//     there is no absolute "parallel" epsilon and the method is scale free;
+//   * a start inside the cylinder returns t = 0 (the printed form rejects the
+//     negative root and reports a miss);
+//   * cap hits are tested whenever the segment crosses a cap plane from
+//     outside, not only when the side root lands beyond a cap (the printed
+//     form misses cap entries whose side root lies before t = 0), and the
+//     p-side cap test uses k + t(2 mn + t nn) (printed: k + 2t(mn + t nn)).
+//
+// Invalid input (is_valid) gives "no hit".
+#pragma once
+
+#include "geomcheck/results.hpp"
+#include "geomcheck/shapes.hpp"
+
+namespace geomcheck {
+
+/// First hit of segment `s` (from s.a towards s.b) with the solid cylinder.
+CastHit cast(const Segment& s, const Cylinder& c);
+
+}  // namespace geomcheck

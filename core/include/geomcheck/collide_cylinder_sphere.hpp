@@ -1,0 +1,34 @@
+// geomcheck — collide_cylinder_sphere: cylinder (A) against sphere (B).
+//
+// Semantics: both shapes are closed solids (shapes.hpp); touching counts as
+// overlapping. `collide` CLAIMS THE TRUE PENETRATION DEPTH: when the shapes
+// overlap, `depth` is the minimum translation distance and `normal` (unit,
+// from the cylinder towards the sphere) is a minimal-translation direction;
+// `point` lies in both solids (the closest cylinder point to the sphere
+// centre, or the centre itself when it is inside the cylinder).
+//
+// Algorithm (engine talk "Cylinder Collision", sphere vs cylinder): axial
+// and radial offsets of the sphere centre from the cylinder's mid point;
+// branch on inside the slab / beyond a cap / beyond the rim. Outside, the
+// closest cylinder point gives distance and normal; inside, the nearer of
+// the cap and side exits gives the depth.
+//
+// Invalid input (is_valid) gives "no overlap".
+#pragma once
+
+#include "geomcheck/results.hpp"
+#include "geomcheck/shapes.hpp"
+
+namespace geomcheck {
+
+/// Do the closed cylinder and the closed ball intersect?
+bool overlap(const Cylinder& a, const Sphere& b);
+/// Contact with true penetration depth; normal from the cylinder to the sphere.
+Contact collide(const Cylinder& a, const Sphere& b);
+
+/// Argument-order wrapper: same verdict.
+inline bool overlap(const Sphere& a, const Cylinder& b) { return overlap(b, a); }
+/// Argument-order wrapper: normal flipped (from the sphere to the cylinder).
+inline Contact collide(const Sphere& a, const Cylinder& b) { return flipped(collide(b, a)); }
+
+}  // namespace geomcheck

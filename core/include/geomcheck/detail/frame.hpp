@@ -1,0 +1,32 @@
+// geomcheck — internal helpers shared by the production cylinder queries.
+#pragma once
+
+#include <cmath>
+
+#include "geomcheck/shapes.hpp"
+
+namespace geomcheck::detail {
+
+/// Unit vector along v, scaled first so that tiny or huge vectors neither
+/// underflow nor overflow. v must be non-zero and finite.
+inline Vec3 normalized(Vec3 v) {
+  const double m = max_abs(v);
+  const Vec3 s = (1.0 / m) * v;
+  return (1.0 / length(s)) * s;
+}
+
+/// The cylinder's mid point, unit axis and half height.
+struct AxisFrame {
+  Vec3 mid;
+  Vec3 u;
+  double half;
+  explicit AxisFrame(const Cylinder& c) {
+    const Vec3 d = c.q - c.p;
+    const double len = length(d);
+    u = (1.0 / len) * d;
+    half = 0.5 * len;
+    mid = 0.5 * (c.p + c.q);
+  }
+};
+
+}  // namespace geomcheck::detail

@@ -1,0 +1,113 @@
+// geomcheck — the single registry of query ids.
+//
+// One line per query in GEOMCHECK_QUERY_LIST. Everything generic (case files,
+// replay, campaigns, reports, fuzz target names, corpus folders) derives from
+// this list, so adding a pair is: write the query file, add its line here,
+// then give it an oracle adapter and a check function.
+//
+//   X(id, kind, ShapeA, ShapeB, summary)
+//
+// The id is also the file stem of the query, the name of its test, its fuzz
+// binary, its corpus folder and its report row.
+#pragma once
+
+#include <cstddef>
+#include <cstring>
+#include <optional>
+#include <string_view>
+
+#include "geomcheck/shapes.hpp"
+
+#define GEOMCHECK_QUERY_LIST(X)                                                          \
+  X(collide_cylinder_sphere, Collide, Cylinder, Sphere,                                  \
+    "overlap/collide(Cylinder, Sphere): true penetration depth, minimal translation")   \
+  X(cast_segment_cylinder, Cast, Segment, Cylinder,                                      \
+    "cast(Segment, Cylinder): first hit from the segment start")
+
+namespace geomcheck {
+
+/// What a query answers.
+enum class QueryKind {
+  Collide,  ///< overlap(A, B) -> bool and collide(A, B) -> Contact
+  Cast,     ///< cast(Segment, B) -> CastHit
+  Sweep,    ///< sweep(Sphere, delta, B) -> CastHit
+};
+
+/// Every registered query.
+enum class QueryId {
+#define GEOMCHECK_X(id, kind, A, B, summary) id,
+  GEOMCHECK_QUERY_LIST(GEOMCHECK_X)
+#undef GEOMCHECK_X
+};
+
+/// Static facts about one query.
+struct QueryInfo {
+  QueryId id;
+  const char* name;
+  QueryKind kind;
+  const char* shape_a;
+  const char* shape_b;
+  const char* summary;
+};
+
+inline constexpr QueryInfo kQueries[] = {
+#define GEOMCHECK_X(id, kind, A, B, summary) {QueryId::id, #id, QueryKind::kind, #A, #B, summary},
+    GEOMCHECK_QUERY_LIST(GEOMCHECK_X)
+#undef GEOMCHECK_X
+};
+inline constexpr std::size_t kNumQueries = sizeof(kQueries) / sizeof(kQueries[0]);
+
+/// The info row of a query id.
+constexpr const QueryInfo& info(QueryId id) { return kQueries[static_cast<std::size_t>(id)]; }
+
+/// Looks a query up by its id string.
+inline std::optional<QueryId> query_from_name(std::string_view name) {
+  for (const auto& q : kQueries)
+    if (name == q.name) return q.id;
+  return std::nullopt;
+}
+
+/// A case of a two-shape query: the shapes in the query's argument order.
+template <class A, class B>
+struct PairCase {
+  using ShapeA = A;
+  using ShapeB = B;
+  A a;
+  B b;
+};
+
+/// Maps a query id to its shape types and case type.
+template <QueryId Q> struct QueryTraits;
+#define GEOMCHECK_X(id_, kind_, A, B, summary)                \
+  template <> struct QueryTraits<QueryId::id_> {              \
+    using ShapeA = A;                                         \
+    using ShapeB = B;                                         \
+    using Case = PairCase<A, B>;                              \
+    static constexpr QueryId id = QueryId::id_;               \
+    static constexpr QueryKind kind = QueryKind::kind_;       \
+    static constexpr const char* name = #id_;                 \
+  };
+GEOMCHECK_QUERY_LIST(GEOMCHECK_X)
+#undef GEOMCHECK_X
+
+/// Calls f(std::integral_constant<QueryId, id>{}) for every registered query.
+template <class F>
+void for_each_query(F&& f) {
+#define GEOMCHECK_X(id, kind, A, B, summary) f(std::integral_constant<QueryId, QueryId::id>{});
+  GEOMCHECK_QUERY_LIST(GEOMCHECK_X)
+#undef GEOMCHECK_X
+}
+
+/// Calls f(std::integral_constant<QueryId, id>{}) for the one query `id`.
+template <class F>
+decltype(auto) visit_query(QueryId id, F&& f) {
+  switch (id) {
+#define GEOMCHECK_X(id_, kind, A, B, summary) \
+  case QueryId::id_: return f(std::integral_constant<QueryId, QueryId::id_>{});
+    GEOMCHECK_QUERY_LIST(GEOMCHECK_X)
+#undef GEOMCHECK_X
+  }
+  return f(std::integral_constant<QueryId, QueryId::collide_cylinder_sphere>{});
+}
+
+}  // namespace geomcheck

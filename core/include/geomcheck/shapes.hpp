@@ -1,0 +1,69 @@
+// geomcheck — the shapes, with the exact meaning of their stored doubles.
+//
+// Every shape is a CLOSED solid defined exactly by the doubles it stores
+// (each finite double is an exact dyadic rational, so the exact oracles see
+// exactly what production sees). Touching counts as overlapping.
+//
+//   Segment{a, b}      the closed segment ab; a == b is a point.
+//   Sphere{c, r}       the closed ball |x - c| <= r, r >= 0.
+//   Capsule{p, q, r}   segment pq swept by a ball of radius r.
+//   Cylinder{p, q, r}  { x : 0 <= (x-p).(q-p) <= |q-p|^2  and
+//                            |(x-p) x (q-p)|^2 <= r^2 |q-p|^2 }
+//                      flat caps, sharp rims; p == q is invalid; r == 0 is
+//                      the segment pq.
+//   Obb{c, axes, e}    { c + sum_i t_i e_i axes_i : |t_i| <= 1 }, the
+//                      parallelepiped spanned by the stored axes (production
+//                      may assume them orthonormal).
+//   Triangle{a, b, c}  the closed triangle; a degenerate one is its segment
+//                      or point.
+//
+// `is_valid` is the single gate: non-finite values, negative radii or
+// extents and a zero-length cylinder axis are invalid, and every query
+// answers "no overlap / no hit" for invalid input.
+#pragma once
+
+#include <array>
+#include <cmath>
+
+#include "geomcheck/vec3.hpp"
+
+namespace geomcheck {
+
+/// Closed segment from `a` to `b`.
+struct Segment { Vec3 a, b; };
+/// Closed ball of centre `c` and radius `r`.
+struct Sphere { Vec3 c; double r = 0; };
+/// Segment `pq` swept by a ball of radius `r`.
+struct Capsule { Vec3 p, q; double r = 0; };
+/// Flat-capped cylinder with cap centres `p`, `q` and radius `r`.
+struct Cylinder { Vec3 p, q; double r = 0; };
+/// Parallelepiped with centre `c`, stored axes and half extents `e` along them.
+struct Obb { Vec3 c; std::array<Vec3, 3> axes{{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}}; Vec3 e; };
+/// Closed triangle.
+struct Triangle { Vec3 a, b, c; };
+
+/// Valid: both endpoints finite.
+inline bool is_valid(const Segment& s) { return is_finite(s.a) && is_finite(s.b); }
+/// Valid: finite centre, finite radius >= 0.
+inline bool is_valid(const Sphere& s) { return is_finite(s.c) && std::isfinite(s.r) && s.r >= 0; }
+/// Valid: finite endpoints, finite radius >= 0.
+inline bool is_valid(const Capsule& s) {
+  return is_finite(s.p) && is_finite(s.q) && std::isfinite(s.r) && s.r >= 0;
+}
+/// Valid: finite endpoints, p != q, finite radius >= 0, and |q-p|^2 finite
+/// (an axis whose squared length overflows cannot be evaluated in doubles).
+inline bool is_valid(const Cylinder& s) {
+  if (!is_finite(s.p) || !is_finite(s.q) || !std::isfinite(s.r) || s.r < 0 || s.p == s.q) return false;
+  const Vec3 d = s.q - s.p;
+  const double dd = dot(d, d);
+  return is_finite(d) && std::isfinite(dd) && dd > 0;
+}
+/// Valid: finite centre, axes and extents, extents >= 0.
+inline bool is_valid(const Obb& s) {
+  return is_finite(s.c) && is_finite(s.axes[0]) && is_finite(s.axes[1]) && is_finite(s.axes[2]) &&
+         is_finite(s.e) && s.e.x >= 0 && s.e.y >= 0 && s.e.z >= 0;
+}
+/// Valid: finite vertices.
+inline bool is_valid(const Triangle& s) { return is_finite(s.a) && is_finite(s.b) && is_finite(s.c); }
+
+}  // namespace geomcheck

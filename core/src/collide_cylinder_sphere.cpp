@@ -1,0 +1,70 @@
+#include "geomcheck/collide_cylinder_sphere.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "geomcheck/detail/frame.hpp"
+
+namespace geomcheck {
+
+bool overlap(const Cylinder& cyl, const Sphere& s) {
+  if (!is_valid(cyl) || !is_valid(s)) return false;
+  const detail::AxisFrame f(cyl);
+  const Vec3 v = s.c - f.mid;
+  const double ax = dot(v, f.u);
+  const Vec3 w = v - ax * f.u;
+  const double rho = length(w);
+  const double ea = std::max(std::fabs(ax) - f.half, 0.0);
+  const double er = std::max(rho - cyl.r, 0.0);
+  return ea * ea + er * er <= s.r * s.r;
+}
+
+Contact collide(const Cylinder& cyl, const Sphere& s) {
+  Contact out;
+  if (!is_valid(cyl) || !is_valid(s)) return out;
+  const detail::AxisFrame f(cyl);
+  const Vec3 v = s.c - f.mid;
+  const double ax = dot(v, f.u);
+  const Vec3 w = v - ax * f.u;
+  const double rho = length(w);
+  const double aax = std::fabs(ax);
+
+  if (aax <= f.half && rho <= cyl.r) {
+    // Centre inside the cylinder: leave through the nearer cap or the side.
+    const double cap_gap = f.half - aax;
+    const double side_gap = cyl.r - rho;
+    out.hit = true;
+    out.point = s.c;
+    if (cap_gap <= side_gap) {
+      out.normal = ax >= 0 ? f.u : -f.u;
+      out.depth = s.r + cap_gap;
+    } else {
+      out.normal = rho > 0 ? detail::normalized(w) : any_perpendicular(f.u);
+      out.depth = s.r + side_gap;
+    }
+    return out;
+  }
+
+  // Centre outside: closest point of the cylinder by clamping both offsets.
+  const double cax = std::clamp(ax, -f.half, f.half);
+  const Vec3 radial = rho > cyl.r ? (cyl.r / rho) * w : w;
+  const Vec3 x = f.mid + cax * f.u + radial;
+  const double ea = std::max(aax - f.half, 0.0);
+  const double er = std::max(rho - cyl.r, 0.0);
+  // The same predicate as overlap(), so that the two never disagree.
+  const double dist2 = ea * ea + er * er;
+  if (!(dist2 <= s.r * s.r)) return out;
+  const double dist = std::sqrt(dist2);
+  out.hit = true;
+  out.point = x;
+  // Direction from the closest point to the centre, built from the offsets
+  // (exact directions of the cap normal and the radial direction) so that a
+  // tiny gap does not lose the direction to cancellation.
+  const Vec3 rad_dir = rho > 0 ? detail::normalized(w) : any_perpendicular(f.u);
+  const Vec3 n = (ax >= 0 ? ea : -ea) * f.u + er * rad_dir;
+  out.normal = detail::normalized(n);
+  out.depth = std::max(s.r - dist, 0.0);
+  return out;
+}
+
+}  // namespace geomcheck

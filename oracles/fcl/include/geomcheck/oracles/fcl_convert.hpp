@@ -1,0 +1,54 @@
+// geomcheck — conversion of geomcheck shapes to FCL geometry and poses, and
+// the FCL calls on already converted shapes.
+//
+// This header includes FCL (and Eigen). Use fcl_adapter.hpp unless you need
+// FCL types: the benchmarks convert their inputs once, outside the timed
+// loop, so that they time FCL's query and not the conversion.
+//
+// Conventions and caveats are documented in fcl_adapter.hpp.
+#pragma once
+
+#include <fcl/geometry/shape/capsule.h>
+#include <fcl/geometry/shape/cylinder.h>
+#include <fcl/geometry/shape/sphere.h>
+#include <fcl/math/constants.h>
+
+#include "geomcheck/oracles/fcl_adapter.hpp"
+#include "geomcheck/shapes.hpp"
+
+namespace geomcheck::oracles {
+
+/// Rotation whose third column is the unit vector `u` (it takes +z to u):
+/// columns (e1, e2, u) with e1 = any_perpendicular(u), e2 = u x e1.
+/// Right-handed and orthonormal to rounding for every direction, including
+/// -z. `u` must be unit.
+fcl::Matrix3d fcl_rotation_z_to(const Vec3& u);
+
+/// A geomcheck cylinder as FCL sees it. Requires is_valid(c).
+struct FclCylinder {
+  fcl::Cylinderd shape;
+  fcl::Transform3d pose;
+  explicit FclCylinder(const Cylinder& c);
+};
+
+/// A geomcheck sphere as FCL sees it. Requires is_valid(s).
+struct FclSphere {
+  fcl::Sphered shape;
+  fcl::Transform3d pose;
+  explicit FclSphere(const Sphere& s);
+};
+
+/// A cylinder/sphere pair converted once; the `*_prepared` calls run only
+/// FCL's query and the conversion of its result. Requires valid shapes.
+struct FclCylinderSphere {
+  FclCylinder a;
+  FclSphere b;
+  FclCylinderSphere(const Cylinder& cyl, const Sphere& sph) : a(cyl), b(sph) {}
+};
+
+/// fcl_overlap on a converted pair (no validity check; exceptions propagate).
+bool fcl_overlap_prepared(const FclCylinderSphere& pair);
+/// fcl_collide on a converted pair (no validity check; exceptions are caught).
+PeerContact fcl_collide_prepared(const FclCylinderSphere& pair);
+
+}  // namespace geomcheck::oracles

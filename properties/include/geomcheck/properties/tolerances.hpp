@@ -1,0 +1,49 @@
+// geomcheck — every tolerance bound of the harness, in one place.
+//
+// All bounds are multiples of the case's `scale` (the largest coordinate
+// magnitude or extent in the case; oracle::case_scale). They mirror the
+// precision table in the README; tests/test_precision.cpp asserts, on a
+// fixed seed, that the worst observed error of each lies in
+// [bound / 100, bound], so a bound that is far too loose fails as stale.
+//
+//   verdict  production's yes/no may differ from the exact verdict only when
+//            the certified |signed distance| <= verdict * scale (casts: when
+//            the segment comes within verdict * scale of the surface, tested
+//            exactly with the cylinder grown / shrunk by that much).
+//   depth    |depth - true penetration depth|
+//   normal   overlap measured along production's normal minus the true
+//            penetration depth (>= 0; 0 for a minimal-translation normal);
+//            casts: distance of the normal from the exact outward normal
+//            (normal cone at a rim) at production's hit point.
+//   point    how far production's point lies outside A or B (max of both)
+//   t        casts: distance of S(t) from the cylinder surface, and no point
+//            of S([0, t]) deeper than this inside (bracketing)
+//   unit     | |normal| - 1 | (absolute, not scaled)
+#pragma once
+
+#include "geomcheck/registry.hpp"
+
+namespace geomcheck {
+
+/// The bounds of one query (multiples of scale, but `unit`).
+struct Tolerances {
+  double verdict;
+  double depth;
+  double normal;
+  double point;
+  double t;
+  double unit;
+};
+
+/// Bounds per query id.
+constexpr Tolerances tolerances(QueryId id) {
+  switch (id) {
+    case QueryId::collide_cylinder_sphere:
+      return {/*verdict*/ 1e-14, /*depth*/ 1e-14, /*normal*/ 1e-14, /*point*/ 1e-14, /*t*/ 0, /*unit*/ 1e-14};
+    case QueryId::cast_segment_cylinder:
+      return {/*verdict*/ 1e-14, /*depth*/ 0, /*normal*/ 1e-10, /*point*/ 1e-14, /*t*/ 1e-14, /*unit*/ 1e-14};
+  }
+  return {};
+}
+
+}  // namespace geomcheck

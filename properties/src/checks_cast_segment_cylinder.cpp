@@ -1,0 +1,263 @@
+#include <cmath>
+#include <sstream>
+
+#include "common.hpp"
+#include "geomcheck/cast_segment_cylinder.hpp"
+#include "geomcheck/oracles/cast_segment_cylinder.hpp"
+#include "geomcheck/oracles/cylinder_sphere.hpp"
+#include "geomcheck/properties/checks.hpp"
+#include "geomcheck/properties/tolerances.hpp"
+#include "geomcheck/shape_traits.hpp"
+#include "moves.hpp"
+
+namespace geomcheck {
+
+namespace {
+
+constexpr QueryId kId = QueryId::cast_segment_cylinder;
+using oracle::Q;
+using oracle::QInterval;
+using oracle::QVec;
+
+std::string describe(const CastHit& h) {
+  std::ostringstream o;
+  o << "hit=" << (h.hit ? "yes" : "no");
+  if (h.hit)
+    o << " t=" << fmt("%.17g", h.t) << " starts_inside=" << (h.starts_inside ? "yes" : "no")
+      << " point=" << vec(h.point) << " normal=" << vec(h.normal);
+  return o.str();
+}
+
+bool valid_case(const SegmentCylinderCase& c) { return is_valid(c.a) && is_valid(c.b); }
+
+bool finite_hit(const CastHit& h) { return std::isfinite(h.t) && is_finite(h.point) && is_finite(h.normal); }
+
+// Does the segment meet the cylinder grown (sign > 0) or shrunk (sign < 0) by delta?
+bool meets_adjusted(const oracle::QSegment& s, const oracle::QCylinder& c, const Q& delta, int sign) {
+  if (sign > 0) return oracle::solve_cast(s, oracle::grown(c, delta)).hit;
+  const auto sh = oracle::shrunk(c, delta);
+  return sh && oracle::solve_cast(s, *sh).hit;
+}
+
+// Unit vector (as doubles) of an exact rational vector.
+Vec3 unit_of(const QVec& v) {
+  const QInterval len = oracle::sqrt_interval(oracle::dot(v, v));
+  const Q l = (len.lo + len.hi) / 2;
+  return {oracle::to_double(v.x / l), oracle::to_double(v.y / l), oracle::to_double(v.z / l)};
+}
+
+// Distance of unit n from the cone spanned by unit generators g1, g2 (orthogonal).
+double cone_distance(Vec3 n, Vec3 g1, Vec3 g2) {
+  const double a = dot(n, g1), b = dot(n, g2);
+  const Vec3 proj = std::fmax(a, 0.0) * g1 + std::fmax(b, 0.0) * g2;
+  const double pl = length(proj);
+  if (pl == 0) return length(n);
+  return length(n - (1.0 / pl) * proj);
+}
+
+// Error of production's outward normal at its own hit point x (exact).
+double normal_error(const oracle::QCylinder& c, const QVec& x, Vec3 n, double near) {
+  const QVec d = c.q - c.p;
+  const Q dd = oracle::dot(d, d);
+  const QVec xr = x - c.p;
+  const Q ax = oracle::dot(xr, d);
+  const QInterval len = oracle::sqrt_interval(dd);
+  const Q qnear = oracle::to_q(near);
+  // Gaps to the two cap planes and to the side, certified.
+  const QInterval gp = oracle::point(ax < 0 ? -ax : ax) / len;
+  const Q axq = dd - ax;
+  const QInterval gq = oracle::point(axq < 0 ? -axq : axq) / len;
+  const QVec perp = xr - (ax / dd) * d;
+  const Q rho2 = oracle::dot(perp, perp);
+  QInterval gs = oracle::sqrt_interval(rho2) - oracle::point(c.r);
+  if (gs.lo < 0 && gs.hi < 0) gs = -gs;
+  else if (gs.lo < 0) gs = {Q(0), gs.hi > -gs.lo ? gs.hi : -gs.lo};
+  const Vec3 u = unit_of(d);
+  const bool near_p = gp.lo <= qnear, near_q = gq.lo <= qnear, near_s = gs.lo <= qnear && rho2 > 0;
+  const Vec3 radial = rho2 > 0 ? unit_of(perp) : Vec3{};
+  double best = INFINITY;
+  if (near_p) best = std::fmin(best, length(n - (-u)));
+  if (near_q) best = std::fmin(best, length(n - u));
+  if (near_s) best = std::fmin(best, length(n - radial));
+  if (near_s && near_p) best = std::fmin(best, cone_distance(n, -u, radial));
+  if (near_s && near_q) best = std::fmin(best, cone_distance(n, u, radial));
+  return best;  // INFINITY when x is near no feature (then t_err reports it)
+}
+
+}  // namespace
+
+const CastSegmentCylinderImpl kProductionCastSegmentCylinder = {
+    "production", [](const Segment& s, const Cylinder& c) { return cast(s, c); }};
+
+Evaluation evaluate(const SegmentCylinderCase& c, const CastSegmentCylinderImpl& impl) {
+  Evaluation e;
+  const CastHit h = impl.cast(c.a, c.b);
+  e.prod_hit = h.hit;
+  e.prod_text = describe(h);
+  e.valid = valid_case(c);
+  if (!e.valid) {
+    e.truth_text = "invalid input: no hit";
+    e.disagree = h.hit;
+    return e;
+  }
+  const Tolerances tol = tolerances(kId);
+  e.scale = oracle::case_scale(c.a, c.b);
+  const oracle::QSegment qs = oracle::to_q(c.a);
+  const oracle::QCylinder qc = oracle::to_q(c.b);
+  const oracle::CastTruth truth = oracle::solve_cast(qs, qc);
+  e.truth_hit = truth.hit;
+  e.verdict = truth.hit ? oracle::Verdict::Overlapping : oracle::Verdict::Separated;
+  e.truth_text = truth.hit ? std::string("hit ") + oracle::to_string(truth.feature) + " t=" + oracle::to_string(truth.t)
+                           : std::string("miss");
+  e.disagree = e.prod_hit != e.truth_hit;
+  const Q band = oracle::to_q(tol.verdict * e.scale);
+  // Within the band of touching: a miss that meets the grown cylinder, or a
+  // hit that never gets band-deep into the cylinder.
+  e.near_boundary = truth.hit ? !meets_adjusted(qs, qc, band, -1) : meets_adjusted(qs, qc, band, +1);
+  if (e.disagree) {
+    e.excused = e.near_boundary;
+    return e;
+  }
+  if (!h.hit || !truth.hit) return e;
+  if (!finite_hit(h) || !(h.t >= 0 && h.t <= 1)) {
+    e.extra_failure = "t outside [0, 1] or non-finite output";
+    return e;
+  }
+  // Production's hit point, exactly: S(t) for its own t.
+  const QVec x = qs.a + oracle::to_q(h.t) * (qs.b - qs.a);
+  const QInterval sd = oracle::signed_distance(qc, x);
+  if (h.starts_inside) {
+    e.t_err = sd.hi > 0 ? oracle::to_double_up(sd.hi) / e.scale : 0.0;
+  } else {
+    const Q a = sd.lo < 0 ? -sd.lo : sd.lo, b = sd.hi < 0 ? -sd.hi : sd.hi;
+    e.t_err = oracle::to_double_up(a > b ? a : b) / e.scale;
+    // Bracketing: no point of S([0, t]) is more than the t bound inside.
+    const oracle::QSegment prefix{qs.a, x};
+    if (meets_adjusted(prefix, qc, oracle::to_q(tol.t * e.scale), -1))
+      e.extra_failure = "S([0, t]) reaches deeper than the t bound into the cylinder (hit reported too late)";
+    e.unit_err = std::fabs(length(h.normal) - 1);
+    e.normal_err = normal_error(qc, x, h.normal, 4 * tol.t * e.scale);
+  }
+  // point must be S(t).
+  const QVec dp = oracle::to_q(h.point) - x;
+  e.point_err = oracle::to_double_up(oracle::sqrt_interval(oracle::dot(dp, dp)).hi) / e.scale;
+  return e;
+}
+
+CheckResult check_oracle(const SegmentCylinderCase& c, const CastSegmentCylinderImpl& impl) {
+  return judge(kId, evaluate(c, impl));
+}
+
+CheckResult check_consistency(const SegmentCylinderCase& c, const CastSegmentCylinderImpl& impl) {
+  const CastHit h = impl.cast(c.a, c.b);
+  if (!h.hit) return std::nullopt;
+  if (!finite_hit(h)) return Failure{"consistency-finite", describe(h)};
+  if (!(h.t >= 0 && h.t <= 1)) return Failure{"consistency-t-range", describe(h)};
+  if (h.starts_inside && (h.t != 0 || !(h.normal == Vec3{})))
+    return Failure{"consistency-starts-inside", "starts_inside needs t == 0 and a zero normal: " + describe(h)};
+  if (!h.starts_inside && std::fabs(length(h.normal) - 1) > tolerances(kId).unit)
+    return Failure{"consistency-unit-normal", describe(h)};
+  if (!valid_case(c)) return std::nullopt;
+  const double scale = oracle::case_scale(c.a, c.b);
+  const Vec3 s = c.a.a + h.t * (c.a.b - c.a.a);
+  if (length(h.point - s) > tolerances(kId).point * scale)
+    return Failure{"consistency-point-is-S(t)", describe(h) + " but S(t) = " + vec(s)};
+  return std::nullopt;
+}
+
+namespace {
+// Two production answers that should agree on hit/miss: fail unless one of
+// the two cases is inside the band.
+CheckResult same_verdict(const char* what, const SegmentCylinderCase& c0, const SegmentCylinderCase& c1,
+                         const CastSegmentCylinderImpl& impl) {
+  const CastHit h0 = impl.cast(c0.a, c0.b), h1 = impl.cast(c1.a, c1.b);
+  if (h0.hit == h1.hit) return std::nullopt;
+  const Evaluation e0 = evaluate(c0, impl), e1 = evaluate(c1, impl);
+  if (e0.near_boundary || e1.near_boundary) return std::nullopt;
+  return Failure{what, describe(h0) + " vs " + describe(h1) + "; oracle: " + e0.truth_text + " / " + e1.truth_text};
+}
+}  // namespace
+
+CheckResult check_symmetry(const SegmentCylinderCase& c, const CastSegmentCylinderImpl& impl) {
+  if (!valid_case(c)) return std::nullopt;
+  if (auto f = same_verdict("symmetry-segment-reversed", c, {{c.a.b, c.a.a}, c.b}, impl)) return f;
+  const SegmentCylinderCase sw{c.a, {c.b.q, c.b.p, c.b.r}};
+  if (auto f = same_verdict("symmetry-caps-swapped", c, sw, impl)) return f;
+  const CastHit h0 = impl.cast(c.a, c.b), h1 = impl.cast(sw.a, sw.b);
+  if (h0.hit && h1.hit && h0.starts_inside != h1.starts_inside) {
+    const Evaluation e = evaluate(c, impl);
+    if (!(e.t_err <= tolerances(kId).t)) return Failure{"symmetry-caps-swapped-start", describe(h0) + " vs " + describe(h1)};
+  }
+  return std::nullopt;
+}
+
+namespace {
+bool scalable_case(const SegmentCylinderCase& c, int e) {
+  double v[6 + 7];
+  ShapeTraits<Segment>::to(c.a, v);
+  ShapeTraits<Cylinder>::to(c.b, v + 6);
+  for (double x : v)
+    if (!moves::scalable(x, e)) return false;
+  return true;
+}
+}  // namespace
+
+CheckResult check_metamorphic(const SegmentCylinderCase& c, int move, const CastSegmentCylinderImpl& impl) {
+  if (!valid_case(c)) return std::nullopt;
+  const moves::Move m{move};
+  if ((move == 2 && !scalable_case(c, 8)) || (move == 3 && !scalable_case(c, -8))) return std::nullopt;
+  const SegmentCylinderCase t{moves::apply(m, c.a), moves::apply(m, c.b)};
+  const std::string what = std::string("metamorphic-") + move_name(move);
+  if (m.exact()) {
+    const CastHit h0 = impl.cast(c.a, c.b), h1 = impl.cast(t.a, t.b);
+    if (h0.hit != h1.hit) return Failure{what, "verdict changed: " + describe(h0) + " vs " + describe(h1)};
+    const bool free_normal = c.b.r == 0;  // radial direction of a zero-radius cylinder is a free choice
+    if (h0.hit && !(h0.t == h1.t && h0.starts_inside == h1.starts_inside && m.pt(h0.point) == h1.point &&
+                    (free_normal || m.vec(h0.normal) == h1.normal)))
+      return Failure{what, "answer not bit-identical: " + describe(h0) + " vs " + describe(h1)};
+    return std::nullopt;
+  }
+  return same_verdict(what.c_str(), c, t, impl);
+}
+
+CheckResult check_monotone(const SegmentCylinderCase& c, const CastSegmentCylinderImpl& impl) {
+  if (!valid_case(c) || !impl.cast(c.a, c.b).hit) return std::nullopt;
+  const double wider = c.b.r * 2 + 0x1p-20 * length(c.b.q - c.b.p);
+  if (std::isfinite(wider)) {
+    const SegmentCylinderCase w{c.a, {c.b.p, c.b.q, wider}};
+    if (!impl.cast(w.a, w.b).hit && !evaluate(w, impl).excused)
+      return Failure{"monotone-cylinder-radius", "hit with radius " + fmt("%.17g", c.b.r) + " but not with " + fmt("%.17g", wider)};
+  }
+  const Vec3 far = c.a.a + 2.0 * (c.a.b - c.a.a);
+  if (is_finite(far)) {
+    const SegmentCylinderCase l{{c.a.a, far}, c.b};
+    if (!impl.cast(l.a, l.b).hit && !evaluate(l, impl).excused)
+      return Failure{"monotone-segment-length", "hit, but the segment extended to twice its length misses"};
+  }
+  return std::nullopt;
+}
+
+CheckResult check_robust(const SegmentCylinderCase& c, const CastSegmentCylinderImpl& impl) {
+  const CastHit h = impl.cast(c.a, c.b);
+  if (!valid_case(c)) {
+    if (h.hit) return Failure{"robust-invalid-input", "invalid input reported a hit: " + describe(h)};
+    return std::nullopt;
+  }
+  if (!h.hit) return std::nullopt;
+  if (!finite_hit(h) || !(h.t >= 0 && h.t <= 1)) return Failure{"robust-finite-output", describe(h)};
+  if (!h.starts_inside && !(std::fabs(length(h.normal) - 1) <= 1e-12)) return Failure{"robust-unit-normal", describe(h)};
+  return std::nullopt;
+}
+
+CheckResult check_all(const SegmentCylinderCase& c, const CastSegmentCylinderImpl& impl) {
+  if (auto f = check_robust(c, impl)) return f;
+  if (!valid_case(c)) return std::nullopt;
+  if (auto f = check_oracle(c, impl)) return f;
+  if (auto f = check_consistency(c, impl)) return f;
+  if (auto f = check_symmetry(c, impl)) return f;
+  for (int m = 0; m < kNumMoves; ++m)
+    if (auto f = check_metamorphic(c, m, impl)) return f;
+  return check_monotone(c, impl);
+}
+
+}  // namespace geomcheck

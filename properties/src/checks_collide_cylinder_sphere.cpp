@@ -1,0 +1,224 @@
+#include <cmath>
+#include <cstdio>
+#include <sstream>
+
+#include "geomcheck/collide_cylinder_sphere.hpp"
+#include "geomcheck/oracles/cylinder_sphere.hpp"
+#include "geomcheck/properties/checks.hpp"
+#include "geomcheck/properties/tolerances.hpp"
+#include "geomcheck/shape_traits.hpp"
+#include "common.hpp"
+#include "moves.hpp"
+
+namespace geomcheck {
+
+namespace {
+
+constexpr QueryId kId = QueryId::collide_cylinder_sphere;
+
+
+std::string describe(const Contact& c, bool ov) {
+  std::ostringstream o;
+  o << "overlap=" << (ov ? "yes" : "no") << " collide.hit=" << (c.hit ? "yes" : "no");
+  if (c.hit)
+    o << " depth=" << fmt("%.17g", c.depth) << " normal=" << vec(c.normal) << " point=" << vec(c.point);
+  return o.str();
+}
+
+bool finite_contact(const Contact& c) {
+  return is_finite(c.point) && is_finite(c.normal) && std::isfinite(c.depth);
+}
+
+bool sphere_valid_case(const CylinderSphereCase& c) { return is_valid(c.a) && is_valid(c.b); }
+
+}  // namespace
+
+const CylinderSphereImpl kProductionCylinderSphere = {
+    "production",
+    [](const Cylinder& a, const Sphere& b) { return overlap(a, b); },
+    [](const Cylinder& a, const Sphere& b) { return collide(a, b); },
+};
+
+Evaluation evaluate(const CylinderSphereCase& c, const CylinderSphereImpl& impl) {
+  Evaluation e;
+  const bool ov = impl.overlap(c.a, c.b);
+  const Contact ct = impl.collide(c.a, c.b);
+  e.prod_hit = ov;
+  e.prod_text = describe(ct, ov);
+  e.valid = sphere_valid_case(c);
+  if (!e.valid) {
+    e.truth_text = "invalid input: no overlap";
+    e.disagree = ov || ct.hit;
+    return e;
+  }
+  const Tolerances tol = tolerances(kId);
+  e.scale = oracle::case_scale(c.a, c.b);
+  const oracle::QCylinder qa = oracle::to_q(c.a);
+  const oracle::QSphere qb = oracle::to_q(c.b);
+  const auto truth = oracle::solve_cylinder_sphere(qa, qb);
+  e.verdict = truth.verdict;
+  e.truth_hit = truth.verdict != oracle::Verdict::Separated;
+  e.signed_distance = truth.signed_distance.mid();
+  e.truth_text = std::string(oracle::to_string(truth.verdict)) +
+                 " signed_distance=" + oracle::to_string(truth.signed_distance);
+  e.disagree = e.prod_hit != e.truth_hit;
+  // Near the boundary unless certainly farther than the band from touching.
+  const oracle::Q qband = oracle::to_q(tol.verdict * e.scale);
+  e.near_boundary = !(truth.signed_distance.lo > qband || truth.signed_distance.hi < -qband);
+  if (e.disagree) {
+    e.margin = std::fabs(e.signed_distance) / e.scale;
+    e.excused = e.near_boundary;
+  }
+  if (ct.hit && finite_contact(ct)) {
+    e.unit_err = std::fabs(length(ct.normal) - 1);
+    if (e.truth_hit) {
+      const oracle::QInterval depth = -truth.signed_distance;
+      e.depth_err = oracle::abs_error_upper(depth, ct.depth) / e.scale;
+      if (max_abs(ct.normal) > 0) {
+        const oracle::QInterval along = oracle::overlap_along(qa, qb, oracle::to_q(ct.normal));
+        e.normal_err = oracle::to_double_up(along.hi - depth.lo) / e.scale;
+      }
+      const oracle::QVec x = oracle::to_q(ct.point);
+      const oracle::QInterval da = oracle::signed_distance(qa, x), db = oracle::signed_distance(qb, x);
+      const oracle::Q out = da.hi > db.hi ? da.hi : db.hi;
+      e.point_err = out > 0 ? oracle::to_double_up(out) / e.scale : 0.0;
+    }
+  }
+  return e;
+}
+
+CheckResult check_oracle(const CylinderSphereCase& c, const CylinderSphereImpl& impl) {
+  return judge(kId, evaluate(c, impl));
+}
+
+CheckResult check_consistency(const CylinderSphereCase& c, const CylinderSphereImpl& impl) {
+  const bool ov = impl.overlap(c.a, c.b);
+  const Contact ct = impl.collide(c.a, c.b);
+  if (ov != ct.hit) return Failure{"consistency-overlap-vs-collide", describe(ct, ov)};
+  if (!ct.hit) return std::nullopt;
+  if (!finite_contact(ct)) return Failure{"consistency-finite", describe(ct, ov)};
+  const Tolerances tol = tolerances(kId);
+  if (std::fabs(length(ct.normal) - 1) > tol.unit) return Failure{"consistency-unit-normal", describe(ct, ov)};
+  if (!(ct.depth >= 0)) return Failure{"consistency-depth-nonnegative", describe(ct, ov)};
+  if (!sphere_valid_case(c)) return std::nullopt;
+  // depth equals the overlap of the shapes along the returned normal.
+  const double scale = oracle::case_scale(c.a, c.b);
+  const oracle::QInterval along = oracle::overlap_along(oracle::to_q(c.a), oracle::to_q(c.b), oracle::to_q(ct.normal));
+  const double err = oracle::abs_error_upper(along, ct.depth) / scale;
+  if (err > tol.depth)
+    return Failure{"consistency-depth-along-normal",
+                   fmt("|depth - overlap along normal| = %.3g * scale > %.3g; ", err, tol.depth) + describe(ct, ov)};
+  return std::nullopt;
+}
+
+CheckResult check_symmetry(const CylinderSphereCase& c, const CylinderSphereImpl& impl) {
+  const bool ov = impl.overlap(c.a, c.b);
+  const Contact ct = impl.collide(c.a, c.b);
+  // Argument order: the swapped query is the production wrapper around impl.
+  const Contact sw = flipped(impl.collide(c.a, c.b));
+  const Contact sw_prod = collide(c.b, c.a);
+  if (impl.overlap == kProductionCylinderSphere.overlap) {
+    if (overlap(c.b, c.a) != ov || sw_prod.hit != ct.hit || (ct.hit && !(sw_prod.normal == -ct.normal)))
+      return Failure{"symmetry-argument-order", describe(ct, ov) + " vs swapped " + describe(sw_prod, overlap(c.b, c.a))};
+  } else if (sw.hit != ct.hit) {
+    return Failure{"symmetry-argument-order", describe(ct, ov)};
+  }
+  // Same solid, caps swapped.
+  const CylinderSphereCase s{{c.a.q, c.a.p, c.a.r}, c.b};
+  const bool ov2 = impl.overlap(s.a, s.b);
+  if (ov2 != ov && sphere_valid_case(c)) {
+    // The truth is the same for both; the one that disagrees with it must be inside the band.
+    const Evaluation e = evaluate(s, impl);
+    const Evaluation e0 = evaluate(c, impl);
+    if (!(e.excused || e0.excused))
+      return Failure{"symmetry-caps-swapped", "overlap " + std::string(ov ? "yes" : "no") + " becomes " + (ov2 ? "yes" : "no") +
+                                                  " with caps swapped; oracle: " + e0.truth_text};
+  }
+  if (ov == ov2 && ov && sphere_valid_case(c)) {
+    const Contact c2 = impl.collide(s.a, s.b);
+    const double scale = oracle::case_scale(c.a, c.b);
+    const double d = std::fabs(c2.depth - ct.depth) / scale;
+    if (d > 2 * tolerances(kId).depth)
+      return Failure{"symmetry-caps-swapped-depth", fmt("depth differs by %.3g * scale; ", d) + describe(ct, ov) + " vs " + describe(c2, ov2)};
+  }
+  return std::nullopt;
+}
+
+namespace {
+bool scalable_case(const CylinderSphereCase& c, int e) {
+  double v[7 + 4];
+  ShapeTraits<Cylinder>::to(c.a, v);
+  ShapeTraits<Sphere>::to(c.b, v + 7);
+  for (double x : v)
+    if (!moves::scalable(x, e)) return false;
+  return true;
+}
+}  // namespace
+
+CheckResult check_metamorphic(const CylinderSphereCase& c, int move, const CylinderSphereImpl& impl) {
+  if (!sphere_valid_case(c)) return std::nullopt;
+  const moves::Move m{move};
+  if ((move == 2 && !scalable_case(c, 8)) || (move == 3 && !scalable_case(c, -8))) return std::nullopt;
+  const CylinderSphereCase t{moves::apply(m, c.a), moves::apply(m, c.b)};
+  const bool ov = impl.overlap(c.a, c.b), ov2 = impl.overlap(t.a, t.b);
+  const Contact ct = impl.collide(c.a, c.b), ct2 = impl.collide(t.a, t.b);
+  const std::string what = std::string("metamorphic-") + move_name(move);
+  if (m.exact()) {
+    if (ov != ov2 || ct.hit != ct2.hit) return Failure{what, "verdict changed: " + describe(ct, ov) + " vs " + describe(ct2, ov2)};
+    // On the axis the side normal is any perpendicular (a free choice), so
+    // only there the normal may differ.
+    const bool free_normal = length2(cross(c.b.c - c.a.p, c.a.q - c.a.p)) == 0;
+    if (ct.hit && !(m.pt(ct.point) == ct2.point && (free_normal || m.vec(ct.normal) == ct2.normal) &&
+                    m.len(ct.depth) == ct2.depth))
+      return Failure{what, "answer not bit-identical: " + describe(ct, ov) + " vs " + describe(ct2, ov2)};
+    return std::nullopt;
+  }
+  if (ov != ov2) {
+    // The moved case is rounded, so it is another case: a change of verdict
+    // is a failure only when neither case is within the band of touching.
+    const Evaluation e0 = evaluate(c, impl), e1 = evaluate(t, impl);
+    if (!e0.near_boundary && !e1.near_boundary)
+      return Failure{what, "verdict changed outside the band: " + describe(ct, ov) + " vs " + describe(ct2, ov2)};
+  }
+  return std::nullopt;
+}
+
+CheckResult check_monotone(const CylinderSphereCase& c, const CylinderSphereImpl& impl) {
+  if (!sphere_valid_case(c) || !impl.overlap(c.a, c.b)) return std::nullopt;
+  const double grow[] = {std::nextafter(c.b.r, INFINITY), c.b.r * 2 + 1e-300, c.b.r + 0.5 * c.a.r};
+  for (double r : grow) {
+    if (!std::isfinite(r)) continue;
+    if (!impl.overlap(c.a, Sphere{c.b.c, r}))
+      return Failure{"monotone-sphere-radius", fmt("overlap with sphere radius %.17g but not with %.17g", c.b.r, r)};
+  }
+  const double rc = std::nextafter(c.a.r, INFINITY);
+  if (std::isfinite(rc) && !impl.overlap(Cylinder{c.a.p, c.a.q, rc}, c.b))
+    return Failure{"monotone-cylinder-radius", fmt("overlap with cylinder radius %.17g but not with %.17g", c.a.r, rc)};
+  return std::nullopt;
+}
+
+CheckResult check_robust(const CylinderSphereCase& c, const CylinderSphereImpl& impl) {
+  const bool ov = impl.overlap(c.a, c.b);
+  const Contact ct = impl.collide(c.a, c.b);
+  if (!sphere_valid_case(c)) {
+    if (ov || ct.hit) return Failure{"robust-invalid-input", "invalid input reported a hit: " + describe(ct, ov)};
+    return std::nullopt;
+  }
+  if (ct.hit && !finite_contact(ct)) return Failure{"robust-finite-output", describe(ct, ov)};
+  if (ct.hit && !(std::fabs(length(ct.normal) - 1) <= 1e-12)) return Failure{"robust-unit-normal", describe(ct, ov)};
+  if (ov != ct.hit) return Failure{"robust-overlap-vs-collide", describe(ct, ov)};
+  return std::nullopt;
+}
+
+CheckResult check_all(const CylinderSphereCase& c, const CylinderSphereImpl& impl) {
+  if (auto f = check_robust(c, impl)) return f;
+  if (!sphere_valid_case(c)) return std::nullopt;
+  if (auto f = check_oracle(c, impl)) return f;
+  if (auto f = check_consistency(c, impl)) return f;
+  if (auto f = check_symmetry(c, impl)) return f;
+  for (int m = 0; m < kNumMoves; ++m)
+    if (auto f = check_metamorphic(c, m, impl)) return f;
+  return check_monotone(c, impl);
+}
+
+}  // namespace geomcheck

@@ -1,0 +1,56 @@
+// geomcheck — metamorphic moves on points and shapes (internal to properties/).
+#pragma once
+
+#include <cmath>
+
+#include "geomcheck/shapes.hpp"
+
+namespace geomcheck::moves {
+
+/// A move applied to points (`pt`) and to free vectors / normals (`vec`),
+/// with the factor it applies to lengths.
+struct Move {
+  int id;
+  Vec3 pt(Vec3 v) const {
+    switch (id) {
+      case 0: return {-v.x, v.y, v.z};
+      case 1: return {-v.x, -v.y, -v.z};
+      case 2: return {std::ldexp(v.x, 8), std::ldexp(v.y, 8), std::ldexp(v.z, 8)};
+      case 3: return {std::ldexp(v.x, -8), std::ldexp(v.y, -8), std::ldexp(v.z, -8)};
+      case 4: return {v.y, v.z, v.x};
+      default: {
+        // Rotation about (1,2,2)/3 by an angle with cos = 3/5 (rounded), then a translation.
+        const double c = 0.6, s = 0.8, k = 1 - c;
+        const Vec3 a{1.0 / 3, 2.0 / 3, 2.0 / 3};
+        const Vec3 r = c * v + s * cross(a, v) + (k * dot(a, v)) * a;
+        return r + Vec3{0.25, -0.5, 0.125};
+      }
+    }
+  }
+  Vec3 vec(Vec3 v) const {
+    if (id == 2 || id == 3) return v;  // directions do not scale
+    if (id == 5) return pt(v) - pt(Vec3{0, 0, 0});
+    return pt(v);
+  }
+  double len(double r) const {
+    if (id == 2) return std::ldexp(r, 8);
+    if (id == 3) return std::ldexp(r, -8);
+    return r;
+  }
+  /// Moves that must give bit-identical answers.
+  bool exact() const { return id <= 3; }
+};
+
+inline Sphere apply(const Move& m, const Sphere& s) { return {m.pt(s.c), m.len(s.r)}; }
+inline Cylinder apply(const Move& m, const Cylinder& c) { return {m.pt(c.p), m.pt(c.q), m.len(c.r)}; }
+inline Segment apply(const Move& m, const Segment& s) { return {m.pt(s.a), m.pt(s.b)}; }
+
+/// True when v is finite, and zero or normal (not subnormal): scaling it by
+/// a power of two keeps it exact.
+inline bool scalable(double v, int e) {
+  if (v == 0) return true;
+  const double s = std::ldexp(v, e);
+  return std::isnormal(v) && std::isnormal(s) && std::fabs(v) < 1e150 && std::fabs(v) > 1e-150;
+}
+
+}  // namespace geomcheck::moves

@@ -1,0 +1,42 @@
+// geomcheck — RapidCheck generators that reach the hard places.
+//
+// Every generator draws from rc::gen::inRange (size-independent, shrinks
+// towards the first choice), so shrunk counterexamples go to the simplest
+// mode, scale and offset.
+#pragma once
+
+#include <rapidcheck.h>
+
+#include <cstdint>
+#include <string>
+
+#include "geomcheck/properties/checks.hpp"
+
+namespace geomcheck::gen {
+
+/// Uniform double in [lo, hi).
+rc::Gen<double> real(double lo, double hi);
+/// A value nudged by k ulps, k in [-kmax, kmax].
+double nudge(double v, int k);
+
+/// Which construction produced a case (for RC_CLASSIFY).
+struct Tagged {
+  std::string mode;
+};
+
+/// Cylinder/sphere pairs: random, at the rim, on a cap plane, on the side
+/// (touching +- k ulps, or a small or large gap either way), exactly touching
+/// Pythagorean constructions, centre inside, sphere containing the
+/// cylinder, zero radii; scales 2^-20..2^20, optionally far from the origin.
+rc::Gen<std::pair<CylinderSphereCase, std::string>> cylinder_sphere_case();
+/// Segment/cylinder casts: random, parallel to the axis into a cap, grazing
+/// the side, tangent to the rim, aimed at the rim +- a gap, starting
+/// inside, zero length, through both caps, exact Pythagorean touches.
+rc::Gen<std::pair<SegmentCylinderCase, std::string>> segment_cylinder_case();
+/// Raw doubles with NaN, +-inf, subnormals, zeros, huge and tiny values.
+rc::Gen<double> wild_double();
+/// Any shapes, valid or not, from wild doubles (robustness).
+rc::Gen<CylinderSphereCase> wild_cylinder_sphere();
+rc::Gen<SegmentCylinderCase> wild_segment_cylinder();
+
+}  // namespace geomcheck::gen

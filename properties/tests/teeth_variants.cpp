@@ -1,0 +1,131 @@
+// geomcheck — known-wrong variants of production, kept in the test tree so
+// the suite proves it can fail (DESIGN.md section 4, "Teeth").
+#include "teeth_variants.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace geomcheck::teeth {
+
+namespace {
+// Closest point to x on segment pq.
+Vec3 closest_on_segment(Vec3 x, Vec3 p, Vec3 q) {
+  const Vec3 d = q - p;
+  const double t = std::clamp(dot(x - p, d) / dot(d, d), 0.0, 1.0);
+  return p + t * d;
+}
+}  // namespace
+
+// Sphere against the cylinder's capsule: the end-cap discontinuity ignored
+// (round caps instead of flat ones).
+bool capsule_overlap(const Cylinder& c, const Sphere& s) {
+  if (!is_valid(c) || !is_valid(s)) return false;
+  const Vec3 x = closest_on_segment(s.c, c.p, c.q);
+  const double r = c.r + s.r;
+  return length2(s.c - x) <= r * r;
+}
+Contact capsule_collide(const Cylinder& c, const Sphere& s) {
+  Contact out;
+  if (!capsule_overlap(c, s)) return out;
+  const Vec3 x = closest_on_segment(s.c, c.p, c.q);
+  const Vec3 v = s.c - x;
+  const double l = length(v);
+  out.hit = true;
+  out.normal = l > 0 ? (1.0 / l) * v : any_perpendicular(c.q - c.p);
+  out.depth = c.r + s.r - l;
+  out.point = x + c.r * out.normal;
+  return out;
+}
+
+// The segment cast against the infinite cylinder: no cap test at all.
+CastHit infinite_cylinder_cast(const Segment& seg, const Cylinder& cyl) {
+  CastHit out;
+  if (!is_valid(seg) || !is_valid(cyl)) return out;
+  const Vec3 d = cyl.q - cyl.p, m = seg.a - cyl.p, n = seg.b - seg.a;
+  const double dd = dot(d, d);
+  const Vec3 mxd = cross(m, d), nxd = cross(n, d);
+  const double qa = dot(nxd, nxd), qb = dot(mxd, nxd), qc = dot(mxd, mxd) - cyl.r * cyl.r * dd;
+  if (qc <= 0) {
+    out.hit = out.starts_inside = true;
+    out.point = seg.a;
+    return out;
+  }
+  if (qb >= 0) return out;
+  const double disc = qb * qb - qa * qc;
+  if (disc < 0) return out;
+  const double t = qc / (-qb + std::sqrt(disc));
+  if (t > 1) return out;
+  out.hit = true;
+  out.t = t;
+  out.point = seg.a + t * n;
+  const Vec3 x = m + t * n;
+  const Vec3 radial = x - (dot(x, d) / dd) * d;
+  const double l = length(radial);
+  out.normal = l > 0 ? (1.0 / l) * radial : any_perpendicular(d);
+  return out;
+}
+
+// Ericson's IntersectSegmentCylinder as printed (p. 197), absolute EPSILON
+// and all: rejects a negative first root (start inside, or a cap entry whose
+// side root lies before the start) and uses k + 2t(mn + t nn) for the p cap.
+CastHit ericson_printed_cast(const Segment& seg, const Cylinder& cyl) {
+  CastHit out;
+  if (!is_valid(seg) || !is_valid(cyl)) return out;
+  const Vec3 d = cyl.q - cyl.p, m = seg.a - cyl.p, n = seg.b - seg.a;
+  const double md = dot(m, d), nd = dot(n, d), dd = dot(d, d);
+  if (md < 0 && md + nd < 0) return out;
+  if (md > dd && md + nd > dd) return out;
+  const double nn = dot(n, n), mn = dot(m, n);
+  const double a = dd * nn - nd * nd;
+  const double k = dot(m, m) - cyl.r * cyl.r;
+  const double c = dd * k - md * md;
+  double t = 0;
+  const Vec3 u = (1.0 / std::sqrt(dd)) * d;
+  int feature = 1;
+  if (std::fabs(a) < 1e-6) {
+    if (c > 0) return out;
+    if (md < 0) { t = -mn / nn; feature = 2; }
+    else if (md > dd) { t = (nd - mn) / nn; feature = 3; }
+    else t = 0;
+  } else {
+    const double b = dd * mn - nd * md;
+    const double discr = b * b - a * c;
+    if (discr < 0) return out;
+    t = (-b - std::sqrt(discr)) / a;
+    if (t < 0 || t > 1) return out;
+    if (md + t * nd < 0) {
+      if (nd <= 0) return out;
+      t = -md / nd;
+      if (!(k + 2 * t * (mn + t * nn) <= 0)) return out;
+      feature = 2;
+    } else if (md + t * nd > dd) {
+      if (nd >= 0) return out;
+      t = (dd - md) / nd;
+      if (!(k + dd - 2 * md + t * (2 * (mn - nd) + t * nn) <= 0)) return out;
+      feature = 3;
+    }
+  }
+  if (!(t >= 0 && t <= 1)) return out;
+  out.hit = true;
+  out.t = t;
+  out.point = seg.a + t * n;
+  if (t == 0 && feature == 1) {
+    out.starts_inside = true;
+    return out;
+  }
+  if (feature == 2) out.normal = -u;
+  else if (feature == 3) out.normal = u;
+  else {
+    const Vec3 x = m + t * n;
+    const Vec3 radial = x - dot(x, u) * u;
+    const double l = length(radial);
+    out.normal = l > 0 ? (1.0 / l) * radial : any_perpendicular(u);
+  }
+  return out;
+}
+
+const CylinderSphereImpl kCapsuleForCylinder = {"sphere-vs-capsule", capsule_overlap, capsule_collide};
+const CastSegmentCylinderImpl kInfiniteCylinder = {"infinite-cylinder-no-caps", infinite_cylinder_cast};
+const CastSegmentCylinderImpl kEricsonPrinted = {"ericson-as-printed", ericson_printed_cast};
+
+}  // namespace geomcheck::teeth

@@ -1,0 +1,353 @@
+#include "campaign.hpp"
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <map>
+#include <mutex>
+#include <sstream>
+#include <thread>
+
+#include "generators.hpp"
+#include "geomcheck/casefile.hpp"
+#include "geomcheck/properties/tolerances.hpp"
+#include "peer.hpp"
+#include "suites.hpp"
+
+namespace geomcheck {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+// Everything kept per case.
+struct Row {
+  Evaluation e;
+  PeerAnswer fcl;
+  std::string tag;
+  CheckResult failure;
+  int index = 0;
+  bool run = false;
+};
+
+struct Series {
+  std::vector<double> v;
+  void add(double x) {
+    if (std::isfinite(x)) v.push_back(x);
+  }
+  double pct(double p) {
+    if (v.empty()) return NAN;
+    std::sort(v.begin(), v.end());
+    return v[std::min(v.size() - 1, static_cast<std::size_t>(p * (v.size() - 1) + 0.5))];
+  }
+  // Histogram of log10(error / scale), buckets -18..-4 plus "0".
+  std::vector<int> hist() const {
+    std::vector<int> h(16, 0);
+    for (double x : v) {
+      if (x <= 0) { ++h[0]; continue; }
+      int b = static_cast<int>(std::floor(std::log10(x))) + 19;  // 1e-18 -> bucket 1
+      h[std::clamp(b, 1, 15)]++;
+    }
+    return h;
+  }
+};
+
+std::string jnum(double x) {
+  if (!std::isfinite(x)) return "null";
+  char b[40];
+  std::snprintf(b, sizeof b, "%.6g", x);
+  return b;
+}
+std::string jstr(const std::string& s) {
+  std::string o = "\"";
+  for (char c : s) {
+    if (c == '"' || c == '\\') o += '\\', o += c;
+    else if (c == '\n') o += "\\n";
+    else if (static_cast<unsigned char>(c) < 0x20) o += ' ';
+    else o += c;
+  }
+  return o + "\"";
+}
+std::string html(const std::string& s) {
+  std::string o;
+  for (char c : s) {
+    if (c == '<') o += "&lt;";
+    else if (c == '>') o += "&gt;";
+    else if (c == '&') o += "&amp;";
+    else o += c;
+  }
+  return o;
+}
+
+struct QueryReport {
+  std::string name, summary;
+  int cases = 0, valid = 0, prod_hits = 0, truth_hits = 0;
+  std::map<std::string, int> verdicts;
+  int disagree = 0, excused = 0, beyond = 0, check_failures = 0;
+  double worst_margin = 0;
+  Series depth, normal, point, t;
+  int fcl_supported = 0, fcl_ok = 0, fcl_disagree = 0, fcl_beyond = 0;
+  Series fcl_depth;
+  double prod_ns = NAN, oracle_us = NAN;
+  std::vector<std::string> counterexamples;
+  std::map<std::string, int> failures_by_property;
+  Tolerances tol{};
+};
+
+template <QueryId Q>
+QueryReport run_query(const CampaignOptions& opt, const std::filesystem::path& out_dir, int threads) {
+  using Case = typename Suite<Q>::Case;
+  QueryReport rep;
+  rep.name = info(Q).name;
+  rep.summary = info(Q).summary;
+  rep.tol = tolerances(Q);
+  // Cases are generated in order from the seed (deterministic), then
+  // evaluated in parallel.
+  std::vector<std::pair<Case, std::string>> cases;
+  const auto gen = Suite<Q>::targeted();
+  rc::Random random(opt.seed ^ (0x9e3779b97f4a7c15ull * (static_cast<std::uint64_t>(Q) + 1)));
+  for (int i = 0; i < opt.cases; ++i) cases.push_back(gen(random.split(), 50).value());
+
+  // Production throughput on these cases.
+  {
+    const auto t0 = Clock::now();
+    int sink = 0;
+    const int reps = 5;
+    for (int r = 0; r < reps; ++r)
+      for (const auto& c : cases) sink += Suite<Q>::hit(c.first);
+    const double ns = std::chrono::duration<double, std::nano>(Clock::now() - t0).count();
+    rep.prod_ns = ns / (reps * std::max<std::size_t>(1, cases.size()));
+    if (sink == -1) std::puts("");
+  }
+
+  std::vector<Row> rows(cases.size());
+  std::atomic<int> next{0}, done{0};
+  const auto start = Clock::now();
+  std::atomic<bool> out_of_time{false};
+  auto worker = [&] {
+    for (;;) {
+      const int i = next++;
+      if (i >= static_cast<int>(cases.size())) return;
+      if (opt.seconds > 0 && std::chrono::duration<double>(Clock::now() - start).count() > opt.seconds) {
+        out_of_time = true;
+        return;
+      }
+      Row& r = rows[i];
+      r.index = i;
+      r.tag = cases[i].second;
+      r.e = evaluate(cases[i].first);
+      r.failure = check_all(cases[i].first);
+      r.fcl = peer(cases[i].first);
+      r.run = true;
+      ++done;
+    }
+  };
+  std::vector<std::thread> pool;
+  for (int k = 0; k < threads; ++k) pool.emplace_back(worker);
+  while (opt.progress) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(500));
+    const int d = done;
+    const double el = std::chrono::duration<double>(Clock::now() - start).count();
+    std::fprintf(stderr, "\r[campaign] %-24s %7d / %zu cases  %6.0f cases/s  %5.1fs", rep.name.c_str(), d,
+                 cases.size(), d / std::max(el, 1e-9), el);
+    if (d >= static_cast<int>(cases.size()) || out_of_time) break;
+  }
+  for (auto& th : pool) th.join();
+  const double elapsed = std::chrono::duration<double>(Clock::now() - start).count();
+  if (opt.progress) std::fprintf(stderr, "\n");
+
+  const std::filesystem::path cx_dir = out_dir / "counterexamples" / rep.name;
+  for (const Row& r : rows) {
+    if (!r.run) continue;  // time budget ran out first
+    const Evaluation& e = r.e;
+    ++rep.cases;
+    if (!e.valid) continue;
+    ++rep.valid;
+    rep.prod_hits += e.prod_hit;
+    rep.truth_hits += e.truth_hit;
+    rep.verdicts[info(Q).kind == QueryKind::Collide ? oracle::to_string(e.verdict) : (e.truth_hit ? "hit" : "miss")]++;
+    if (e.disagree) {
+      ++rep.disagree;
+      if (e.excused) ++rep.excused;
+      else ++rep.beyond;
+      if (std::isfinite(e.margin)) rep.worst_margin = std::max(rep.worst_margin, e.margin);
+    }
+    rep.depth.add(e.depth_err);
+    rep.normal.add(e.normal_err);
+    rep.point.add(e.point_err);
+    rep.t.add(e.t_err);
+    if (r.fcl.supported) {
+      ++rep.fcl_supported;
+      if (r.fcl.ok) {
+        ++rep.fcl_ok;
+        if (r.fcl.hit != e.truth_hit) {
+          ++rep.fcl_disagree;
+          if (std::isfinite(e.signed_distance) && std::fabs(e.signed_distance) > rep.tol.verdict * e.scale) ++rep.fcl_beyond;
+          else if (!std::isfinite(e.signed_distance)) ++rep.fcl_beyond;
+        }
+        if (r.fcl.hit && e.truth_hit && std::isfinite(r.fcl.depth) && std::isfinite(e.signed_distance))
+          rep.fcl_depth.add(std::fabs(r.fcl.depth + e.signed_distance) / e.scale);
+      }
+    }
+    if (r.failure) {
+      ++rep.check_failures;
+      rep.failures_by_property[r.failure->property]++;
+      if (rep.counterexamples.size() < 50) {
+        std::filesystem::create_directories(cx_dir);
+        char name[64];
+        std::snprintf(name, sizeof name, "%05d-%s.case", r.index, r.failure->property.c_str());
+        const auto path = cx_dir / name;
+        CaseFile f = from_case<Q>(cases[r.index].first,
+                                  "campaign seed=" + std::to_string(opt.seed) + " case=" + std::to_string(r.index),
+                                  "", r.failure->property + ": " + r.failure->detail);
+        f.oracle_verdict = info(Q).kind == QueryKind::Collide ? oracle::to_string(e.verdict) : (e.truth_hit ? "hit" : "miss");
+        std::string err;
+        if (save_case(path, f, err)) rep.counterexamples.push_back(path.string());
+      }
+    }
+  }
+  rep.oracle_us = rep.cases ? elapsed * 1e6 * threads / rep.cases : NAN;
+  return rep;
+}
+
+void write_series_json(std::ostream& o, const char* name, Series& s) {
+  o << "      " << jstr(name) << ": {\"n\": " << s.v.size() << ", \"p50\": " << jnum(s.pct(0.5))
+    << ", \"p90\": " << jnum(s.pct(0.9)) << ", \"p99\": " << jnum(s.pct(0.99)) << ", \"max\": " << jnum(s.pct(1.0))
+    << ", \"log10_histogram\": [";
+  const auto h = s.hist();
+  for (std::size_t i = 0; i < h.size(); ++i) o << (i ? ", " : "") << h[i];
+  o << "]}";
+}
+
+std::string hist_svg(const Series& s) {
+  const auto h = s.hist();
+  const int mx = std::max(1, *std::max_element(h.begin(), h.end()));
+  std::ostringstream o;
+  o << "<svg width='330' height='70' role='img'><title>log10 histogram</title>";
+  for (std::size_t i = 0; i < h.size(); ++i) {
+    const int bh = h[i] * 50 / mx;
+    o << "<rect x='" << 4 + i * 20 << "' y='" << 55 - bh << "' width='16' height='" << bh
+      << "' fill='#4a78c2'><title>" << (i == 0 ? std::string("0") : "1e" + std::to_string(int(i) - 19)) << ": "
+      << h[i] << "</title></rect>";
+  }
+  o << "<text x='2' y='68' font-size='9'>0</text><text x='60' y='68' font-size='9'>1e-16</text>"
+       "<text x='140' y='68' font-size='9'>1e-12</text><text x='220' y='68' font-size='9'>1e-8</text></svg>";
+  return o.str();
+}
+
+}  // namespace
+
+int run_campaign(const CampaignOptions& opt) {
+  namespace fs = std::filesystem;
+  const fs::path out_dir(opt.out);
+  fs::create_directories(out_dir);
+  const int threads = opt.threads > 0 ? opt.threads : std::max(1u, std::thread::hardware_concurrency());
+  std::fprintf(stderr, "[campaign] seed %llu, %d cases per query, %d threads, output %s\n",
+               static_cast<unsigned long long>(opt.seed), opt.cases, threads, out_dir.string().c_str());
+  std::vector<QueryReport> reps;
+  for_each_query([&](auto q) {
+    constexpr QueryId Q = decltype(q)::value;
+    if (!opt.queries.empty() && std::find(opt.queries.begin(), opt.queries.end(), info(Q).name) == opt.queries.end()) return;
+    reps.push_back(run_query<Q>(opt, out_dir, threads));
+  });
+
+  int beyond = 0;
+  std::ofstream js(out_dir / "report.json");
+  js << "{\n  \"tool\": \"geomcheck\",\n  \"seed\": " << opt.seed << ",\n  \"cases_per_query\": " << opt.cases
+     << ",\n  \"replay\": " << jstr("geomcheck campaign --seed " + std::to_string(opt.seed) + " --cases " + std::to_string(opt.cases))
+     << ",\n  \"queries\": [\n";
+  for (std::size_t i = 0; i < reps.size(); ++i) {
+    QueryReport& r = reps[i];
+    beyond += r.beyond + r.check_failures;
+    js << "    {\n      \"id\": " << jstr(r.name) << ",\n      \"summary\": " << jstr(r.summary)
+       << ",\n      \"cases\": " << r.cases << ", \"valid\": " << r.valid << ", \"production_hits\": " << r.prod_hits
+       << ", \"oracle_hits\": " << r.truth_hits << ",\n      \"hit_rate\": " << jnum(r.valid ? double(r.prod_hits) / r.valid : NAN)
+       << ",\n      \"verdicts\": {";
+    bool first = true;
+    for (const auto& [k, v] : r.verdicts) js << (first ? "" : ", ") << jstr(k) << ": " << v, first = false;
+    js << "},\n      \"disagreements\": " << r.disagree << ", \"inside_band\": " << r.excused
+       << ", \"beyond_band\": " << r.beyond << ", \"worst_margin\": " << jnum(r.worst_margin)
+       << ", \"verdict_band\": " << jnum(r.tol.verdict) << ",\n      \"check_failures\": " << r.check_failures
+       << ", \"failures_by_property\": {";
+    first = true;
+    for (const auto& [k, v] : r.failures_by_property) js << (first ? "" : ", ") << jstr(k) << ": " << v, first = false;
+    js << "},\n      \"errors\": {\n";
+    write_series_json(js, "depth", r.depth);
+    js << ",\n";
+    write_series_json(js, "normal", r.normal);
+    js << ",\n";
+    write_series_json(js, "point", r.point);
+    js << ",\n";
+    write_series_json(js, "t", r.t);
+    js << "\n      },\n      \"fcl\": {\"supported\": " << r.fcl_supported << ", \"answered\": " << r.fcl_ok
+       << ", \"disagreements\": " << r.fcl_disagree << ", \"beyond_band\": " << r.fcl_beyond << ",\n";
+    write_series_json(js, "depth", r.fcl_depth);
+    js << "},\n      \"production_ns_per_query\": " << jnum(r.prod_ns) << ", \"oracle_us_per_case\": " << jnum(r.oracle_us)
+       << ",\n      \"counterexamples\": [";
+    for (std::size_t k = 0; k < r.counterexamples.size(); ++k) js << (k ? ", " : "") << jstr(r.counterexamples[k]);
+    js << "]\n    }" << (i + 1 < reps.size() ? "," : "") << "\n";
+  }
+  js << "  ]\n}\n";
+
+  std::ofstream h(out_dir / "report.html");
+  h << "<!doctype html><html lang='en'><head><meta charset='utf-8'><title>geomcheck campaign report</title>"
+       "<style>body{font-family:sans-serif;margin:2em;max-width:1100px}table{border-collapse:collapse;margin:1em 0}"
+       "td,th{border:1px solid #bbb;padding:4px 8px;text-align:right}th{background:#eee}td.l,th.l{text-align:left}"
+       ".bad{color:#b00;font-weight:bold}.ok{color:#070}</style></head><body>"
+       "<h1>geomcheck campaign report</h1><p>seed <code>"
+    << opt.seed << "</code>, " << opt.cases << " cases per query. Errors are multiples of the case scale "
+       "(largest coordinate magnitude or extent). Rerun: <code>geomcheck campaign --seed " << opt.seed << " --cases "
+    << opt.cases << "</code></p>";
+  for (QueryReport& r : reps) {
+    const bool clean = r.beyond == 0 && r.check_failures == 0;
+    h << "<h2 id='" << r.name << "'>" << r.name << "</h2><p>" << html(r.summary) << "</p><p class='"
+      << (clean ? "ok'>verified: no disagreement beyond the band, every property holds" : "bad'>FAILURES found")
+      << "</p><table><tr><th class='l'>measure</th><th>production</th><th>FCL</th></tr>"
+      << "<tr><td class='l'>cases (valid)</td><td>" << r.cases << " (" << r.valid << ")</td><td>" << r.fcl_ok << " answered</td></tr>"
+      << "<tr><td class='l'>hit rate (oracle " << jnum(r.valid ? double(r.truth_hits) / r.valid : NAN) << ")</td><td>"
+      << jnum(r.valid ? double(r.prod_hits) / r.valid : NAN) << "</td><td></td></tr>"
+      << "<tr><td class='l'>verdict disagreements</td><td>" << r.disagree << "</td><td>" << r.fcl_disagree << "</td></tr>"
+      << "<tr><td class='l'>beyond the band (" << jnum(r.tol.verdict) << " &times; scale)</td><td class='"
+      << (r.beyond ? "bad" : "ok") << "'>" << r.beyond << "</td><td class='" << (r.fcl_beyond ? "bad" : "ok") << "'>"
+      << r.fcl_beyond << "</td></tr>"
+      << "<tr><td class='l'>worst disagreement margin</td><td>" << jnum(r.worst_margin) << "</td><td></td></tr>"
+      << "<tr><td class='l'>property failures</td><td class='" << (r.check_failures ? "bad" : "ok") << "'>"
+      << r.check_failures << "</td><td></td></tr>"
+      << "<tr><td class='l'>production time per query</td><td>" << jnum(r.prod_ns) << " ns</td><td></td></tr>"
+      << "<tr><td class='l'>oracle+checks time per case</td><td>" << jnum(r.oracle_us) << " &micro;s</td><td></td></tr>"
+      << "</table><table><tr><th class='l'>verdict</th><th>cases</th></tr>";
+    for (const auto& [k, v] : r.verdicts) h << "<tr><td class='l'>" << k << "</td><td>" << v << "</td></tr>";
+    h << "</table><table><tr><th class='l'>error / scale</th><th>bound</th><th>n</th><th>p50</th><th>p90</th><th>p99</th><th>max</th><th>log10 histogram</th></tr>";
+    auto row = [&](const char* n, Series& s, double bound) {
+      if (s.v.empty()) return;
+      const double mx = s.pct(1.0);
+      h << "<tr><td class='l'>" << n << "</td><td>" << jnum(bound) << "</td><td>" << s.v.size() << "</td><td>" << jnum(s.pct(0.5))
+        << "</td><td>" << jnum(s.pct(0.9)) << "</td><td>" << jnum(s.pct(0.99)) << "</td><td class='"
+        << (bound > 0 && mx > bound ? "bad" : "") << "'>" << jnum(mx) << "</td><td>" << hist_svg(s) << "</td></tr>";
+    };
+    row("depth", r.depth, r.tol.depth);
+    row("normal", r.normal, r.tol.normal);
+    row("point", r.point, r.tol.point);
+    row("t", r.t, r.tol.t);
+    row("FCL depth", r.fcl_depth, 0);
+    h << "</table>";
+    if (!r.failures_by_property.empty()) {
+      h << "<h3>failures</h3><ul>";
+      for (const auto& [k, v] : r.failures_by_property) h << "<li>" << html(k) << ": " << v << "</li>";
+      h << "</ul><p>counterexamples (replay with <code>geomcheck replay FILE</code>):</p><ul>";
+      for (const auto& c : r.counterexamples) h << "<li><code>" << html(c) << "</code></li>";
+      h << "</ul>";
+    }
+  }
+  h << "</body></html>\n";
+  std::fprintf(stderr, "[campaign] wrote %s and %s\n", (out_dir / "report.json").string().c_str(),
+               (out_dir / "report.html").string().c_str());
+  return beyond;
+}
+
+}  // namespace geomcheck
