@@ -1,7 +1,9 @@
 #include "geomcheck/cast_segment_cylinder.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
+#include <utility>
 
 #include "geomcheck/detail/frame.hpp"
 
@@ -24,52 +26,54 @@ CastHit cast(const Segment& seg, const Cylinder& cyl) {
   const double qb = dot(mxd, nxd);
   const double qc = dot(mxd, mxd) - r2dd;
 
-  if (md >= 0 && md <= dd && qc <= 0) {
+  // The segment is in the cylinder where it is both in the slab between the
+  // cap planes and in the infinite cylinder: intersect the two parameter
+  // intervals with [0, 1]. Accepting by interval rather than by feature
+  // leaves no gap at the rim, where a cap test and a side test can both
+  // reject by one rounding (regression 0002).
+  const double inf = std::numeric_limits<double>::infinity();
+  double slab_lo = -inf, slab_hi = inf;
+  if (nd == 0) {
+    if (md < 0 || md > dd) return out;
+  } else {
+    slab_lo = -md / nd;
+    slab_hi = (dd - md) / nd;
+    if (slab_lo > slab_hi) std::swap(slab_lo, slab_hi);
+  }
+  double cyl_lo = -inf, cyl_hi = inf;
+  if (qa == 0) {
+    if (qc > 0) return out;  // parallel to the axis and outside the radius
+  } else {
+    // disc = qb^2 - qa qc = dd (r^2 |n x d|^2 - (n.(m x d))^2) by Lagrange's
+    // identity: the triple product is the lines' offset, so no large terms
+    // cancel (regression 0001).
+    const double triple = dot(n, mxd);
+    const double disc_dd = cyl.r * cyl.r * qa - triple * triple;
+    if (disc_dd < 0) return out;
+    const double sq = std::sqrt(dd) * std::sqrt(disc_dd);
+    // Roots without cancellation: k / qa and qc / k with k = -(qb + sign(qb) sq).
+    const double k = -(qb + std::copysign(sq, qb));
+    if (k == 0) {
+      cyl_lo = cyl_hi = 0;
+    } else {
+      cyl_lo = k / qa;
+      cyl_hi = qc / k;
+      if (cyl_lo > cyl_hi) std::swap(cyl_lo, cyl_hi);
+    }
+  }
+  const double entry = std::max(slab_lo, cyl_lo);
+  const double exit = std::min(slab_hi, cyl_hi);
+  if (!(entry <= exit) || entry > 1 || exit < 0) return out;
+
+  if (entry <= 0) {
     out.hit = true;
     out.starts_inside = true;
     out.t = 0;
     out.point = seg.a;
     return out;
   }
-
-  double best = std::numeric_limits<double>::infinity();
-  int feature = 0;  // 1 side, 2 cap p, 3 cap q
-
-  // Side: entering the infinite cylinder from outside it.
-  if (qc > 0 && qb < 0) {
-    // disc = qb^2 - qa qc = dd (r^2 |n x d|^2 - (n.(m x d))^2) by Lagrange's
-    // identity: the triple product is the lines' offset, so no large terms cancel.
-    const double triple = dot(n, mxd);
-    const double disc_dd = cyl.r * cyl.r * qa - triple * triple;
-    if (disc_dd >= 0) {
-      const double t = qc / (-qb + std::sqrt(dd) * std::sqrt(disc_dd));
-      const double axial = md + t * nd;
-      if (t >= 0 && t <= 1 && axial >= 0 && axial <= dd) {
-        best = t;
-        feature = 1;
-      }
-    }
-  }
-  // Cap at p: crossing the plane (x-p).d = 0 in the +d direction.
-  if (md < 0 && nd > 0) {
-    const double t = -md / nd;
-    if (t <= 1 && t < best) {
-      const Vec3 x = m + t * n;
-      const Vec3 xd = cross(x, d);
-      if (dot(xd, xd) <= r2dd) { best = t; feature = 2; }
-    }
-  }
-  // Cap at q: crossing the plane (x-p).d = dd in the -d direction.
-  if (md > dd && nd < 0) {
-    const double t = (dd - md) / nd;
-    if (t <= 1 && t < best) {
-      const Vec3 x = m + t * n;
-      const Vec3 xd = cross(x, d);
-      if (dot(xd, xd) <= r2dd) { best = t; feature = 3; }
-    }
-  }
-  if (feature == 0) return out;
-
+  const double best = entry;
+  const int feature = slab_lo >= cyl_lo ? (nd > 0 ? 2 : 3) : 1;  // 1 side, 2 cap p, 3 cap q
   out.hit = true;
   out.t = best;
   out.point = seg.a + best * n;
@@ -80,8 +84,7 @@ CastHit cast(const Segment& seg, const Cylinder& cyl) {
     out.normal = u;
   } else {
     const Vec3 x = m + best * n;
-    const Vec3 radial = x - (dot(x, u)) * u;
-    out.normal = max_abs(radial) > 0 ? detail::normalized(radial) : any_perpendicular(u);
+    out.normal = detail::unit_perpendicular_part(x, u);
   }
   return out;
 }

@@ -26,8 +26,12 @@ Contact collide(const Cylinder& cyl, const Sphere& s) {
   const Vec3 v = s.c - f.mid;
   const double ax = dot(v, f.u);
   const Vec3 w = v - ax * f.u;
-  const double rho = length(w);
+  const double rho = detail::safe_length(w);
   const double aax = std::fabs(ax);
+  // Offsets at the rounding level of the case carry no direction
+  // (regression 0002): a radial offset below it gives no radial direction.
+  const double noise = 16 * 0x1p-52 * std::max({max_abs(cyl.p), max_abs(cyl.q), max_abs(s.c), cyl.r, f.half});
+  const Vec3 rad_dir = rho > noise ? detail::unit_perpendicular_part(w, f.u) : any_perpendicular(f.u);
 
   if (aax <= f.half && rho <= cyl.r) {
     // Centre inside the cylinder: leave through the nearer cap or the side.
@@ -39,7 +43,7 @@ Contact collide(const Cylinder& cyl, const Sphere& s) {
       out.normal = ax >= 0 ? f.u : -f.u;
       out.depth = s.r + cap_gap;
     } else {
-      out.normal = rho > 0 ? detail::normalized(w) : any_perpendicular(f.u);
+      out.normal = rad_dir;
       out.depth = s.r + side_gap;
     }
     return out;
@@ -60,8 +64,15 @@ Contact collide(const Cylinder& cyl, const Sphere& s) {
   // Direction from the closest point to the centre, built from the offsets
   // (exact directions of the cap normal and the radial direction) so that a
   // tiny gap does not lose the direction to cancellation.
-  const Vec3 rad_dir = rho > 0 ? detail::normalized(w) : any_perpendicular(f.u);
-  const Vec3 n = (ax >= 0 ? ea : -ea) * f.u + er * rad_dir;
+  // Drop offsets at the rounding level; if both vanish the centre is on the
+  // surface and the normal of the face it is farther out of is valid.
+  const double ean = ea > noise ? ea : 0.0, ern = er > noise ? er : 0.0;
+  Vec3 n;
+  if (ean == 0 && ern == 0) n = ea >= er ? (ax >= 0 ? f.u : -f.u) : rad_dir;
+  else {
+    const double big = std::max(ean, ern);  // scaled so that huge offsets do not overflow
+    n = (ax >= 0 ? ean / big : -ean / big) * f.u + (ern / big) * rad_dir;
+  }
   out.normal = detail::normalized(n);
   out.depth = std::max(s.r - dist, 0.0);
   return out;

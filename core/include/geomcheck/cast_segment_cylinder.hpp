@@ -21,10 +21,13 @@
 //     there is no absolute "parallel" epsilon and the method is scale free;
 //   * a start inside the cylinder returns t = 0 (the printed form rejects the
 //     negative root and reports a miss);
-//   * cap hits are tested whenever the segment crosses a cap plane from
-//     outside, not only when the side root lands beyond a cap (the printed
-//     form misses cap entries whose side root lies before t = 0), and the
-//     p-side cap test uses k + t(2 mn + t nn) (printed: k + 2t(mn + t nn)).
+//   * the cap disks and the side are not accepted feature by feature: the
+//     hit is the first t of the intersection of the slab between the cap
+//     planes with the infinite cylinder's interval (entry = max of the two
+//     entries, exit = min of the exits). The printed feature tests miss cap
+//     entries whose side root lies before t = 0, use k + 2t(mn + t nn) for
+//     the p cap (should be k + t(2 mn + t nn)), and leave a gap at the rim
+//     where both tests can reject by one rounding (regression 0002).
 //
 // Invalid input (is_valid) gives "no hit".
 #pragma once

@@ -41,7 +41,9 @@
 //     is an error, not a silent infinity or zero. Parsing is locale free.
 //   * The whole file is at most kMaxCaseFileBytes (64 KiB).
 //
-// Every parse error reads "line N: <what is wrong>", N counting from 1.
+// Every parse error reads "line N: <what is wrong>", N counting from 1: the
+// offending line; for a shape missing a field, its "shape" line; for an
+// error at the end of the file (missing "end"), the last line.
 // The parser never throws and has no undefined behaviour on any input (it
 // is fuzzed). For every CaseFile c with !case_error(c):
 // parse_case(write_case(c)).value == c bit for bit (-0.0, subnormals, +-inf,
@@ -145,7 +147,8 @@ std::string write_case(const CaseFile& c);
 /// Parses case-file text. Never throws.
 ParseResult parse_case(std::string_view text);
 
-/// Reads and parses a file; errors are prefixed with the path.
+/// Reads and parses a file. A parse error reads "<path>: line N: ...";
+/// an unreadable file "cannot open case file '<path>': <reason>" (error_line 0).
 ParseResult load_case(const std::filesystem::path& path);
 
 /// Writes `c` to `path` (through a temporary file and a rename, so a reader

@@ -15,6 +15,24 @@ inline Vec3 normalized(Vec3 v) {
   return (1.0 / length(s)) * s;
 }
 
+/// Length of v without overflow or underflow of its square.
+inline double safe_length(Vec3 v) {
+  const double m = max_abs(v);
+  if (m == 0 || !std::isfinite(m)) return m;
+  return m * length((1.0 / m) * v);
+}
+
+/// The part of v perpendicular to unit u, as a unit vector; any unit
+/// perpendicular when that part is zero or not finite.
+inline Vec3 unit_perpendicular_part(Vec3 v, Vec3 u) {
+  const Vec3 w = v - dot(v, u) * u;
+  const double m = max_abs(w);
+  if (!(m > 0) || !std::isfinite(m)) return any_perpendicular(u);
+  const Vec3 r = normalized(w);
+  const Vec3 r2 = r - dot(r, u) * u;  // once more: w may carry rounding along u
+  return normalized(r2);
+}
+
 /// The cylinder's mid point, unit axis and half height.
 struct AxisFrame {
   Vec3 mid;
