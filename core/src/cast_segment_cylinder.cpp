@@ -44,13 +44,22 @@ CastHit cast(const Segment& seg, const Cylinder& cyl) {
   if (qa == 0) {
     if (qc > 0) return out;  // parallel to the axis and outside the radius
   } else {
-    // disc = qb^2 - qa qc = dd (r^2 |n x d|^2 - (n.(m x d))^2) by Lagrange's
-    // identity: the triple product is the lines' offset, so no large terms
-    // cancel (regression 0001).
-    const double triple = dot(n, mxd);
-    const double disc_dd = cyl.r * cyl.r * qa - triple * triple;
-    if (disc_dd < 0) return out;
-    const double sq = std::sqrt(dd) * std::sqrt(disc_dd);
+    // disc = qb^2 - qa qc, in the form that cannot cancel:
+    //  * qc <= 0 (start inside the infinite cylinder): qb^2 + qa |qc|, a sum
+    //    of non-negative terms (regression 0003: a segment parallel to the
+    //    axis to 1e-15 rad, where |n x d| is rounding noise);
+    //  * qc > 0: dd (r^2 |n x d|^2 - (n.(m x d))^2) by Lagrange's identity,
+    //    the triple product being the lines' offset (regression 0001: the
+    //    textbook form cancels when the line passes near the axis).
+    double sq;
+    if (qc <= 0) {
+      sq = std::sqrt(qb * qb - qa * qc);
+    } else {
+      const double triple = dot(n, mxd);
+      const double disc_dd = cyl.r * cyl.r * qa - triple * triple;
+      if (disc_dd < 0) return out;
+      sq = std::sqrt(dd) * std::sqrt(disc_dd);
+    }
     // Roots without cancellation: k / qa and qc / k with k = -(qb + sign(qb) sq).
     const double k = -(qb + std::copysign(sq, qb));
     if (k == 0) {

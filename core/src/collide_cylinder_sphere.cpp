@@ -7,26 +7,51 @@
 
 namespace geomcheck {
 
+namespace {
+
+// Offsets of the sphere centre from the cylinder, shared by overlap() and
+// collide() so that the two take the same decision bit for bit.
+struct Offsets {
+  detail::AxisFrame f;
+  Vec3 w;       // radial vector from the axis to the centre
+  double ax;    // axial offset from the mid point
+  double rho;   // |w|
+  double ea;    // beyond a cap plane (>= 0)
+  double er;    // beyond the side (>= 0)
+  explicit Offsets(const Cylinder& cyl, const Sphere& s) : f(cyl) {
+    const Vec3 v = s.c - f.mid;
+    ax = dot(v, f.u);
+    w = v - ax * f.u;
+    rho = detail::safe_length(w);
+    ea = std::max(std::fabs(ax) - f.half, 0.0);
+    er = std::max(rho - cyl.r, 0.0);
+  }
+  // ea^2 + er^2 <= r^2, scaled by an exact power of two so that squares of
+  // huge values do not overflow (bit-identical to the plain form otherwise).
+  bool within(double r) const {
+    const double m = std::max({ea, er, r});
+    if (m == 0) return true;
+    if (!std::isfinite(m)) return false;
+    const int e = std::ilogb(m);
+    const double a = std::ldexp(ea, -e), b = std::ldexp(er, -e), c = std::ldexp(r, -e);
+    return a * a + b * b <= c * c;
+  }
+};
+
+}  // namespace
+
 bool overlap(const Cylinder& cyl, const Sphere& s) {
   if (!is_valid(cyl) || !is_valid(s)) return false;
-  const detail::AxisFrame f(cyl);
-  const Vec3 v = s.c - f.mid;
-  const double ax = dot(v, f.u);
-  const Vec3 w = v - ax * f.u;
-  const double rho = length(w);
-  const double ea = std::max(std::fabs(ax) - f.half, 0.0);
-  const double er = std::max(rho - cyl.r, 0.0);
-  return ea * ea + er * er <= s.r * s.r;
+  return Offsets(cyl, s).within(s.r);
 }
 
 Contact collide(const Cylinder& cyl, const Sphere& s) {
   Contact out;
   if (!is_valid(cyl) || !is_valid(s)) return out;
-  const detail::AxisFrame f(cyl);
-  const Vec3 v = s.c - f.mid;
-  const double ax = dot(v, f.u);
-  const Vec3 w = v - ax * f.u;
-  const double rho = detail::safe_length(w);
+  const Offsets o(cyl, s);
+  const detail::AxisFrame& f = o.f;
+  const double ax = o.ax, rho = o.rho;
+  const Vec3 w = o.w;
   const double aax = std::fabs(ax);
   // Offsets at the rounding level of the case carry no direction
   // (regression 0002): a radial offset below it gives no radial direction.
@@ -53,12 +78,10 @@ Contact collide(const Cylinder& cyl, const Sphere& s) {
   const double cax = std::clamp(ax, -f.half, f.half);
   const Vec3 radial = rho > cyl.r ? (cyl.r / rho) * w : w;
   const Vec3 x = f.mid + cax * f.u + radial;
-  const double ea = std::max(aax - f.half, 0.0);
-  const double er = std::max(rho - cyl.r, 0.0);
+  const double ea = o.ea, er = o.er;
   // The same predicate as overlap(), so that the two never disagree.
-  const double dist2 = ea * ea + er * er;
-  if (!(dist2 <= s.r * s.r)) return out;
-  const double dist = std::sqrt(dist2);
+  if (!o.within(s.r)) return out;
+  const double dist = detail::safe_length(Vec3{ea, er, 0});
   out.hit = true;
   out.point = x;
   // Direction from the closest point to the centre, built from the offsets

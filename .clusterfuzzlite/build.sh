@@ -1,0 +1,16 @@
+#!/bin/bash -eu
+# Builds every geomcheck fuzz target with the engine's compiler and flags.
+cmake -S "$SRC/geomcheck" -B build-cfl -G Ninja \
+  -DCMAKE_CXX_COMPILER="$CXX" -DCMAKE_CXX_FLAGS="$CXXFLAGS" \
+  -DGEOMCHECK_FUZZ=ON -DGEOMCHECK_FUZZ_LOCAL=OFF -DGEOMCHECK_FUZZ_ENGINE="$LIB_FUZZING_ENGINE" \
+  -DGEOMCHECK_TESTS=OFF -DGEOMCHECK_BENCH=OFF -DCMAKE_BUILD_TYPE=RelWithDebInfo
+cmake --build build-cfl
+./build-cfl/fuzz/make_fuzz_seeds "$SRC/geomcheck/corpora/seeds" build-cfl/seeds
+for t in build-cfl/fuzz/fuzz_*; do
+  name=$(basename "$t")
+  cp "$t" "$OUT/"
+  q=${name#fuzz_}
+  if [ -d "build-cfl/seeds/$q" ]; then
+    (cd "build-cfl/seeds/$q" && zip -q -r "$OUT/${name}_seed_corpus.zip" .)
+  fi
+done
