@@ -39,6 +39,25 @@ bool meets_adjusted(const oracle::QSegment& s, const oracle::QCylinder& c, const
   return sh && oracle::solve_cast(s, *sh).hit;
 }
 
+// How far from touching a disagreeing case is, as a multiple of scale: the
+// smallest delta (found by bisection on log2 delta, to about 2%) such that a
+// false hit meets the cylinder grown by delta, or a missed hit never gets
+// delta deep (misses the cylinder shrunk by delta).
+double disagreement_margin(const oracle::QSegment& s, const oracle::QCylinder& c, bool false_hit, double scale) {
+  auto explained = [&](double lg) {
+    const Q delta = oracle::to_q(std::exp2(lg) * scale);
+    return false_hit ? meets_adjusted(s, c, delta, +1) : !meets_adjusted(s, c, delta, -1);
+  };
+  double lo = -100, hi = 2;
+  if (explained(lo)) return std::exp2(lo);
+  if (!explained(hi)) return std::exp2(hi);
+  for (int i = 0; i < 14; ++i) {
+    const double mid = 0.5 * (lo + hi);
+    (explained(mid) ? hi : lo) = mid;
+  }
+  return std::exp2(hi);
+}
+
 // Unit vector (as doubles) of an exact rational vector.
 Vec3 unit_of(const QVec& v) {
   const QInterval len = oracle::sqrt_interval(oracle::dot(v, v));
@@ -116,6 +135,7 @@ Evaluation evaluate(const SegmentCylinderCase& c, const CastSegmentCylinderImpl&
   e.near_boundary = truth.hit ? !meets_adjusted(qs, qc, band, -1) : meets_adjusted(qs, qc, band, +1);
   if (e.disagree) {
     e.excused = e.near_boundary;
+    e.margin = disagreement_margin(qs, qc, h.hit, e.scale);
     return e;
   }
   if (!h.hit || !truth.hit) return e;

@@ -53,7 +53,8 @@ struct Evaluation {
   bool disagree = false;         ///< prod_hit != truth_hit
   bool excused = false;          ///< disagreement inside the verdict band
   bool near_boundary = false;    ///< the exact answer is within the verdict band of touching
-  double margin = NAN;           ///< |signed distance| / scale of a disagreement
+  double margin = NAN;           ///< how far from touching a disagreement is, / scale
+                                 ///< (collide: |signed distance|; cast: see disagreement_margin)
   double depth_err = NAN;
   double normal_err = NAN;
   double point_err = NAN;
