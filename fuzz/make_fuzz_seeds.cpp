@@ -6,6 +6,7 @@
 #include <iostream>
 
 #include "geomcheck/casefile.hpp"
+#include "geomcheck/fuzz_decode.hpp"
 
 namespace fs = std::filesystem;
 
@@ -23,11 +24,13 @@ int main(int argc, char** argv) {
     fs::copy_file(e.path(), out / "casefile" / e.path().filename(), fs::copy_options::overwrite_existing);
     const auto r = geomcheck::load_case(e.path());
     if (!r.ok()) continue;  // malformed files are seeds for the parser only
-    auto bytes = geomcheck::fuzz_input_from_case(r.value);
+    // The raw-mode input of the case, and the same bytes read in structured
+    // mode (a different but valid starting point for the structured decoder).
+    auto bytes = geomcheck::fuzz::raw_input(r.value);
     const fs::path dir = out / geomcheck::info(r.value.query).name;
     for (std::uint8_t mode : {std::uint8_t(0), std::uint8_t(1)}) {
+      bytes[0] = mode;
       std::ofstream f(dir / (e.path().stem().string() + (mode ? ".structured" : ".raw")), std::ios::binary);
-      f.put(static_cast<char>(mode));
       f.write(reinterpret_cast<const char*>(bytes.data()), static_cast<std::streamsize>(bytes.size()));
     }
     ++n;

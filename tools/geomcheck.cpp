@@ -10,6 +10,7 @@
 
 #include "campaign.hpp"
 #include "geomcheck/casefile.hpp"
+#include "geomcheck/fuzz_decode.hpp"
 #include "geomcheck/properties/checks.hpp"
 #include "geomcheck/properties/tolerances.hpp"
 #include "geomcheck/shape_traits.hpp"
@@ -186,7 +187,9 @@ int cmd_convert(bool fuzz, const std::vector<std::string>& args) {
     data = slurp(in);
   }
   if (fuzz) {
-    CaseFile f = case_from_fuzz_input(q, reinterpret_cast<const std::uint8_t*>(data.data()), data.size());
+    const std::string artifact = fs::path(pos[1]).filename().string();
+    CaseFile f = fuzz::case_from_input(q, reinterpret_cast<const std::uint8_t*>(data.data()), data.size(),
+                                       artifact.rfind("crash-", 0) == 0 || artifact.rfind("timeout-", 0) == 0 ? artifact : "");
     return write_out(f, out);
   }
   const auto f = case_from_rapidcheck_text(q, data);

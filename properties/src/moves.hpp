@@ -41,6 +41,15 @@ struct Move {
   bool exact() const { return id <= 3; }
 };
 
+/// How far the rounded rigid motion (id 5) may move a cylinder's surface, as
+/// a multiple of scale: endpoints move by a few ulps of the scene, and a
+/// point of the rim moves by that times (1 + 2 r / |q - p|) since the axis
+/// direction turns (a wide disk with a short axis is badly conditioned).
+inline double rigid_slack(const Cylinder& c) {
+  const double len = length(c.q - c.p);
+  return 8 * 0x1p-52 * (1 + 2 * c.r / len);
+}
+
 inline Sphere apply(const Move& m, const Sphere& s) { return {m.pt(s.c), m.len(s.r)}; }
 inline Cylinder apply(const Move& m, const Cylinder& c) { return {m.pt(c.p), m.pt(c.q), m.len(c.r)}; }
 inline Segment apply(const Move& m, const Segment& s) { return {m.pt(s.a), m.pt(s.b)}; }

@@ -1,0 +1,70 @@
+#!/usr/bin/env bash
+# geomcheck — command-line tests: help, bad arguments, replay verdicts and
+# exit codes, both converters. Usage: test_cli.sh GEOMCHECK SOURCE_DIR
+set -u
+tool=$1; src=$2
+tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
+fails=0; passes=0
+ok() { passes=$((passes + 1)); }
+bad() { echo "FAILED: $*"; fails=$((fails + 1)); }
+expect_rc() {  # expected-rc description command...
+  local want=$1 what=$2; shift 2
+  "$@" > "$tmp/out" 2>&1; local rc=$?
+  if [ "$rc" = "$want" ]; then ok; else bad "$what: exit $rc, wanted $want"; sed 's/^/    /' "$tmp/out" | head -20; fi
+}
+
+expect_rc 0 "--help" "$tool" --help
+grep -q "campaign" "$tmp/out" && grep -q "replay" "$tmp/out" && ok || bad "--help lists the commands"
+expect_rc 2 "unknown command" "$tool" frobnicate
+grep -q "unknown command" "$tmp/out" && ok || bad "unknown command is named"
+expect_rc 2 "replay of a missing file" "$tool" replay "$tmp/nope.case"
+grep -q "no such file" "$tmp/out" && ok || bad "missing file is named"
+expect_rc 0 "queries" "$tool" queries
+grep -q "cast_segment_cylinder" "$tmp/out" && ok || bad "queries lists cast_segment_cylinder"
+
+# A malformed file: replay fails with the parser's line number.
+mal=$(ls "$src"/corpora/tests/malformed/*.case | head -1)
+expect_rc 1 "replay of a malformed file" "$tool" replay "$mal"
+grep -q "ERROR.*line [0-9]" "$tmp/out" && ok || bad "malformed file error names a line"
+
+# A seed replays and passes; with a wrong filed verdict it fails.
+seed=$(ls "$src"/corpora/seeds/collide_cylinder_sphere/*.case | head -1)
+expect_rc 0 "replay of a seed" "$tool" replay "$seed"
+grep -q "production:" "$tmp/out" && grep -q "oracle:" "$tmp/out" && grep -q "FCL:" "$tmp/out" && ok || bad "replay shows production, oracle and FCL"
+cat > "$tmp/wrong.case" <<'CASE'
+geomcheck-case 1
+query collide_cylinder_sphere
+found-by hand
+oracle-verdict separated
+shape cylinder
+  p 0 0 0
+  q 0 0 2
+  r 1
+shape sphere
+  c 0 0 1
+  r 0.5
+end
+CASE
+expect_rc 1 "replay of a case filed with a wrong verdict" "$tool" replay "$tmp/wrong.case"
+grep -q "the oracle now says otherwise" "$tmp/out" && ok || bad "wrong filed verdict is pointed out"
+
+# from-rapidcheck: a printed counterexample becomes a case that replays.
+echo 'Falsifiable... (cylinder{p=(0x0p+0, 0x0p+0, 0x0p+0), q=(0x0p+0, 0x0p+0, 0x1p+1), r=0x1p+0}, sphere{c=(0x1p+1, 0x0p+0, 0x1p+0), r=0x1p+0}, "side")' > "$tmp/rc.txt"
+expect_rc 0 "from-rapidcheck" "$tool" from-rapidcheck collide_cylinder_sphere "$tmp/rc.txt" -o "$tmp/rc.case"
+expect_rc 0 "replay of the converted RapidCheck case" "$tool" replay "$tmp/rc.case"
+grep -q "touching" "$tmp/out" && ok || bad "converted RapidCheck case is the touching sphere"
+expect_rc 1 "from-rapidcheck without shapes" "$tool" from-rapidcheck collide_cylinder_sphere /dev/null
+
+# from-fuzz: raw bytes (mode byte, then doubles) become a case that replays.
+python3 - "$tmp/crash" <<'PY'
+import struct, sys
+# mode byte 0 (raw), then segment a, b and cylinder p, q, r as little-endian doubles
+open(sys.argv[1], 'wb').write(b'\x00' + struct.pack('<13d', -3,0,1, 3,0,1, 0,0,0, 0,0,2, 1))
+PY
+expect_rc 0 "from-fuzz" "$tool" from-fuzz cast_segment_cylinder "$tmp/crash" -o "$tmp/fz.case"
+expect_rc 0 "replay of the converted fuzz case" "$tool" replay "$tmp/fz.case"
+grep -q "hit side" "$tmp/out" && ok || bad "converted fuzz case is the side hit"
+expect_rc 2 "from-fuzz with an unknown query" "$tool" from-fuzz nosuchquery "$tmp/crash"
+
+echo "cli: $passes passed, $fails failed"
+[ "$fails" = 0 ]
