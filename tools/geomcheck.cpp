@@ -91,6 +91,7 @@ bool replay_one(const fs::path& path, bool quiet) {
     if (e.valid) {
       std::printf("  scale %.3g; verdict band %.1e * scale", e.scale, tol.verdict);
       if (std::isfinite(e.signed_distance)) std::printf("; |signed distance| = %.3g * scale", std::fabs(e.signed_distance) / e.scale);
+      else if (std::isfinite(e.margin)) std::printf("; disagreement margin %.3g * scale", e.margin);
       std::printf("\n  production vs oracle: %s\n",
                   !e.disagree ? "agree" : (e.excused ? "disagree, inside the band (either answer passes)" : "DISAGREE beyond the band"));
       auto err = [](const char* n, double v, double b) {

@@ -9,9 +9,27 @@
 
 namespace geomcheck {
 
-CastHit cast(const Segment& seg, const Cylinder& cyl) {
+namespace {
+
+CastHit cast_scaled(const Segment& seg, const Cylinder& cyl);
+
+}  // namespace
+
+CastHit cast(const Segment& seg_in, const Cylinder& cyl_in) {
+  if (!is_valid(seg_in) || !is_valid(cyl_in)) return {};
+  // Run on the scene scaled by an exact power of two (the quadratic's
+  // coefficients are fourth powers of lengths); scale the point back.
+  const detail::SceneScale sc(std::fmax(detail::largest(seg_in), detail::largest(cyl_in)));
+  CastHit out = cast_scaled(sc.in(seg_in), sc.in(cyl_in));
+  out.point = sc.out(out.point);
+  return out;
+}
+
+namespace {
+
+CastHit cast_scaled(const Segment& seg, const Cylinder& cyl) {
   CastHit out;
-  if (!is_valid(seg) || !is_valid(cyl)) return out;
+  if (!is_valid(cyl)) return out;  // an axis far below the scene's magnitude vanishes
   const Vec3 d = cyl.q - cyl.p;
   const Vec3 m = seg.a - cyl.p;
   const Vec3 n = seg.b - seg.a;
@@ -97,5 +115,7 @@ CastHit cast(const Segment& seg, const Cylinder& cyl) {
   }
   return out;
 }
+
+}  // namespace
 
 }  // namespace geomcheck

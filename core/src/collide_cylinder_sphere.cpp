@@ -38,16 +38,35 @@ struct Offsets {
   }
 };
 
+Contact collide_scaled(const Cylinder& cyl, const Sphere& s);
+
 }  // namespace
 
-bool overlap(const Cylinder& cyl, const Sphere& s) {
-  if (!is_valid(cyl) || !is_valid(s)) return false;
+bool overlap(const Cylinder& cyl_in, const Sphere& s_in) {
+  if (!is_valid(cyl_in) || !is_valid(s_in)) return false;
+  const detail::SceneScale sc(std::fmax(detail::largest(cyl_in), detail::largest(s_in)));
+  const Cylinder cyl = sc.in(cyl_in);
+  const Sphere s = sc.in(s_in);
+  if (!is_valid(cyl)) return false;  // an axis far below the scene's magnitude vanishes
   return Offsets(cyl, s).within(s.r);
 }
 
-Contact collide(const Cylinder& cyl, const Sphere& s) {
+Contact collide(const Cylinder& cyl_in, const Sphere& s_in) {
   Contact out;
-  if (!is_valid(cyl) || !is_valid(s)) return out;
+  if (!is_valid(cyl_in) || !is_valid(s_in)) return out;
+  // Run on the scene scaled by an exact power of two; scale the answer back.
+  const detail::SceneScale sc(std::fmax(detail::largest(cyl_in), detail::largest(s_in)));
+  out = collide_scaled(sc.in(cyl_in), sc.in(s_in));
+  out.point = sc.out(out.point);
+  out.depth = sc.out(out.depth);
+  return out;
+}
+
+namespace {
+
+Contact collide_scaled(const Cylinder& cyl, const Sphere& s) {
+  Contact out;
+  if (!is_valid(cyl)) return out;
   const Offsets o(cyl, s);
   const detail::AxisFrame& f = o.f;
   const double ax = o.ax, rho = o.rho;
@@ -100,5 +119,7 @@ Contact collide(const Cylinder& cyl, const Sphere& s) {
   out.depth = std::max(s.r - dist, 0.0);
   return out;
 }
+
+}  // namespace
 
 }  // namespace geomcheck

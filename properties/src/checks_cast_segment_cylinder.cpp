@@ -1,3 +1,4 @@
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -92,14 +93,23 @@ double normal_error(const oracle::QCylinder& c, const QVec& x, Vec3 n, double ne
   if (gs.lo < 0 && gs.hi < 0) gs = -gs;
   else if (gs.lo < 0) gs = {Q(0), gs.hi > -gs.lo ? gs.hi : -gs.lo};
   const Vec3 u = unit_of(d);
-  const bool near_p = gp.lo <= qnear, near_q = gq.lo <= qnear, near_s = gs.lo <= qnear && rho2 > 0;
-  const Vec3 radial = rho2 > 0 ? unit_of(perp) : Vec3{};
+  const bool near_p = gp.lo <= qnear, near_q = gq.lo <= qnear, near_s = gs.lo <= qnear;
   double best = INFINITY;
   if (near_p) best = std::fmin(best, length(n - (-u)));
   if (near_q) best = std::fmin(best, length(n - u));
-  if (near_s) best = std::fmin(best, length(n - radial));
-  if (near_s && near_p) best = std::fmin(best, cone_distance(n, -u, radial));
-  if (near_s && near_q) best = std::fmin(best, cone_distance(n, u, radial));
+  if (rho2 > 0) {
+    const Vec3 radial = unit_of(perp);
+    if (near_s) best = std::fmin(best, length(n - radial));
+    if (near_s && near_p) best = std::fmin(best, cone_distance(n, -u, radial));
+    if (near_s && near_q) best = std::fmin(best, cone_distance(n, u, radial));
+  } else if (near_s) {
+    // On the axis of a cylinder thinner than `near` (r = 0: a segment):
+    // every perpendicular is a side normal, and next to a cap the cone is
+    // the whole hemisphere around the cap normal.
+    best = std::fmin(best, std::fabs(dot(n, u)));
+    if (near_p) best = std::fmin(best, std::fmax(0.0, dot(n, u)));
+    if (near_q) best = std::fmin(best, std::fmax(0.0, -dot(n, u)));
+  }
   return best;  // INFINITY when x is near no feature (then t_err reports it)
 }
 
@@ -245,8 +255,11 @@ CheckResult check_metamorphic(const SegmentCylinderCase& c, int move, const Cast
   // failure only when the original case is certain beyond band + slack.
   const CastHit h0 = impl.cast(c.a, c.b), h1 = impl.cast(t.a, t.b);
   if (h0.hit == h1.hit) return std::nullopt;
+  // The moved coordinates round at the moved scene's magnitude (the motion
+  // translates), so the slack is taken at the larger of the two scales.
   const double scale = oracle::case_scale(c.a, c.b);
-  const Q delta = oracle::to_q((tolerances(kId).verdict + moves::rigid_slack(c.b)) * scale);
+  const double moved_scale = std::max(scale, oracle::case_scale(t.a, t.b));
+  const Q delta = oracle::to_q(tolerances(kId).verdict * scale + moves::rigid_slack(c.b) * moved_scale);
   const oracle::QSegment qs = oracle::to_q(c.a);
   const oracle::QCylinder qc = oracle::to_q(c.b);
   const bool truth = oracle::solve_cast(qs, qc).hit;

@@ -187,7 +187,9 @@ CheckResult check_metamorphic(const CylinderSphereCase& c, int move, const Cylin
     // Axis permutation is the same solid: only production's rounding may
     // differ. The rigid motion also moves the solid by rigid_slack.
     const Evaluation e0 = evaluate(c, impl), e1 = evaluate(t, impl);
-    const double slack = move == 5 ? moves::rigid_slack(c.a) * e0.scale : 0.0;
+    // The moved coordinates round at the moved scene's magnitude (the motion
+    // translates), so the slack is taken at the larger of the two scales.
+    const double slack = move == 5 ? moves::rigid_slack(c.a) * std::max(e0.scale, e1.scale) : 0.0;
     auto near = [&](const Evaluation& e) {
       return e.near_boundary || std::fabs(e.signed_distance) <= tolerances(kId).verdict * e.scale + slack;
     };

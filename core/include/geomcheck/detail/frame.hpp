@@ -43,11 +43,33 @@ struct AxisFrame {
   double half;
   explicit AxisFrame(const Cylinder& c) {
     const Vec3 d = c.q - c.p;
-    const double len = length(d);
-    u = (1.0 / len) * d;
-    half = 0.5 * len;
+    u = normalized(d);
+    half = 0.5 * safe_length(d);
     mid = 0.5 * (c.p + c.q);
   }
 };
+
+/// An exact power-of-two rescaling of a whole scene: the queries run on the
+/// scene scaled so that its largest magnitude is in [1, 2), which keeps
+/// squares and fourth powers far from overflow and underflow, and is
+/// bit-identical to the unscaled computation wherever that one does not
+/// overflow or underflow (scaling by 2^k commutes with rounding).
+struct SceneScale {
+  int e = 0;
+  explicit SceneScale(double largest) {
+    e = largest > 0 && std::isfinite(largest) ? std::ilogb(largest) : 0;
+  }
+  double in(double v) const { return std::ldexp(v, -e); }
+  Vec3 in(Vec3 v) const { return {in(v.x), in(v.y), in(v.z)}; }
+  double out(double v) const { return std::ldexp(v, e); }
+  Vec3 out(Vec3 v) const { return {out(v.x), out(v.y), out(v.z)}; }
+  Cylinder in(const Cylinder& c) const { return {in(c.p), in(c.q), in(c.r)}; }
+  Sphere in(const Sphere& s) const { return {in(s.c), in(s.r)}; }
+  Segment in(const Segment& s) const { return {in(s.a), in(s.b)}; }
+};
+
+inline double largest(const Cylinder& c) { return std::fmax(std::fmax(max_abs(c.p), max_abs(c.q)), c.r); }
+inline double largest(const Sphere& s) { return std::fmax(max_abs(s.c), s.r); }
+inline double largest(const Segment& s) { return std::fmax(max_abs(s.a), max_abs(s.b)); }
 
 }  // namespace geomcheck::detail
