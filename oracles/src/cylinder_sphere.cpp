@@ -20,6 +20,21 @@ int outside_sign(const Q& ea2, const Q& rho2, bool beyond_rim, const Q& r, const
   return sign(k * k - 4 * r * r * rho2);
 }
 
+// Sets the verdict from the exact sign of the signed distance and makes the
+// enclosure agree with it (the sign is exact; the enclosure may straddle 0).
+void settle(CylinderSphereTruth& out, int sign) {
+  if (sign > 0) {
+    out.verdict = Verdict::Separated;
+    if (out.signed_distance.lo < 0) out.signed_distance.lo = 0;
+  } else if (sign == 0) {
+    out.verdict = Verdict::Touching;
+    out.signed_distance = point(Q(0));
+  } else {
+    out.verdict = Verdict::Overlapping;
+    if (out.signed_distance.hi > 0) out.signed_distance.hi = 0;
+  }
+}
+
 }  // namespace
 
 CylinderSphereTruth solve_cylinder_sphere(const QCylinder& cyl, const QSphere& s) {
@@ -46,13 +61,7 @@ CylinderSphereTruth solve_cylinder_sphere(const QCylinder& cyl, const QSphere& s
     const QInterval depth = point(s.r) + min(cap_gap, side_gap);
     out.signed_distance = -depth;
     const bool on_boundary = t == 0 || t == dd || cr2 == r2dd;
-    if (s.r == 0 && on_boundary) {
-      out.verdict = Verdict::Touching;
-      out.signed_distance = point(Q(0));
-    } else {
-      out.verdict = Verdict::Overlapping;
-      if (out.signed_distance.hi > 0) out.signed_distance.hi = 0;
-    }
+    settle(out, s.r == 0 && on_boundary ? 0 : -1);
     return out;
   }
 
@@ -70,16 +79,7 @@ CylinderSphereTruth solve_cylinder_sphere(const QCylinder& cyl, const QSphere& s
     dist2 = dist2 + er * er;
   }
   out.signed_distance = sqrt_interval(dist2) - point(s.r);
-  if (sg > 0) {
-    out.verdict = Verdict::Separated;
-    if (out.signed_distance.lo < 0) out.signed_distance.lo = 0;
-  } else if (sg == 0) {
-    out.verdict = Verdict::Touching;
-    out.signed_distance = point(Q(0));
-  } else {
-    out.verdict = Verdict::Overlapping;
-    if (out.signed_distance.hi > 0) out.signed_distance.hi = 0;
-  }
+  settle(out, sg);
   return out;
 }
 

@@ -83,30 +83,20 @@ QInterval sqrt_interval(const QInterval& x) {
   return {sqrt_interval(x.lo).lo, sqrt_interval(x.hi).hi};
 }
 
-double to_double(const Q& q) {
+namespace {
+double to_double_rounded(const Q& q, mpfr_rnd_t mode) {
   mpfr_t f;
   mpfr_init2(f, 53);
-  mpfr_set_q(f, q.backend().data(), MPFR_RNDN);
-  const double d = mpfr_get_d(f, MPFR_RNDN);
+  mpfr_set_q(f, q.backend().data(), mode);
+  const double d = mpfr_get_d(f, mode);
   mpfr_clear(f);
   return d;
 }
-double to_double_down(const Q& q) {
-  mpfr_t f;
-  mpfr_init2(f, 53);
-  mpfr_set_q(f, q.backend().data(), MPFR_RNDD);
-  const double d = mpfr_get_d(f, MPFR_RNDD);
-  mpfr_clear(f);
-  return d;
-}
-double to_double_up(const Q& q) {
-  mpfr_t f;
-  mpfr_init2(f, 53);
-  mpfr_set_q(f, q.backend().data(), MPFR_RNDU);
-  const double d = mpfr_get_d(f, MPFR_RNDU);
-  mpfr_clear(f);
-  return d;
-}
+}  // namespace
+
+double to_double(const Q& q) { return to_double_rounded(q, MPFR_RNDN); }
+double to_double_down(const Q& q) { return to_double_rounded(q, MPFR_RNDD); }
+double to_double_up(const Q& q) { return to_double_rounded(q, MPFR_RNDU); }
 
 double QInterval::mid() const { return to_double((lo + hi) / 2); }
 

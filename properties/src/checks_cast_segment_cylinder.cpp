@@ -221,21 +221,11 @@ CheckResult check_symmetry(const SegmentCylinderCase& c, const CastSegmentCylind
   return std::nullopt;
 }
 
-namespace {
-bool scalable_case(const SegmentCylinderCase& c, int e) {
-  double v[6 + 7];
-  ShapeTraits<Segment>::to(c.a, v);
-  ShapeTraits<Cylinder>::to(c.b, v + 6);
-  for (double x : v)
-    if (!moves::scalable(x, e)) return false;
-  return true;
-}
-}  // namespace
 
 CheckResult check_metamorphic(const SegmentCylinderCase& c, int move, const CastSegmentCylinderImpl& impl) {
   if (!valid_case(c)) return std::nullopt;
   const moves::Move m{move};
-  if ((move == 2 && !scalable_case(c, 8)) || (move == 3 && !scalable_case(c, -8))) return std::nullopt;
+  if (!moves::applicable(c, move)) return std::nullopt;
   const SegmentCylinderCase t{moves::apply(m, c.a), moves::apply(m, c.b)};
   // A rounded move can destroy a degenerate shape (an axis one ulp long
   // collapses to p == q): the moved case is then no longer the same solid.

@@ -144,21 +144,11 @@ CheckResult check_symmetry(const CylinderSphereCase& c, const CylinderSphereImpl
   return std::nullopt;
 }
 
-namespace {
-bool scalable_case(const CylinderSphereCase& c, int e) {
-  double v[7 + 4];
-  ShapeTraits<Cylinder>::to(c.a, v);
-  ShapeTraits<Sphere>::to(c.b, v + 7);
-  for (double x : v)
-    if (!moves::scalable(x, e)) return false;
-  return true;
-}
-}  // namespace
 
 CheckResult check_metamorphic(const CylinderSphereCase& c, int move, const CylinderSphereImpl& impl) {
   if (!sphere_valid_case(c)) return std::nullopt;
   const moves::Move m{move};
-  if ((move == 2 && !scalable_case(c, 8)) || (move == 3 && !scalable_case(c, -8))) return std::nullopt;
+  if (!moves::applicable(c, move)) return std::nullopt;
   const CylinderSphereCase t{moves::apply(m, c.a), moves::apply(m, c.b)};
   // A rounded move can destroy a degenerate shape (an axis one ulp long
   // collapses to p == q): the moved case is then no longer the same solid.

@@ -3,6 +3,7 @@
 
 #include <cmath>
 
+#include "geomcheck/shape_traits.hpp"
 #include "geomcheck/shapes.hpp"
 
 namespace geomcheck::moves {
@@ -50,10 +51,6 @@ inline double rigid_slack(const Cylinder& c) {
   return 8 * 0x1p-52 * (1 + 2 * c.r / len);
 }
 
-inline Sphere apply(const Move& m, const Sphere& s) { return {m.pt(s.c), m.len(s.r)}; }
-inline Cylinder apply(const Move& m, const Cylinder& c) { return {m.pt(c.p), m.pt(c.q), m.len(c.r)}; }
-inline Segment apply(const Move& m, const Segment& s) { return {m.pt(s.a), m.pt(s.b)}; }
-
 /// True when v is finite, and zero or normal (not subnormal): scaling it by
 /// a power of two keeps it exact.
 inline bool scalable(double v, int e) {
@@ -61,5 +58,26 @@ inline bool scalable(double v, int e) {
   const double s = std::ldexp(v, e);
   return std::isnormal(v) && std::isnormal(s) && std::fabs(v) < 1e150 && std::fabs(v) > 1e-150;
 }
+
+/// Every double of a two-shape case can be scaled by 2^e exactly.
+template <class Case>
+bool scalable_case(const Case& c, int e) {
+  double v[ShapeTraits<typename Case::ShapeA>::size + ShapeTraits<typename Case::ShapeB>::size];
+  ShapeTraits<typename Case::ShapeA>::to(c.a, v);
+  ShapeTraits<typename Case::ShapeB>::to(c.b, v + ShapeTraits<typename Case::ShapeA>::size);
+  for (double x : v)
+    if (!scalable(x, e)) return false;
+  return true;
+}
+
+/// Moves whose result is compared: the power-of-two scales only when exact.
+template <class Case>
+bool applicable(const Case& c, int move) {
+  return !((move == 2 && !scalable_case(c, 8)) || (move == 3 && !scalable_case(c, -8)));
+}
+
+inline Sphere apply(const Move& m, const Sphere& s) { return {m.pt(s.c), m.len(s.r)}; }
+inline Cylinder apply(const Move& m, const Cylinder& c) { return {m.pt(c.p), m.pt(c.q), m.len(c.r)}; }
+inline Segment apply(const Move& m, const Segment& s) { return {m.pt(s.a), m.pt(s.b)}; }
 
 }  // namespace geomcheck::moves

@@ -24,16 +24,21 @@ inline double safe_length(Vec3 v) {
   return std::ldexp(length(Vec3{std::ldexp(v.x, -e), std::ldexp(v.y, -e), std::ldexp(v.z, -e)}), e);
 }
 
-/// The part of v perpendicular to unit u, as a unit vector; any unit
-/// perpendicular when that part is zero or not finite.
+/// The direction of the part of v perpendicular to unit u, as a unit vector
+/// that is perpendicular to u to rounding whatever v is: it is built from
+/// v's components in an orthonormal frame (e1, e2) around u, not by
+/// subtracting v's component along u (which cancels to noise when v is
+/// almost parallel to u). Any unit perpendicular when that part vanishes.
 inline Vec3 unit_perpendicular_part(Vec3 v, Vec3 u) {
-  const Vec3 w = v - dot(v, u) * u;
-  const double m = max_abs(w);
-  if (!(m > 0) || !std::isfinite(m)) return any_perpendicular(u);
-  const Vec3 r = normalized(w);
-  const Vec3 r2 = r - dot(r, u) * u;  // once more: w may carry rounding along u
-  const Vec3 out = max_abs(r2) > 0 ? normalized(r2) : any_perpendicular(u);
-  return is_finite(out) ? out : any_perpendicular(u);
+  const Vec3 e1 = any_perpendicular(u);
+  const Vec3 e2 = cross(u, e1);
+  const double a = dot(v, e1), b = dot(v, e2);
+  const double m = std::fmax(std::fabs(a), std::fabs(b));
+  if (!(m > 0) || !std::isfinite(m)) return e1;
+  const int e = std::ilogb(m);
+  const double as = std::ldexp(a, -e), bs = std::ldexp(b, -e);
+  const double l = std::sqrt(as * as + bs * bs);
+  return (as / l) * e1 + (bs / l) * e2;
 }
 
 /// The cylinder's mid point, unit axis and half height.
