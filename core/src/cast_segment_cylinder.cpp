@@ -19,7 +19,7 @@ CastHit cast(const Segment& seg_in, const Cylinder& cyl_in) {
   if (!is_valid(seg_in) || !is_valid(cyl_in)) return {};
   // Run on the scene scaled by an exact power of two (the quadratic's
   // coefficients are fourth powers of lengths); scale the point back.
-  const detail::SceneScale sc(std::fmax(detail::largest(seg_in), detail::largest(cyl_in)));
+  const detail::SceneScale sc(std::max(detail::largest(seg_in), detail::largest(cyl_in)));
   CastHit out = cast_scaled(sc.in(seg_in), sc.in(cyl_in));
   out.point = sc.out(out.point);
   return out;

@@ -97,13 +97,15 @@ double normal_error(const oracle::QCylinder& c, const QVec& x, Vec3 n, double ne
   double best = INFINITY;
   if (near_p) best = std::fmin(best, length(n - (-u)));
   if (near_q) best = std::fmin(best, length(n - u));
-  if (rho2 > 0) {
+  // A cylinder thinner than `near` has no meaningful radial direction at
+  // this tolerance (its hit point's offset from the axis is noise).
+  if (rho2 > 0 && c.r > qnear) {
     const Vec3 radial = unit_of(perp);
     if (near_s) best = std::fmin(best, length(n - radial));
     if (near_s && near_p) best = std::fmin(best, cone_distance(n, -u, radial));
     if (near_s && near_q) best = std::fmin(best, cone_distance(n, u, radial));
   } else if (near_s) {
-    // On the axis of a cylinder thinner than `near` (r = 0: a segment):
+    // On a cylinder thinner than `near` (r = 0: a segment):
     // every perpendicular is a side normal, and next to a cap the cone is
     // the whole hemisphere around the cap normal.
     best = std::fmin(best, std::fabs(dot(n, u)));

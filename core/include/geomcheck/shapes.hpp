@@ -42,28 +42,33 @@ struct Obb { Vec3 c; std::array<Vec3, 3> axes{{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}}
 /// Closed triangle.
 struct Triangle { Vec3 a, b, c; };
 
+/// True when every value is finite: 0 * x is 0 for finite x and NaN for
+/// +-inf or NaN, so one comparison of the sum decides (no branch per value).
+template <class... T>
+constexpr bool all_finite(T... v) {
+  return ((0.0 * v) + ... + 0.0) == 0.0;
+}
+inline bool all_finite(Vec3 a) { return all_finite(a.x, a.y, a.z); }
+
 /// Valid: both endpoints finite.
-inline bool is_valid(const Segment& s) { return is_finite(s.a) && is_finite(s.b); }
+inline bool is_valid(const Segment& s) { return all_finite(s.a.x, s.a.y, s.a.z, s.b.x, s.b.y, s.b.z); }
 /// Valid: finite centre, finite radius >= 0.
-inline bool is_valid(const Sphere& s) { return is_finite(s.c) && std::isfinite(s.r) && s.r >= 0; }
+inline bool is_valid(const Sphere& s) { return all_finite(s.c.x, s.c.y, s.c.z, s.r) && s.r >= 0; }
 /// Valid: finite endpoints, finite radius >= 0.
 inline bool is_valid(const Capsule& s) {
-  return is_finite(s.p) && is_finite(s.q) && std::isfinite(s.r) && s.r >= 0;
+  return all_finite(s.p.x, s.p.y, s.p.z, s.q.x, s.q.y, s.q.z, s.r) && s.r >= 0;
 }
-/// Valid: finite endpoints, p != q, finite radius >= 0, and |q-p|^2 finite
-/// (an axis whose squared length overflows cannot be evaluated in doubles).
+/// Valid: finite endpoints, p != q, finite radius >= 0. (Lengths whose
+/// squares overflow or underflow are valid: the queries rescale the scene.)
 inline bool is_valid(const Cylinder& s) {
-  if (!is_finite(s.p) || !is_finite(s.q) || !std::isfinite(s.r) || s.r < 0 || s.p == s.q) return false;
-  const Vec3 d = s.q - s.p;
-  const double dd = dot(d, d);
-  return is_finite(d) && std::isfinite(dd) && dd > 0;
+  return all_finite(s.p.x, s.p.y, s.p.z, s.q.x, s.q.y, s.q.z, s.r) && s.r >= 0 && s.p != s.q;
 }
 /// Valid: finite centre, axes and extents, extents >= 0.
 inline bool is_valid(const Obb& s) {
-  return is_finite(s.c) && is_finite(s.axes[0]) && is_finite(s.axes[1]) && is_finite(s.axes[2]) &&
-         is_finite(s.e) && s.e.x >= 0 && s.e.y >= 0 && s.e.z >= 0;
+  return all_finite(s.c) && all_finite(s.axes[0]) && all_finite(s.axes[1]) && all_finite(s.axes[2]) &&
+         all_finite(s.e) && s.e.x >= 0 && s.e.y >= 0 && s.e.z >= 0;
 }
 /// Valid: finite vertices.
-inline bool is_valid(const Triangle& s) { return is_finite(s.a) && is_finite(s.b) && is_finite(s.c); }
+inline bool is_valid(const Triangle& s) { return all_finite(s.a) && all_finite(s.b) && all_finite(s.c); }
 
 }  // namespace geomcheck

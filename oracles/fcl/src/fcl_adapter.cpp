@@ -31,13 +31,6 @@ Vec3 unit(const Vec3& v) {
 }
 
 constexpr const char* kInvalidInput = "invalid input";
-constexpr const char* kOutOfRange = "outside FCL safe range";
-
-/// Coordinates beyond this are refused where libccd's iterative code would run.
-const double kSafeCoordinate = std::ldexp(1.0, 500);
-
-bool in_safe_range(const Vec3& v) { return max_abs(v) <= kSafeCoordinate; }
-
 std::string describe(const std::exception& e) { return std::string("FCL threw: ") + e.what(); }
 const char* kUnknownThrow = "FCL threw a non-standard exception";
 
@@ -71,67 +64,9 @@ PeerContact contact_from(const fcl::CollisionResultd& res) {
   return out;
 }
 
-/// Does the prefix [a, a + t n] of a segment touch the cylinder, according to
-/// fcl::collide (radius-0 capsule, or radius-0 sphere for a point)?
-class SegmentPrefix {
- public:
-  explicit SegmentPrefix(const Segment& s) : a_(s.a), n_(s.b - s.a), len_(norm(n_)) {
-    if (len_ > 0) rot_ = fcl_rotation_z_to(unit(n_));
-  }
-
-  bool touches(const FclCylinder& cyl, double t) const {
-    fcl::CollisionRequestd req(1, false);
-    req.gjk_solver_type = fcl::GST_LIBCCD;
-    fcl::CollisionResultd res;
-    const double l = t * len_;
-    if (!(l > 0)) {
-      const fcl::Sphered point(0.0);
-      fcl::Transform3d pose = fcl::Transform3d::Identity();
-      pose.translation() = to_fcl(a_);
-      return fcl::collide(&point, pose, &cyl.shape, cyl.pose, req, res) > 0;
-    }
-    const fcl::Capsuled segment(0.0, l);
-    fcl::Transform3d pose = fcl::Transform3d::Identity();
-    pose.linear() = rot_;
-    pose.translation() = to_fcl(a_ + (0.5 * t) * n_);
-    return fcl::collide(&segment, pose, &cyl.shape, cyl.pose, req, res) > 0;
-  }
-
- private:
-  Vec3 a_, n_;
-  double len_;
-  fcl::Matrix3d rot_ = fcl::Matrix3d::Identity();
-};
-
-PeerCast cast_capsule_bisection(const Segment& s, const Cylinder& c) {
-  PeerCast out;
-  out.supported = true;
-  if (!in_safe_range(s.a) || !in_safe_range(s.b) || !in_safe_range(c.p) || !in_safe_range(c.q) ||
-      !(c.r <= kSafeCoordinate)) {
-    out.error = kOutOfRange;
-    return out;
-  }
-  const FclCylinder cyl(c);
-  const SegmentPrefix seg(s);
-  out.ok = true;
-  if (!seg.touches(cyl, 1.0)) return out;
-  out.hit = true;
-  if (seg.touches(cyl, 0.0)) {
-    out.t = 0;
-    return out;
-  }
-  // Invariant: the prefix up to lo misses, the prefix up to hi touches.
-  double lo = 0, hi = 1;
-  for (int i = 0; i < 64; ++i) {
-    const double mid = lo + 0.5 * (hi - lo);
-    if (!(mid > lo && mid < hi)) break;
-    (seg.touches(cyl, mid) ? hi : lo) = mid;
-  }
-  out.t = hi;
-  return out;
-}
-
-PeerCast cast_conservative_advancement(const Segment& s, const Cylinder& c) {
+/// One fcl::continuousCollide call: a radius-0 sphere moving from s.a to s.b
+/// against the resting cylinder.
+PeerCast continuous_collide_once(const Segment& s, const Cylinder& c) {
   PeerCast out;
   out.supported = true;
   const FclCylinder cyl(c);
@@ -151,6 +86,44 @@ PeerCast cast_conservative_advancement(const Segment& s, const Cylinder& c) {
     out.error = "FCL returned a time of contact outside [0, 1]";
   }
   return out;
+}
+
+/// Exact re-expressions of the same scene (negations and a cyclic
+/// permutation of the coordinates only): frame k of 4.
+Vec3 in_frame(const Vec3& v, int k) {
+  const Vec3 w = (k & 1) ? -v : v;
+  return (k & 2) ? Vec3{w.y, w.z, w.x} : w;
+}
+Segment in_frame(const Segment& s, int k) { return {in_frame(s.a, k), in_frame(s.b, k)}; }
+Cylinder in_frame(const Cylinder& c, int k) { return {in_frame(c.p, k), in_frame(c.q, k), c.r}; }
+
+/// Largest size FCL's continuous collision is given: its bounding-volume
+/// fit squares the cylinder's dimensions (beyond this it overflows, prints
+/// "eigen: too many iterations in Jacobi transform." and answers garbage).
+const double kCastMaxExtent = std::ldexp(1.0, 500);
+
+bool within_cast_range(const Segment& s, const Cylinder& c) {
+  const double extent = std::fmax(std::fmax(max_abs(c.q - c.p), c.r),
+                                  std::fmax(max_abs(s.a - c.p), max_abs(s.b - c.p)));
+  return extent <= kCastMaxExtent;  // false for NaN too
+}
+
+PeerCast cast_conservative_advancement(const Segment& s, const Cylinder& c, bool more_frames) {
+  if (!within_cast_range(s, c)) {
+    PeerCast out;
+    out.supported = true;
+    out.error = "outside FCL's range";
+    return out;
+  }
+  const PeerCast first = continuous_collide_once(s, c);
+  if (!more_frames || !first.ok || first.hit) return first;
+  // FCL misses some hits (see the header): ask again in exactly equivalent
+  // frames, where the rounding of the advancement steps differs.
+  for (int k = 1; k < 4; ++k) {
+    const PeerCast again = continuous_collide_once(in_frame(s, k), in_frame(c, k));
+    if (again.ok && again.hit) return again;
+  }
+  return first;
 }
 
 }  // namespace
@@ -273,13 +246,7 @@ PeerCast fcl_cast(const Segment& s, const Cylinder& c, FclCastMethod method) {
     return out;
   }
   try {
-    switch (method) {
-      case FclCastMethod::kConservativeAdvancement:
-        return cast_conservative_advancement(s, c);
-      case FclCastMethod::kCapsuleBisection:
-      default:
-        return cast_capsule_bisection(s, c);
-    }
+    return cast_conservative_advancement(s, c, method != FclCastMethod::kConservativeAdvancementOnce);
   } catch (const std::exception& e) {
     PeerCast out;
     out.supported = true;

@@ -1,39 +1,61 @@
 // geomcheck — internal helpers shared by the production cylinder queries.
+//
+// Every helper has a fast path (plain arithmetic) for magnitudes where no
+// square can overflow or underflow, and an exact power-of-two rescaling
+// outside it; the two agree bit for bit wherever both apply.
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 
 #include "geomcheck/shapes.hpp"
 
 namespace geomcheck::detail {
 
-/// Unit vector along v, scaled first so that tiny or huge vectors neither
-/// underflow nor overflow. v must be non-zero and finite.
+/// Squares of magnitudes in [kSafeLo, kSafeHi] are normal doubles.
+inline constexpr double kSafeLo = 0x1p-450;
+inline constexpr double kSafeHi = 0x1p+450;
+
+/// v scaled by 2^-ilogb(m) (exact), for the slow paths.
+inline Vec3 scaled_down(Vec3 v, double m) {
+  const int e = std::ilogb(m);
+  return {std::ldexp(v.x, -e), std::ldexp(v.y, -e), std::ldexp(v.z, -e)};
+}
+
+/// Unit vector along v (non-zero, finite), without overflow or underflow.
 inline Vec3 normalized(Vec3 v) {
-  // Scale by an exact power of two (1/m itself overflows for subnormal m).
-  const int e = std::ilogb(max_abs(v));
-  const Vec3 s{std::ldexp(v.x, -e), std::ldexp(v.y, -e), std::ldexp(v.z, -e)};
+  const double l2 = dot(v, v);
+  if (l2 > kSafeLo * kSafeLo && l2 < kSafeHi * kSafeHi) return (1.0 / std::sqrt(l2)) * v;
+  const Vec3 s = scaled_down(v, max_abs(v));
   return (1.0 / length(s)) * s;
 }
 
 /// Length of v without overflow or underflow of its square.
 inline double safe_length(Vec3 v) {
+  const double l2 = dot(v, v);
+  if (l2 > kSafeLo * kSafeLo && l2 < kSafeHi * kSafeHi) return std::sqrt(l2);
   const double m = max_abs(v);
   if (m == 0 || !std::isfinite(m)) return m;
-  const int e = std::ilogb(m);
-  return std::ldexp(length(Vec3{std::ldexp(v.x, -e), std::ldexp(v.y, -e), std::ldexp(v.z, -e)}), e);
+  return std::ldexp(length(scaled_down(v, m)), std::ilogb(m));
 }
 
-/// The direction of the part of v perpendicular to unit u, as a unit vector
-/// that is perpendicular to u to rounding whatever v is: it is built from
-/// v's components in an orthonormal frame (e1, e2) around u, not by
-/// subtracting v's component along u (which cancels to noise when v is
-/// almost parallel to u). Any unit perpendicular when that part vanishes.
+/// A unit vector perpendicular to unit u along the part of v perpendicular
+/// to u; any unit perpendicular when that part vanishes. The result is
+/// perpendicular to u to rounding whatever v is: when v is nearly parallel
+/// to u, subtracting its axial component cancels to noise, so the direction
+/// is then built from v's components in an orthonormal frame around u.
 inline Vec3 unit_perpendicular_part(Vec3 v, Vec3 u) {
+  const Vec3 w = v - dot(v, u) * u;
+  const double wl2 = dot(w, w), vl2 = dot(v, v);
+  // Fast path: w well above the cancellation level of v.
+  if (wl2 > 0x1p-40 * vl2 && wl2 > kSafeLo * kSafeLo && vl2 < kSafeHi * kSafeHi) {
+    const Vec3 r = (1.0 / std::sqrt(wl2)) * w;
+    return normalized(r - dot(r, u) * u);
+  }
   const Vec3 e1 = any_perpendicular(u);
   const Vec3 e2 = cross(u, e1);
   const double a = dot(v, e1), b = dot(v, e2);
-  const double m = std::fmax(std::fabs(a), std::fabs(b));
+  const double m = std::max(std::fabs(a), std::fabs(b));
   if (!(m > 0) || !std::isfinite(m)) return e1;
   const int e = std::ilogb(m);
   const double as = std::ldexp(a, -e), bs = std::ldexp(b, -e);
@@ -48,33 +70,35 @@ struct AxisFrame {
   double half;
   explicit AxisFrame(const Cylinder& c) {
     const Vec3 d = c.q - c.p;
-    u = normalized(d);
-    half = 0.5 * safe_length(d);
+    const double len = safe_length(d);
+    u = len > kSafeLo ? (1.0 / len) * d : normalized(d);
+    half = 0.5 * len;
     mid = 0.5 * (c.p + c.q);
   }
 };
 
 /// An exact power-of-two rescaling of a whole scene: the queries run on the
-/// scene scaled so that its largest magnitude is in [1, 2), which keeps
-/// squares and fourth powers far from overflow and underflow, and is
-/// bit-identical to the unscaled computation wherever that one does not
-/// overflow or underflow (scaling by 2^k commutes with rounding).
+/// scene scaled so that its largest magnitude is in [1, 2) whenever it lies
+/// outside [2^-100, 2^100], which keeps squares and fourth powers far from
+/// overflow and underflow. Inside that range nothing is scaled; the scaled
+/// computation is in any case bit-identical to the unscaled one wherever
+/// that one does not overflow or underflow (2^k commutes with rounding).
 struct SceneScale {
   int e = 0;
   explicit SceneScale(double largest) {
-    e = largest > 0 && std::isfinite(largest) ? std::ilogb(largest) : 0;
+    if (!(largest >= 0x1p-100 && largest <= 0x1p+100) && largest > 0 && std::isfinite(largest)) e = std::ilogb(largest);
   }
-  double in(double v) const { return std::ldexp(v, -e); }
-  Vec3 in(Vec3 v) const { return {in(v.x), in(v.y), in(v.z)}; }
-  double out(double v) const { return std::ldexp(v, e); }
-  Vec3 out(Vec3 v) const { return {out(v.x), out(v.y), out(v.z)}; }
+  double in(double v) const { return e == 0 ? v : std::ldexp(v, -e); }
+  Vec3 in(Vec3 v) const { return e == 0 ? v : Vec3{in(v.x), in(v.y), in(v.z)}; }
+  double out(double v) const { return e == 0 ? v : std::ldexp(v, e); }
+  Vec3 out(Vec3 v) const { return e == 0 ? v : Vec3{out(v.x), out(v.y), out(v.z)}; }
   Cylinder in(const Cylinder& c) const { return {in(c.p), in(c.q), in(c.r)}; }
   Sphere in(const Sphere& s) const { return {in(s.c), in(s.r)}; }
   Segment in(const Segment& s) const { return {in(s.a), in(s.b)}; }
 };
 
-inline double largest(const Cylinder& c) { return std::fmax(std::fmax(max_abs(c.p), max_abs(c.q)), c.r); }
-inline double largest(const Sphere& s) { return std::fmax(max_abs(s.c), s.r); }
-inline double largest(const Segment& s) { return std::fmax(max_abs(s.a), max_abs(s.b)); }
+inline double largest(const Cylinder& c) { return std::max(std::max(max_abs(c.p), max_abs(c.q)), c.r); }
+inline double largest(const Sphere& s) { return std::max(max_abs(s.c), s.r); }
+inline double largest(const Segment& s) { return std::max(max_abs(s.a), max_abs(s.b)); }
 
 }  // namespace geomcheck::detail

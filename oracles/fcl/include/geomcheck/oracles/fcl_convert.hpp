@@ -8,10 +8,9 @@
 // Conventions and caveats are documented in fcl_adapter.hpp.
 #pragma once
 
-#include <fcl/geometry/shape/capsule.h>
 #include <fcl/geometry/shape/cylinder.h>
 #include <fcl/geometry/shape/sphere.h>
-#include <fcl/math/constants.h>
+#include <fcl/common/types.h>
 
 #include "geomcheck/oracles/fcl_adapter.hpp"
 #include "geomcheck/shapes.hpp"
