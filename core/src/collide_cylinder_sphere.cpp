@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "geomcheck/detail/frame.hpp"
 
@@ -9,17 +10,38 @@ namespace geomcheck {
 
 namespace {
 
-// The overlap predicate, shared by overlap() and collide() so that the two
-// take the same decision bit for bit. With d = q - p, m = c - p:
-//   beyond a cap:  en = max(-m.d, m.d - d.d, 0),  ea^2 = en^2 / d.d
-//   off the axis:  |m x d|^2 = rho^2 d.d,         er = max(rho - r, 0)
-// and the sphere meets the cylinder iff ea^2 + er^2 <= s^2. Inside the
-// radius this is en^2 <= s^2 d.d (no division, no square root). An axis too
-// short for its square (d.d < 2^-600) goes through the frame instead.
-bool meets(const Cylinder& cyl, const Sphere& s);
+// The sphere centre relative to the cylinder, measured from p in units of
+// d = q - p (no normalisation, no square root):
+//   t = m.d, |m x d|^2 = rho^2 d.d, en = max(-t, t - d.d, 0) = ea |d|.
+// The sphere meets the cylinder iff ea^2 + er^2 <= s^2 with
+// er = max(rho - r, 0); inside the radius that is en^2 <= s^2 d.d.
+struct Axial {
+  Vec3 d, m;
+  double dd, t, cr2, en;
+  Axial(const Cylinder& c, const Sphere& s) : d(c.q - c.p), m(s.c - c.p) {
+    dd = dot(d, d);
+    t = dot(m, d);
+    const Vec3 x = cross(m, d);
+    cr2 = dot(x, x);
+    en = t < 0 ? -t : (t > dd ? t - dd : 0.0);
+  }
+  // Every square and product the predicate forms is a normal double (no
+  // overflow, no underflow of the axis): then no rescaling is needed, and
+  // the result is bit-identical to that of the rescaled scene.
+  bool safe(double r, double s) const {
+    return dd >= 0x1p-600 && dd <= 0x1p+600 && cr2 <= 0x1p+1000 && en <= 0x1p+500 && r <= 0x1p+200 &&
+           s <= 0x1p+200;
+  }
+  bool meets(double r, double s) const {
+    if (cr2 <= r * r * dd) return en * en <= s * s * dd;
+    const double er = std::sqrt(cr2 / dd) - r;
+    return en * en / dd + er * er <= s * s;
+  }
+};
 
 // Offsets of the sphere centre in the cylinder's frame (mid point, unit
-// axis): robust for any axis length, used for contacts and thin axes.
+// axis): robust for any axis length; used for axes too short to square and
+// for the contacts the fast path leaves alone.
 struct Offsets {
   detail::AxisFrame f;
   Vec3 w;       // radial vector from the axis to the centre
@@ -47,58 +69,65 @@ struct Offsets {
   }
 };
 
-bool meets(const Cylinder& cyl, const Sphere& s) {
-  const Vec3 d = cyl.q - cyl.p, m = s.c - cyl.p;
-  const double dd = dot(d, d);
-  if (!(dd >= 0x1p-600)) return Offsets(cyl, s).within(s.r);
-  const double t = dot(m, d);
-  const Vec3 x = cross(m, d);
-  const double cr2 = dot(x, x);
-  const double en = t < 0 ? -t : (t > dd ? t - dd : 0.0);
-  if (cr2 <= cyl.r * cyl.r * dd) return en * en <= s.r * s.r * dd;
-  const double er = std::sqrt(cr2 / dd) - cyl.r;
-  return en * en / dd + er * er <= s.r * s.r;
+// The overlap predicate on a scene already rescaled (or safe as it is),
+// shared by overlap() and collide() so that the two decide bit for bit alike.
+bool meets(const Cylinder& cyl, const Sphere& s, const Axial& a) {
+  return a.dd >= 0x1p-600 ? a.meets(cyl.r, s.r) : Offsets(cyl, s).within(s.r);
 }
 
-Contact collide_scaled(const Cylinder& cyl, const Sphere& s, double largest);
-
-}  // namespace
-
-bool overlap(const Cylinder& cyl_in, const Sphere& s_in) {
-  if (!is_valid(cyl_in) || !is_valid(s_in)) return false;
-  const detail::SceneScale sc(std::max(detail::largest(cyl_in), detail::largest(s_in)));
-  if (sc.e == 0) return meets(cyl_in, s_in);
-  const Cylinder cyl = sc.in(cyl_in);
-  const Sphere s = sc.in(s_in);
-  if (!is_valid(cyl)) return false;  // an axis far below the scene's magnitude vanishes
-  return meets(cyl, s);
+// The contact from the p-based quantities, for well-conditioned cases: the
+// centre clearly off the axis (rho > 2^-20 |m|, so the radial direction is
+// accurate once re-projected), and, outside, offsets beyond a cap and beyond
+// the side that are each zero or well above the rounding level. Returns
+// false for the rest (the frame code's business). The shapes meet.
+bool fast_contact(const Cylinder& cyl, const Sphere& s, const Axial& a, Contact& out) {
+  const double dd = a.dd, t = a.t;
+  if (!(dd >= 0x1p-600) || !(a.cr2 > 0x1p-40 * dot(a.m, a.m) * dd)) return false;
+  const double len = std::sqrt(dd), inv_len = 1.0 / len;
+  const Vec3 u = inv_len * a.d;
+  const double rho = std::sqrt(a.cr2) * inv_len;
+  const Vec3 w = a.m - (t / dd) * a.d;  // from the axis to the centre
+  // Radial direction: w re-projected (perpendicular to rounding) and
+  // normalised by its own length (w carries up to eps |m| of rounding).
+  const Vec3 wp = w - dot(w, u) * u;
+  const Vec3 rad = (1.0 / std::sqrt(dot(wp, wp))) * wp;
+  if (t >= 0 && t <= dd && a.cr2 <= cyl.r * cyl.r * dd) {
+    // Centre inside: leave through the nearer cap or the side. (rho and the
+    // inside test round differently: the side gap is clamped at zero.)
+    const double cap_gap = std::min(t, dd - t) * inv_len, side_gap = std::max(cyl.r - rho, 0.0);
+    out.hit = true;
+    out.point = s.c;
+    if (cap_gap <= side_gap) {
+      out.normal = 2 * t >= dd ? u : -u;
+      out.depth = s.r + cap_gap;
+    } else {
+      out.normal = rad;
+      out.depth = s.r + side_gap;
+    }
+    return true;
+  }
+  const double ea = a.en * inv_len, er = std::max(rho - cyl.r, 0.0);
+  // Both offsets zero (on the surface by rounding) or one at the rounding
+  // level of |m| and |d|: the direction is the frame code's business.
+  const double noise = 0x1p-40 * std::max(max_abs(a.m), len);
+  if ((ea == 0 && er == 0) || (ea != 0 && ea <= noise) || (er != 0 && er <= noise)) return false;
+  const double dist = std::sqrt(ea * ea + er * er), inv_dist = 1.0 / dist;
+  out.hit = true;
+  out.point = cyl.p + std::clamp(t / dd, 0.0, 1.0) * a.d + (rho > cyl.r ? (cyl.r / rho) * w : w);
+  out.normal = (ea * inv_dist) * (t > dd ? u : -u) + (er * inv_dist) * rad;
+  out.depth = std::max(s.r - dist, 0.0);
+  return true;
 }
 
-Contact collide(const Cylinder& cyl_in, const Sphere& s_in) {
+// The contact through the cylinder's frame: any axis length, any position.
+Contact frame_contact(const Cylinder& cyl, const Sphere& s) {
   Contact out;
-  if (!is_valid(cyl_in) || !is_valid(s_in)) return out;
-  // Run on the scene scaled by an exact power of two; scale the answer back.
-  const double largest = std::max(detail::largest(cyl_in), detail::largest(s_in));
-  const detail::SceneScale sc(largest);
-  if (sc.e == 0) return collide_scaled(cyl_in, s_in, largest);
-  out = collide_scaled(sc.in(cyl_in), sc.in(s_in), sc.in(largest));
-  out.point = sc.out(out.point);
-  out.depth = sc.out(out.depth);
-  return out;
-}
-
-namespace {
-
-Contact collide_scaled(const Cylinder& cyl, const Sphere& s, double largest) {
-  Contact out;
-  if (!is_valid(cyl)) return out;
-  // The same predicate as overlap(), so that the two never disagree.
-  if (!meets(cyl, s)) return out;
   const Offsets o(cyl, s);
   const detail::AxisFrame& f = o.f;
   const double ax = o.ax, rho = o.rho, aax = std::fabs(ax);
   // Offsets at the rounding level of the case carry no direction
   // (regression 0002): a radial offset below it gives no radial direction.
+  const double largest = std::max(detail::largest(cyl), detail::largest(s));
   const double noise = 16 * 0x1p-52 * std::max(largest, f.half);
   auto radial_dir = [&] { return rho > noise ? detail::unit_perpendicular_part(o.w, f.u) : any_perpendicular(f.u); };
   out.hit = true;
@@ -140,6 +169,46 @@ Contact collide_scaled(const Cylinder& cyl, const Sphere& s, double largest) {
   return out;
 }
 
+// Contact on a scene that needs no rescaling (or has been rescaled).
+Contact contact(const Cylinder& cyl, const Sphere& s, const Axial& a) {
+  Contact out;
+  if (!meets(cyl, s, a)) return out;  // the same predicate as overlap()
+  if (fast_contact(cyl, s, a, out)) return out;
+  return frame_contact(cyl, s);
+}
+
+// The scene rescaled by an exact power of two (magnitudes whose squares
+// would overflow or underflow): cylinder, sphere and the scale used.
+struct Rescaled {
+  detail::SceneScale sc;
+  Cylinder cyl;
+  Sphere s;
+  Rescaled(const Cylinder& c, const Sphere& sp)
+      : sc(std::max(detail::largest(c), detail::largest(sp))), cyl(sc.in(c)), s(sc.in(sp)) {}
+};
+
 }  // namespace
+
+bool overlap(const Cylinder& cyl, const Sphere& s) {
+  if (!is_valid(cyl) || !is_valid(s)) return false;
+  const Axial a(cyl, s);
+  if (a.safe(cyl.r, s.r)) return a.meets(cyl.r, s.r);
+  const Rescaled r(cyl, s);
+  if (!is_valid(r.cyl)) return false;  // an axis far below the scene's magnitude vanishes
+  return meets(r.cyl, r.s, Axial(r.cyl, r.s));
+}
+
+Contact collide(const Cylinder& cyl, const Sphere& s) {
+  if (!is_valid(cyl) || !is_valid(s)) return {};
+  const Axial a(cyl, s);
+  if (a.safe(cyl.r, s.r)) return contact(cyl, s, a);
+  const Rescaled r(cyl, s);
+  if (!is_valid(r.cyl)) return {};
+  Contact out = contact(r.cyl, r.s, Axial(r.cyl, r.s));
+  out.point = r.sc.out(out.point);
+  // A depth beyond the largest double (shapes near DBL_MAX) saturates.
+  out.depth = std::min(r.sc.out(out.depth), std::numeric_limits<double>::max());
+  return out;
+}
 
 }  // namespace geomcheck

@@ -1,4 +1,5 @@
 #include "geomcheck/oracles/cast_segment_cylinder.hpp"
+#include "geomcheck/oracles/cylinder_sphere.hpp"
 
 #include <algorithm>
 #include <stdexcept>
@@ -99,7 +100,7 @@ std::optional<QCylinder> shrunk(const QCylinder& c, const Q& delta) {
 }
 
 double case_scale(const Segment& s, const Cylinder& c) {
-  double m = std::max({max_abs(c.p), max_abs(c.q), c.r, length(c.q - c.p), max_abs(s.a), max_abs(s.b)});
+  double m = std::max({max_abs(c.p), max_abs(c.q), c.r, extent(c.p, c.q), max_abs(s.a), max_abs(s.b)});
   return m > 0 ? m : 1.0;
 }
 

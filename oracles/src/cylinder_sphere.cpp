@@ -1,6 +1,7 @@
 #include "geomcheck/oracles/cylinder_sphere.hpp"
 
 #include <algorithm>
+#include <limits>
 #include <cmath>
 #include <stdexcept>
 
@@ -115,8 +116,14 @@ QInterval overlap_along(const QCylinder& a, const QSphere& b, const QVec& n) {
   return (support(a, n) + support(b, neg)) / len;
 }
 
+double extent(Vec3 a, Vec3 b) {
+  // |b - a| without overflow (halves first), clamped to the largest double.
+  const double e = 2 * length(0.5 * b - 0.5 * a);
+  return std::isfinite(e) ? e : std::numeric_limits<double>::max();
+}
+
 double case_scale(const Cylinder& c, const Sphere& s) {
-  double m = std::max({max_abs(c.p), max_abs(c.q), c.r, max_abs(s.c), s.r, length(c.q - c.p)});
+  double m = std::max({max_abs(c.p), max_abs(c.q), c.r, max_abs(s.c), s.r, extent(c.p, c.q)});
   return m > 0 ? m : 1.0;
 }
 

@@ -13,6 +13,10 @@
 // closest cylinder point gives distance and normal; inside, the nearer of
 // the cap and side exits gives the depth.
 //
+// Scale: the scene is rescaled by an exact power of two when its magnitude
+// leaves [2^-100, 2^100], so every finite input is answered; a depth larger
+// than the largest double saturates to DBL_MAX.
+//
 // Invalid input (is_valid) gives "no overlap".
 #pragma once
 

@@ -42,11 +42,12 @@ struct Obb { Vec3 c; std::array<Vec3, 3> axes{{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}}
 /// Closed triangle.
 struct Triangle { Vec3 a, b, c; };
 
-/// True when every value is finite: 0 * x is 0 for finite x and NaN for
-/// +-inf or NaN, so one comparison of the sum decides (no branch per value).
+/// True when every value is finite. Independent comparisons joined by a
+/// bitwise and: no branch per value and no serial dependency between them.
 template <class... T>
-constexpr bool all_finite(T... v) {
-  return ((0.0 * v) + ... + 0.0) == 0.0;
+inline bool all_finite(T... v) {
+  constexpr double kMax = 1.7976931348623157e308;
+  return (... & (std::fabs(v) <= kMax));
 }
 inline bool all_finite(Vec3 a) { return all_finite(a.x, a.y, a.z); }
 

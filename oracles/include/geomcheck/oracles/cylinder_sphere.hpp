@@ -45,6 +45,9 @@ QInterval support(const QSphere& s, const QVec& n);
 /// For overlapping shapes its minimum over n is the penetration depth.
 QInterval overlap_along(const QCylinder& a, const QSphere& b, const QVec& n);
 
+/// |b - a| computed without overflow, clamped to the largest double.
+double extent(Vec3 a, Vec3 b);
+
 /// Scale of a case: the largest coordinate magnitude or extent.
 double case_scale(const Cylinder& c, const Sphere& s);
 
