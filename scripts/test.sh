@@ -12,10 +12,33 @@ jobs=$(nproc)
 echo "== default build (g++)"
 cmake --preset default >/dev/null
 cmake --build --preset default -j "$jobs"
-echo "== tests (RapidCheck seed and case count are printed by each property)"
-ctest --preset default -j "$jobs" --output-junit junit-default.xml
+seed=$(sed -n 's/^GEOMCHECK_RC_SEED:STRING=//p' build/default/CMakeCache.txt)
+cases=$(sed -n 's/^GEOMCHECK_RC_CASES:STRING=//p' build/default/CMakeCache.txt)
+echo "== tests (RapidCheck seed $seed, $cases cases per property; a failure prints its replay command)"
+summary=()
+run_ctest() {  # preset; keeps ctest's closing line for the summary
+  local log; log=$(mktemp)
+  set +e
+  ctest --preset "$1" -j "$jobs" --output-junit "junit-$1.xml" 2>&1 | tee "$log"
+  local rc=${PIPESTATUS[0]}
+  set -e
+  summary+=("$(grep -E '^[0-9]+% tests passed' "$log" || echo "$1: no ctest summary")")
+  rm -f "$log"
+  return "$rc"
+}
+status=0
+run_ctest default || status=1
 echo "== fuzz build (clang, libFuzzer, ASan+UBSan)"
 cmake --preset fuzz >/dev/null
 cmake --build --preset fuzz -j "$jobs"
 echo "== fuzz smoke"
-ctest --preset fuzz -j "$jobs" --output-junit junit-fuzz.xml
+run_ctest fuzz || status=1
+# One closing line over both runs: "N passed, N failed".
+passed=0; failed=0
+for line in "${summary[@]}"; do
+  t=$(sed -n 's/.* out of \([0-9]*\).*/\1/p' <<< "$line"); f=$(sed -n 's/.*passed, \([0-9]*\) tests failed.*/\1/p' <<< "$line")
+  [ -n "$t" ] && passed=$((passed + t - f)) && failed=$((failed + f))
+done
+echo
+echo "tests: $passed passed, $failed failed"
+exit "$status"

@@ -93,6 +93,7 @@ struct QueryReport {
   Series depth, normal, point, t;
   int fcl_supported = 0, fcl_ok = 0, fcl_disagree = 0, fcl_beyond = 0;
   Series fcl_depth;
+  Series fcl_t;  // |t_FCL - t_exact| (absolute, t in [0, 1])
   double prod_ns = NAN, oracle_us = NAN;
   std::vector<std::string> counterexamples;
   std::map<std::string, int> failures_by_property;
@@ -187,11 +188,12 @@ QueryReport run_query(const CampaignOptions& opt, const std::filesystem::path& o
         ++rep.fcl_ok;
         if (r.fcl.hit != e.truth_hit) {
           ++rep.fcl_disagree;
-          if (std::isfinite(e.signed_distance) && std::fabs(e.signed_distance) > rep.tol.verdict * e.scale) ++rep.fcl_beyond;
-          else if (!std::isfinite(e.signed_distance)) ++rep.fcl_beyond;
+          if (!e.near_boundary) ++rep.fcl_beyond;  // the same band as production's
         }
         if (r.fcl.hit && e.truth_hit && std::isfinite(r.fcl.depth) && std::isfinite(e.signed_distance))
           rep.fcl_depth.add(std::fabs(r.fcl.depth + e.signed_distance) / e.scale);
+        if (r.fcl.hit && e.truth_hit && std::isfinite(r.fcl.t) && std::isfinite(e.t_true))
+          rep.fcl_t.add(std::fabs(r.fcl.t - e.t_true));
       }
     }
     if (r.failure) {
@@ -287,6 +289,8 @@ int run_campaign(const CampaignOptions& opt) {
     js << "\n      },\n      \"fcl\": {\"supported\": " << r.fcl_supported << ", \"answered\": " << r.fcl_ok
        << ", \"disagreements\": " << r.fcl_disagree << ", \"beyond_band\": " << r.fcl_beyond << ",\n";
     write_series_json(js, "depth", r.fcl_depth);
+    js << ",\n";
+    write_series_json(js, "t_abs", r.fcl_t);
     js << "},\n      \"production_ns_per_query\": " << jnum(r.prod_ns) << ", \"oracle_us_per_case\": " << jnum(r.oracle_us)
        << ",\n      \"counterexamples\": [";
     for (std::size_t k = 0; k < r.counterexamples.size(); ++k) js << (k ? ", " : "") << jstr(r.counterexamples[k]);
@@ -326,7 +330,7 @@ int run_campaign(const CampaignOptions& opt) {
     auto row = [&](const char* n, Series& s, double bound) {
       if (s.v.empty()) return;
       const double mx = s.pct(1.0);
-      h << "<tr><td class='l'>" << n << "</td><td>" << jnum(bound) << "</td><td>" << s.v.size() << "</td><td>" << jnum(s.pct(0.5))
+      h << "<tr><td class='l'>" << n << "</td><td>" << (bound > 0 ? jnum(bound) : std::string("&ndash;")) << "</td><td>" << s.v.size() << "</td><td>" << jnum(s.pct(0.5))
         << "</td><td>" << jnum(s.pct(0.9)) << "</td><td>" << jnum(s.pct(0.99)) << "</td><td class='"
         << (bound > 0 && mx > bound ? "bad" : "") << "'>" << jnum(mx) << "</td><td>" << hist_svg(s) << "</td></tr>";
     };
@@ -335,6 +339,7 @@ int run_campaign(const CampaignOptions& opt) {
     row("point", r.point, r.tol.point);
     row("t", r.t, r.tol.t);
     row("FCL depth", r.fcl_depth, 0);
+    row("FCL |t - t_exact| (absolute)", r.fcl_t, 0);
     h << "</table>";
     if (!r.failures_by_property.empty()) {
       h << "<h3>failures</h3><ul>";

@@ -11,7 +11,7 @@ namespace geomcheck {
 
 struct CampaignOptions {
   std::uint64_t seed = 20261121;
-  int cases = 20000;          ///< per query
+  int cases = 100000;         ///< per query
   double seconds = 0;         ///< per query time budget; 0 = no limit
   int threads = 0;            ///< 0 = all cores
   std::string out = "reports/out";

@@ -30,7 +30,7 @@ const char* kUsage =
     "        oracle vs FCL on the targeted generators. Writes DIR/report.json and\n"
     "        DIR/report.html (default DIR: reports/out) and every failing case under\n"
     "        DIR/counterexamples/. Exit status 1 when anything failed.\n"
-    "        Defaults: --cases 20000 per query, --seed 20261121, all cores.\n"
+    "        Defaults: --cases 100000 per query, --seed 20261121, all cores.\n"
     "  replay [--quiet] PATH...\n"
     "        Replays case files (or every *.case under a directory): production, the\n"
     "        exact oracle and FCL side by side, the verdict margin and every property\n"

@@ -4,21 +4,14 @@
 
 #include "geomcheck/casefile.hpp"
 
+#include "bits.hpp"
+
 namespace geomcheck {
 
 namespace {
 
-std::uint64_t bits_of(double v) {
-  std::uint64_t u;
-  std::memcpy(&u, &v, sizeof u);
-  return u;
-}
-
-double from_bits(std::uint64_t u) {
-  double v;
-  std::memcpy(&v, &u, sizeof v);
-  return v;
-}
+using detail::bits_of;
+using detail::from_bits;
 
 char lower(char ch) { return (ch >= 'A' && ch <= 'Z') ? static_cast<char>(ch - 'A' + 'a') : ch; }
 bool iequals(std::string_view x, std::string_view y) {

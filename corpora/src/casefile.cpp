@@ -1,6 +1,8 @@
 // geomcheck — case files: writer, parser and converters (format in casefile.hpp).
 #include "geomcheck/casefile.hpp"
 
+#include "bits.hpp"
+
 #include <algorithm>
 #include <cerrno>
 #include <charconv>
@@ -19,17 +21,8 @@ constexpr std::uint64_t kQuietBit = std::uint64_t{1} << 51;
 constexpr std::uint64_t kExponentMask = std::uint64_t{0x7ff} << 52;
 constexpr std::uint64_t kSignBit = std::uint64_t{1} << 63;
 
-std::uint64_t bits_of(double v) {
-  std::uint64_t u;
-  std::memcpy(&u, &v, sizeof u);
-  return u;
-}
-
-double from_bits(std::uint64_t u) {
-  double v;
-  std::memcpy(&v, &u, sizeof v);
-  return v;
-}
+using detail::bits_of;
+using detail::from_bits;
 
 bool is_blank(char ch) { return ch == ' ' || ch == '\t'; }
 bool is_hex_digit(char ch) {

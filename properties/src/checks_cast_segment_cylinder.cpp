@@ -137,6 +137,7 @@ Evaluation evaluate(const SegmentCylinderCase& c, const CastSegmentCylinderImpl&
   const oracle::QCylinder qc = oracle::to_q(c.b);
   const oracle::CastTruth truth = oracle::solve_cast(qs, qc);
   e.truth_hit = truth.hit;
+  if (truth.hit) e.t_true = truth.t.mid();
   e.verdict = truth.hit ? oracle::Verdict::Overlapping : oracle::Verdict::Separated;
   e.truth_text = truth.hit ? std::string("hit ") + oracle::to_string(truth.feature) + " t=" + oracle::to_string(truth.t)
                            : std::string("miss");
@@ -288,15 +289,6 @@ CheckResult check_robust(const SegmentCylinderCase& c, const CastSegmentCylinder
   return std::nullopt;
 }
 
-CheckResult check_all(const SegmentCylinderCase& c, const CastSegmentCylinderImpl& impl) {
-  if (auto f = check_robust(c, impl)) return f;
-  if (!valid_case(c)) return std::nullopt;
-  if (auto f = check_oracle(c, impl)) return f;
-  if (auto f = check_consistency(c, impl)) return f;
-  if (auto f = check_symmetry(c, impl)) return f;
-  for (int m = 0; m < kNumMoves; ++m)
-    if (auto f = check_metamorphic(c, m, impl)) return f;
-  return check_monotone(c, impl);
-}
+CheckResult check_all(const SegmentCylinderCase& c, const CastSegmentCylinderImpl& impl) { return all_checks(c, impl); }
 
 }  // namespace geomcheck

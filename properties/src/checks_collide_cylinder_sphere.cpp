@@ -218,15 +218,6 @@ CheckResult check_robust(const CylinderSphereCase& c, const CylinderSphereImpl& 
   return std::nullopt;
 }
 
-CheckResult check_all(const CylinderSphereCase& c, const CylinderSphereImpl& impl) {
-  if (auto f = check_robust(c, impl)) return f;
-  if (!sphere_valid_case(c)) return std::nullopt;
-  if (auto f = check_oracle(c, impl)) return f;
-  if (auto f = check_consistency(c, impl)) return f;
-  if (auto f = check_symmetry(c, impl)) return f;
-  for (int m = 0; m < kNumMoves; ++m)
-    if (auto f = check_metamorphic(c, m, impl)) return f;
-  return check_monotone(c, impl);
-}
+CheckResult check_all(const CylinderSphereCase& c, const CylinderSphereImpl& impl) { return all_checks(c, impl); }
 
 }  // namespace geomcheck

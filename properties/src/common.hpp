@@ -12,4 +12,18 @@ std::string fmt(const char* f, double a, double b = 0, double c = 0);
 /// "(x, y, z)" with round-trip precision.
 std::string vec(Vec3 v);
 
+/// Every check of a query, in order, stopping at the first failure: the
+/// body of each query's check_all (the overloads are the query's own).
+template <class Case, class Impl>
+CheckResult all_checks(const Case& c, const Impl& impl) {
+  if (auto f = check_robust(c, impl)) return f;
+  if (!is_valid(c.a) || !is_valid(c.b)) return std::nullopt;
+  if (auto f = check_oracle(c, impl)) return f;
+  if (auto f = check_consistency(c, impl)) return f;
+  if (auto f = check_symmetry(c, impl)) return f;
+  for (int m = 0; m < kNumMoves; ++m)
+    if (auto f = check_metamorphic(c, m, impl)) return f;
+  return check_monotone(c, impl);
+}
+
 }  // namespace geomcheck

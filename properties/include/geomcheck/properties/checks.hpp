@@ -59,6 +59,7 @@ struct Evaluation {
   double normal_err = NAN;
   double point_err = NAN;
   double t_err = NAN;
+  double t_true = NAN;           ///< casts: the oracle's first t (midpoint of its enclosure)
   double unit_err = NAN;
   std::string extra_failure;     ///< a non-numeric failure found while evaluating
   std::string truth_text;        ///< oracle answer, human readable
