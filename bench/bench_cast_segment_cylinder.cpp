@@ -20,6 +20,7 @@
 #include "bench_common.hpp"
 #include "bench_random.hpp"
 #include "geomcheck/cast_segment_cylinder.hpp"
+#include "geomcheck/oracles/cast_segment_cylinder.hpp"
 #include "geomcheck/oracles/fcl_adapter.hpp"
 
 namespace geomcheck::bench {
@@ -91,13 +92,17 @@ void BM_fcl_cast_once(benchmark::State& state) {
 }
 BENCHMARK(BM_fcl_cast_once);
 
-// ---------------------------------------------------------------------------
-// Exact oracle: to be added here, on the same `inputs().cases`, e.g.
-//   void BM_oracle_cast(benchmark::State&);   // exact first-hit parameter
-// registered with BENCHMARK(...) and set_per_query(state, cases.size()),
-// plus its ratio in the `ratios` list in main() below
-// ({"cast oracle/prod", {"BM_oracle_cast", "BM_prod_cast"}}).
-// ---------------------------------------------------------------------------
+// The exact oracle on the same cases: hit/miss decided in rationals and a
+// certified enclosure of t (what every property check pays per case).
+void BM_oracle_cast(benchmark::State& state) {
+  const auto& cases = inputs().cases;
+  for (auto _ : state) {
+    for (const Case& k : cases) benchmark::DoNotOptimize(oracle::solve_cast(k.s, k.c).hit);
+  }
+  set_per_query(state, cases.size());
+}
+BENCHMARK(BM_oracle_cast);
+
 
 void print_inputs(const Inputs& in) {
   std::size_t prod_hits = 0;
@@ -134,6 +139,7 @@ int main(int argc, char** argv) {
   print_summary(reporter, {
                               {"cast fcl/prod", {"BM_fcl_cast", "BM_prod_cast"}},
                               {"cast fcl-once/prod", {"BM_fcl_cast_once", "BM_prod_cast"}},
+                              {"cast exact-oracle/prod", {"BM_oracle_cast", "BM_prod_cast"}},
                           });
   return 0;
 }

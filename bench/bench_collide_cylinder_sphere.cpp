@@ -19,6 +19,7 @@
 #include "bench_common.hpp"
 #include "bench_random.hpp"
 #include "geomcheck/collide_cylinder_sphere.hpp"
+#include "geomcheck/oracles/cylinder_sphere.hpp"
 #include "geomcheck/oracles/fcl_adapter.hpp"
 #include "geomcheck/oracles/fcl_convert.hpp"
 
@@ -112,14 +113,17 @@ void BM_fcl_collide_adapter(benchmark::State& state) {
 }
 BENCHMARK(BM_fcl_collide_adapter);
 
-// ---------------------------------------------------------------------------
-// Exact oracle: to be added here, on the same `inputs().pairs`, e.g.
-//   void BM_oracle_overlap(benchmark::State&);   // exact verdict
-//   void BM_oracle_collide(benchmark::State&);   // certified contact
-// registered with BENCHMARK(...) and set_per_query(state, pairs.size()),
-// plus their ratios in the `ratios` list in main() below
-// ({"overlap oracle/prod", {"BM_oracle_overlap", "BM_prod_overlap"}}).
-// ---------------------------------------------------------------------------
+// The exact oracle on the same pairs: the verdict decided in rationals and
+// a certified enclosure of the signed distance.
+void BM_oracle_collide(benchmark::State& state) {
+  const auto& pairs = inputs().pairs;
+  for (auto _ : state) {
+    for (const Pair& pr : pairs) benchmark::DoNotOptimize(oracle::solve_cylinder_sphere(pr.a, pr.b).verdict);
+  }
+  set_per_query(state, pairs.size());
+}
+BENCHMARK(BM_oracle_collide);
+
 
 void print_inputs(const Inputs& in) {
   std::size_t prod_hits = 0, fcl_hits = 0, agree = 0;
@@ -148,6 +152,7 @@ int main(int argc, char** argv) {
   const auto ratios = print_summary(reporter, {
                                                   {"overlap fcl/prod", {"BM_fcl_overlap", "BM_prod_overlap"}},
                                                   {"collide fcl/prod", {"BM_fcl_collide", "BM_prod_collide"}},
+                                                  {"collide exact-oracle/prod", {"BM_oracle_collide", "BM_prod_collide"}},
                                               });
   if (auto it = ratios.find("collide fcl/prod"); it != ratios.end())
     std::printf("target: production collide >= 10x faster than FCL collide: %s\n", it->second >= 10 ? "met" : "NOT met");
