@@ -69,10 +69,16 @@ struct Offsets {
   }
 };
 
+// The predicate through the frame, for axes too short to square. Out of
+// line and cold, so that the common path stays small.
+[[gnu::noinline, gnu::cold]] bool meets_frame(const Cylinder& cyl, const Sphere& s) {
+  return Offsets(cyl, s).within(s.r);
+}
+
 // The overlap predicate on a scene already rescaled (or safe as it is),
 // shared by overlap() and collide() so that the two decide bit for bit alike.
 bool meets(const Cylinder& cyl, const Sphere& s, const Axial& a) {
-  return a.dd >= 0x1p-600 ? a.meets(cyl.r, s.r) : Offsets(cyl, s).within(s.r);
+  return a.dd >= 0x1p-600 ? a.meets(cyl.r, s.r) : meets_frame(cyl, s);
 }
 
 // The contact from the p-based quantities, for well-conditioned cases: the
@@ -120,7 +126,7 @@ bool fast_contact(const Cylinder& cyl, const Sphere& s, const Axial& a, Contact&
 }
 
 // The contact through the cylinder's frame: any axis length, any position.
-Contact frame_contact(const Cylinder& cyl, const Sphere& s) {
+[[gnu::noinline]] Contact frame_contact(const Cylinder& cyl, const Sphere& s) {
   Contact out;
   const Offsets o(cyl, s);
   const detail::AxisFrame& f = o.f;
@@ -187,21 +193,13 @@ struct Rescaled {
       : sc(std::max(detail::largest(c), detail::largest(sp))), cyl(sc.in(c)), s(sc.in(sp)) {}
 };
 
-}  // namespace
-
-bool overlap(const Cylinder& cyl, const Sphere& s) {
-  if (!is_valid(cyl) || !is_valid(s)) return false;
-  const Axial a(cyl, s);
-  if (a.safe(cyl.r, s.r)) return a.meets(cyl.r, s.r);
+[[gnu::noinline, gnu::cold]] bool overlap_rescaled(const Cylinder& cyl, const Sphere& s) {
   const Rescaled r(cyl, s);
   if (!is_valid(r.cyl)) return false;  // an axis far below the scene's magnitude vanishes
   return meets(r.cyl, r.s, Axial(r.cyl, r.s));
 }
 
-Contact collide(const Cylinder& cyl, const Sphere& s) {
-  if (!is_valid(cyl) || !is_valid(s)) return {};
-  const Axial a(cyl, s);
-  if (a.safe(cyl.r, s.r)) return contact(cyl, s, a);
+[[gnu::noinline, gnu::cold]] Contact collide_rescaled(const Cylinder& cyl, const Sphere& s) {
   const Rescaled r(cyl, s);
   if (!is_valid(r.cyl)) return {};
   Contact out = contact(r.cyl, r.s, Axial(r.cyl, r.s));
@@ -209,6 +207,22 @@ Contact collide(const Cylinder& cyl, const Sphere& s) {
   // A depth beyond the largest double (shapes near DBL_MAX) saturates.
   out.depth = std::min(r.sc.out(out.depth), std::numeric_limits<double>::max());
   return out;
+}
+
+}  // namespace
+
+bool overlap(const Cylinder& cyl, const Sphere& s) {
+  if (!is_valid(cyl) || !is_valid(s)) return false;
+  const Axial a(cyl, s);
+  if (a.safe(cyl.r, s.r)) return a.meets(cyl.r, s.r);
+  return overlap_rescaled(cyl, s);
+}
+
+Contact collide(const Cylinder& cyl, const Sphere& s) {
+  if (!is_valid(cyl) || !is_valid(s)) return {};
+  const Axial a(cyl, s);
+  if (a.safe(cyl.r, s.r)) return contact(cyl, s, a);
+  return collide_rescaled(cyl, s);
 }
 
 }  // namespace geomcheck

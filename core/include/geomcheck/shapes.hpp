@@ -23,6 +23,7 @@
 #pragma once
 
 #include <array>
+#include <cstddef>
 #include <cmath>
 
 #include "geomcheck/vec3.hpp"
@@ -42,12 +43,21 @@ struct Obb { Vec3 c; std::array<Vec3, 3> axes{{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}}
 /// Closed triangle.
 struct Triangle { Vec3 a, b, c; };
 
-/// True when every value is finite. Independent comparisons joined by a
-/// bitwise and: no branch per value and no serial dependency between them.
+namespace detail {
+/// Pairwise sum of z[lo, hi): dependency depth log2(n), not n.
+template <std::size_t N>
+constexpr double pairwise_sum(const double (&z)[N], std::size_t lo, std::size_t hi) {
+  return hi - lo == 1 ? z[lo] : pairwise_sum(z, lo, lo + (hi - lo) / 2) + pairwise_sum(z, lo + (hi - lo) / 2, hi);
+}
+}  // namespace detail
+
+/// True when every value is finite: 0 * x is 0 for finite x and NaN for
+/// +-inf or NaN, and the pairwise sum of those is 0 exactly when all are
+/// finite (two instructions a value, no branch, short dependency chains).
 template <class... T>
-inline bool all_finite(T... v) {
-  constexpr double kMax = 1.7976931348623157e308;
-  return (... & (std::fabs(v) <= kMax));
+constexpr bool all_finite(T... v) {
+  const double z[] = {(0.0 * v)...};
+  return detail::pairwise_sum(z, 0, sizeof...(T)) == 0.0;
 }
 inline bool all_finite(Vec3 a) { return all_finite(a.x, a.y, a.z); }
 
