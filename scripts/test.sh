@@ -2,9 +2,10 @@
 # geomcheck — the test command (README; .ci/run calls exactly this).
 # Installs the Debian dependencies, builds the default preset and runs every
 # ctest suite (properties with a fixed printed seed, oracle self-tests, case
-# files, regression and seed replays, campaign smoke), then builds the fuzz
-# preset (clang, libFuzzer, ASan+UBSan) and runs the bounded fuzz smoke test
-# of every fuzz target over its seeds.
+# files, regression and seed replays, campaign smoke, CLI), runs the same
+# suites again under ASan+UBSan (preset asan, fewer cases), then builds the
+# fuzz preset (clang, libFuzzer, ASan+UBSan) and runs the bounded fuzz smoke
+# test of every fuzz target over its seeds.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/install-deps.sh
@@ -28,6 +29,11 @@ run_ctest() {  # preset; keeps ctest's closing line for the summary
 }
 status=0
 run_ctest default || status=1
+echo "== sanitizer build (g++, ASan+UBSan)"
+cmake --preset asan >/dev/null
+cmake --build --preset asan -j "$jobs"
+echo "== tests under ASan+UBSan"
+run_ctest asan || status=1
 echo "== fuzz build (clang, libFuzzer, ASan+UBSan)"
 cmake --preset fuzz >/dev/null
 cmake --build --preset fuzz -j "$jobs"
