@@ -47,7 +47,7 @@ PeerAnswer peer(const SegmentCylinderCase& c) {
     p.t = r.t;
     char b[64];
     std::snprintf(b, sizeof b, "%.17g", r.t);
-    p.text = std::string("hit t=") + b + " (radius-0 capsule, t by bisection)";
+    p.text = std::string("hit t=") + b + " (FCL continuous collision of a radius-0 sphere)";
   } else {
     p.text = "no hit";
   }
