@@ -94,6 +94,7 @@ struct QueryReport {
   int fcl_supported = 0, fcl_ok = 0, fcl_disagree = 0, fcl_beyond = 0;
   Series fcl_depth;
   Series fcl_t;  // |t_FCL - t_exact| (absolute, t in [0, 1])
+  std::vector<std::string> fcl_cases;  // FCL disagreements beyond the band, saved
   double prod_ns = NAN, oracle_us = NAN;
   std::vector<std::string> counterexamples;
   std::map<std::string, int> failures_by_property;
@@ -188,7 +189,22 @@ QueryReport run_query(const CampaignOptions& opt, const std::filesystem::path& o
         ++rep.fcl_ok;
         if (r.fcl.hit != e.truth_hit) {
           ++rep.fcl_disagree;
-          if (!e.near_boundary) ++rep.fcl_beyond;  // the same band as production's
+          if (!e.near_boundary) {  // the same band as production's
+            ++rep.fcl_beyond;
+            if (rep.fcl_cases.size() < 20) {
+              const std::filesystem::path dir = out_dir / "fcl-disagreements" / rep.name;
+              std::filesystem::create_directories(dir);
+              char name[64];
+              std::snprintf(name, sizeof name, "%05d-fcl-%s.case", r.index, r.fcl.hit ? "false-hit" : "missed-hit");
+              CaseFile f = from_case<Q>(cases[r.index].first,
+                                        "campaign seed=" + std::to_string(opt.seed) + " case=" + std::to_string(r.index),
+                                        e.truth_hit ? (info(Q).kind == QueryKind::Collide ? oracle::to_string(e.verdict) : "hit")
+                                                    : (info(Q).kind == QueryKind::Collide ? "separated" : "miss"),
+                                        "FCL: " + r.fcl.text + "; oracle: " + e.truth_text);
+              std::string err;
+              if (save_case(dir / name, f, err)) rep.fcl_cases.push_back((dir / name).string());
+            }
+          }
         }
         if (r.fcl.hit && e.truth_hit && std::isfinite(r.fcl.depth) && std::isfinite(e.signed_distance))
           rep.fcl_depth.add(std::fabs(r.fcl.depth + e.signed_distance) / e.scale);
@@ -291,7 +307,9 @@ int run_campaign(const CampaignOptions& opt) {
     write_series_json(js, "depth", r.fcl_depth);
     js << ",\n";
     write_series_json(js, "t_abs", r.fcl_t);
-    js << "},\n      \"production_ns_per_query\": " << jnum(r.prod_ns) << ", \"oracle_us_per_case\": " << jnum(r.oracle_us)
+    js << ", \"cases\": [";
+    for (std::size_t k = 0; k < r.fcl_cases.size(); ++k) js << (k ? ", " : "") << jstr(r.fcl_cases[k]);
+    js << "]},\n      \"production_ns_per_query\": " << jnum(r.prod_ns) << ", \"oracle_us_per_case\": " << jnum(r.oracle_us)
        << ",\n      \"counterexamples\": [";
     for (std::size_t k = 0; k < r.counterexamples.size(); ++k) js << (k ? ", " : "") << jstr(r.counterexamples[k]);
     js << "]\n    }" << (i + 1 < reps.size() ? "," : "") << "\n";

@@ -30,19 +30,24 @@ namespace {
 CastHit cast_scaled(const Segment& seg, const Cylinder& cyl) {
   CastHit out;
   if (!is_valid(cyl)) return out;  // an axis far below the scene's magnitude vanishes
+  // Everything is measured along the unit axis u and the axis length L
+  // (d = L u): the coefficients of the printed form are these times L^2,
+  // with the same roots, and no power of |d| is ever formed, so an axis far
+  // shorter than the scene (a disk of subnormal thickness) cannot underflow
+  // them (regression 0005).
   const Vec3 d = cyl.q - cyl.p;
+  const Vec3 u = detail::normalized(d);
+  const double len = detail::safe_length(d);
   const Vec3 m = seg.a - cyl.p;
   const Vec3 n = seg.b - seg.a;
-  const double dd = dot(d, d);
-  const double md = dot(m, d);
-  const double nd = dot(n, d);
-  const double r2dd = cyl.r * cyl.r * dd;
-  const Vec3 mxd = cross(m, d);
-  const Vec3 nxd = cross(n, d);
-  // |perp(S(t))|^2 |d|^2 - r^2 |d|^2 = qa t^2 + 2 qb t + qc
-  const double qa = dot(nxd, nxd);
-  const double qb = dot(mxd, nxd);
-  const double qc = dot(mxd, mxd) - r2dd;
+  const double mu = dot(m, u);
+  const double nu = dot(n, u);
+  const Vec3 mxu = cross(m, u);
+  const Vec3 nxu = cross(n, u);
+  // |perp(S(t))|^2 - r^2 = qa t^2 + 2 qb t + qc
+  const double qa = dot(nxu, nxu);
+  const double qb = dot(mxu, nxu);
+  const double qc = dot(mxu, mxu) - cyl.r * cyl.r;
 
   // The segment is in the cylinder where it is both in the slab between the
   // cap planes and in the infinite cylinder: intersect the two parameter
@@ -51,11 +56,11 @@ CastHit cast_scaled(const Segment& seg, const Cylinder& cyl) {
   // reject by one rounding (regression 0002).
   const double inf = std::numeric_limits<double>::infinity();
   double slab_lo = -inf, slab_hi = inf;
-  if (nd == 0) {
-    if (md < 0 || md > dd) return out;
+  if (nu == 0) {
+    if (mu < 0 || mu > len) return out;
   } else {
-    slab_lo = -md / nd;
-    slab_hi = (dd - md) / nd;
+    slab_lo = -mu / nu;
+    slab_hi = (len - mu) / nu;
     if (slab_lo > slab_hi) std::swap(slab_lo, slab_hi);
   }
   double cyl_lo = -inf, cyl_hi = inf;
@@ -65,18 +70,18 @@ CastHit cast_scaled(const Segment& seg, const Cylinder& cyl) {
     // disc = qb^2 - qa qc, in the form that cannot cancel:
     //  * qc <= 0 (start inside the infinite cylinder): qb^2 + qa |qc|, a sum
     //    of non-negative terms (regression 0003: a segment parallel to the
-    //    axis to 1e-15 rad, where |n x d| is rounding noise);
-    //  * qc > 0: dd (r^2 |n x d|^2 - (n.(m x d))^2) by Lagrange's identity,
-    //    the triple product being the lines' offset (regression 0001: the
+    //    axis to 1e-15 rad, where |n x u| is rounding noise);
+    //  * qc > 0: r^2 |n x u|^2 - (n.(m x u))^2 by Lagrange's identity, the
+    //    triple product being the lines' offset (regression 0001: the
     //    textbook form cancels when the line passes near the axis).
     double sq;
     if (qc <= 0) {
       sq = std::sqrt(qb * qb - qa * qc);
     } else {
-      const double triple = dot(n, mxd);
-      const double disc_dd = cyl.r * cyl.r * qa - triple * triple;
-      if (disc_dd < 0) return out;
-      sq = std::sqrt(dd) * std::sqrt(disc_dd);
+      const double triple = dot(n, mxu);
+      const double disc = cyl.r * cyl.r * qa - triple * triple;
+      if (disc < 0) return out;
+      sq = std::sqrt(disc);
     }
     // Roots without cancellation: k / qa and qc / k with k = -(qb + sign(qb) sq).
     const double k = -(qb + std::copysign(sq, qb));
@@ -100,11 +105,10 @@ CastHit cast_scaled(const Segment& seg, const Cylinder& cyl) {
     return out;
   }
   const double best = entry;
-  const int feature = slab_lo >= cyl_lo ? (nd > 0 ? 2 : 3) : 1;  // 1 side, 2 cap p, 3 cap q
+  const int feature = slab_lo >= cyl_lo ? (nu > 0 ? 2 : 3) : 1;  // 1 side, 2 cap p, 3 cap q
   out.hit = true;
   out.t = best;
   out.point = seg.a + best * n;
-  const Vec3 u = detail::normalized(d);
   if (feature == 2) {
     out.normal = -u;
   } else if (feature == 3) {

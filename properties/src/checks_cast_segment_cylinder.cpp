@@ -160,10 +160,10 @@ Evaluation evaluate(const SegmentCylinderCase& c, const CastSegmentCylinderImpl&
   const QVec x = qs.a + oracle::to_q(h.t) * (qs.b - qs.a);
   const QInterval sd = oracle::signed_distance(qc, x);
   if (h.starts_inside) {
-    e.t_err = sd.hi > 0 ? oracle::to_double_up(sd.hi) / e.scale : 0.0;
+    e.t_err = sd.hi > 0 ? rel_up(sd.hi, e.scale) : 0.0;
   } else {
     const Q a = sd.lo < 0 ? -sd.lo : sd.lo, b = sd.hi < 0 ? -sd.hi : sd.hi;
-    e.t_err = oracle::to_double_up(a > b ? a : b) / e.scale;
+    e.t_err = rel_up(a > b ? a : b, e.scale);
     // Bracketing: no point of S([0, t]) is more than the t bound inside.
     const oracle::QSegment prefix{qs.a, x};
     if (meets_adjusted(prefix, qc, oracle::to_q(tol.t * e.scale), -1))
@@ -173,7 +173,7 @@ Evaluation evaluate(const SegmentCylinderCase& c, const CastSegmentCylinderImpl&
   }
   // point must be S(t).
   const QVec dp = oracle::to_q(h.point) - x;
-  e.point_err = oracle::to_double_up(oracle::sqrt_interval(oracle::dot(dp, dp)).hi) / e.scale;
+  e.point_err = rel_up(oracle::sqrt_interval(oracle::dot(dp, dp)).hi, e.scale);
   return e;
 }
 

@@ -75,15 +75,15 @@ Evaluation evaluate(const CylinderSphereCase& c, const CylinderSphereImpl& impl)
       const oracle::QInterval depth = -truth.signed_distance;
       // A depth beyond the largest double has no exact answer in doubles
       // (production saturates): no depth error is measured then.
-      if (std::isfinite(oracle::to_double(depth.hi))) e.depth_err = oracle::abs_error_upper(depth, ct.depth) / e.scale;
+      if (std::isfinite(oracle::to_double(depth.hi))) e.depth_err = rel_error(depth, ct.depth, e.scale);
       if (max_abs(ct.normal) > 0) {
         const oracle::QInterval along = oracle::overlap_along(qa, qb, oracle::to_q(ct.normal));
-        e.normal_err = oracle::to_double_up(along.hi - depth.lo) / e.scale;
+        e.normal_err = rel_up(along.hi - depth.lo, e.scale);
       }
       const oracle::QVec x = oracle::to_q(ct.point);
       const oracle::QInterval da = oracle::signed_distance(qa, x), db = oracle::signed_distance(qb, x);
       const oracle::Q out = da.hi > db.hi ? da.hi : db.hi;
-      e.point_err = out > 0 ? oracle::to_double_up(out) / e.scale : 0.0;
+      e.point_err = out > 0 ? rel_up(out, e.scale) : 0.0;
     }
   }
   return e;
@@ -106,7 +106,7 @@ CheckResult check_consistency(const CylinderSphereCase& c, const CylinderSphereI
   // depth equals the overlap of the shapes along the returned normal.
   const double scale = oracle::case_scale(c.a, c.b);
   const oracle::QInterval along = oracle::overlap_along(oracle::to_q(c.a), oracle::to_q(c.b), oracle::to_q(ct.normal));
-  const double err = oracle::abs_error_upper(along, ct.depth) / scale;
+  const double err = rel_error(along, ct.depth, scale);
   if (err > tol.depth)
     return Failure{"consistency-depth-along-normal",
                    fmt("|depth - overlap along normal| = %.3g * scale > %.3g; ", err, tol.depth) + describe(ct, ov)};

@@ -14,6 +14,16 @@ std::string fmt(const char* f, double a, double b, double c) {
 }
 std::string vec(Vec3 v) { return fmt("(%.17g, %.17g, %.17g)", v.x, v.y, v.z); }
 
+double rel_up(const oracle::Q& q, double scale) { return oracle::to_double_up(q / oracle::to_q(scale)); }
+
+double rel_error(const oracle::QInterval& x, double v, double scale) {
+  const oracle::Q qv = oracle::to_q(v);
+  oracle::Q a = x.lo - qv, b = x.hi - qv;
+  if (a < 0) a = -a;
+  if (b < 0) b = -b;
+  return rel_up(a > b ? a : b, scale);
+}
+
 CheckResult judge(QueryId id, const Evaluation& e) {
   const Tolerances tol = tolerances(id);
   if (!e.valid) {

@@ -14,11 +14,15 @@
 //   * the quadratic's coefficients are built from cross products (|n x d|^2,
 //     (m x d).(n x d), |m x d|^2 - r^2 |d|^2) instead of differences of
 //     products, which cancel catastrophically far from the axis origin;
+//   * everything is measured along the unit axis u and the axis length L
+//     (d = L u): the printed coefficients are these times L^2 with the same
+//     roots, and no power of |d| is formed, so a disk far thinner than the
+//     scene cannot underflow them (regression 0005);
 //   * the discriminant b^2 - ac is evaluated in a form that cannot cancel:
 //     b^2 + a|c| when the start is inside the infinite cylinder, and
-//     dd (r^2 |n x d|^2 - (n.(m x d))^2) (Lagrange's identity) otherwise,
-//     where b^2 - ac cancels catastrophically for lines passing near the
-//     axis (regressions 0001, 0003);
+//     r^2 |n x u|^2 - (n.(m x u))^2 (Lagrange's identity) otherwise, where
+//     b^2 - ac cancels catastrophically for lines passing near the axis
+//     (regressions 0001, 0003);
 //   * the entry root is taken in the stable form c / (-b + sqrt(disc)), so
 //     there is no absolute "parallel" epsilon and the method is scale free;
 //   * a start inside the cylinder returns t = 0 (the printed form rejects the
