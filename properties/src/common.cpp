@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <limits>
 
 #include "geomcheck/properties/tolerances.hpp"
 
@@ -14,7 +15,14 @@ std::string fmt(const char* f, double a, double b, double c) {
 }
 std::string vec(Vec3 v) { return fmt("(%.17g, %.17g, %.17g)", v.x, v.y, v.z); }
 
-double rel_up(const oracle::Q& q, double scale) { return oracle::to_double_up(q / oracle::to_q(scale)); }
+double rel_up(const oracle::Q& q, double scale) {
+  // Outputs are doubles: in a subnormal scene they cannot be finer than a
+  // few of the smallest subnormals, whatever the scale. That resolution is
+  // not counted as error.
+  const oracle::Q floor = oracle::to_q(4 * std::numeric_limits<double>::denorm_min());
+  const oracle::Q above = q > floor ? q - floor : oracle::Q(0);
+  return oracle::to_double_up(above / oracle::to_q(scale));
+}
 
 double rel_error(const oracle::QInterval& x, double v, double scale) {
   const oracle::Q qv = oracle::to_q(v);

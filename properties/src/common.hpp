@@ -12,9 +12,10 @@ std::string fmt(const char* f, double a, double b = 0, double c = 0);
 /// "(x, y, z)" with round-trip precision.
 std::string vec(Vec3 v);
 
-/// q / scale rounded up to a double. The division happens in rationals
-/// first: rounding a tiny q up to a double and then dividing would turn
-/// one subnormal ulp into a large relative error in subnormal scenes.
+/// q / scale rounded up to a double, after subtracting the resolution of a
+/// double output (4 x the smallest subnormal). The division happens in
+/// rationals first: rounding a tiny q up to a double and then dividing
+/// would turn one subnormal ulp into a large relative error.
 double rel_up(const oracle::Q& q, double scale);
 /// max |x - v| over the enclosure x, divided by scale, rounded up.
 double rel_error(const oracle::QInterval& x, double v, double scale);

@@ -19,6 +19,8 @@
 //   t        casts: distance of S(t) from the cylinder surface, and no point
 //            of S([0, t]) deeper than this inside (bracketing)
 //   unit     | |normal| - 1 | (absolute, not scaled)
+// Errors below the resolution of a double output (4 x the smallest
+// subnormal) are not counted: in a subnormal scene no answer is finer.
 #pragma once
 
 #include "geomcheck/registry.hpp"
