@@ -100,13 +100,6 @@ double to_double_up(const Q& q) { return to_double_rounded(q, MPFR_RNDU); }
 
 double QInterval::mid() const { return to_double((lo + hi) / 2); }
 
-double abs_error_upper(const QInterval& x, double v) {
-  const Q qv = to_q(v);
-  Q a = x.lo - qv, b = x.hi - qv;
-  if (a < 0) a = -a;
-  if (b < 0) b = -b;
-  return to_double_up(a > b ? a : b);
-}
 
 std::string to_string(const QInterval& x) {
   char buf[96];

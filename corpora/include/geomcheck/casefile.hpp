@@ -234,9 +234,10 @@ std::vector<double> decode_raw_doubles(const std::uint8_t* data, std::size_t siz
 /// Inverse of decode_raw_doubles: 8 little-endian bytes per double.
 std::vector<std::uint8_t> encode_raw_doubles(const std::vector<double>& values);
 
-/// The case a raw fuzz input stands for: decode_raw_doubles(data, size,
-/// |A| + |B|); shape A takes the first ShapeTraits<A>::size doubles, shape B
-/// the next. found_by = "fuzz " + artifact_name when given (e.g. the crash
+/// The case a raw-mode fuzz payload stands for (the bytes after the fuzz
+/// targets' mode byte; fuzz/include/geomcheck/fuzz_decode.hpp decodes whole
+/// inputs of either mode): decode_raw_doubles(data, size, |A| + |B|); shape A
+/// takes the first ShapeTraits<A>::size doubles, shape B the next. found_by = "fuzz " + artifact_name when given (e.g. the crash
 /// file's name "crash-<sha1>"), else "fuzz sha1=<sha1 of the input>".
 CaseFile case_from_fuzz_input(QueryId query, const std::uint8_t* data, std::size_t size,
                               std::string_view artifact_name = {});

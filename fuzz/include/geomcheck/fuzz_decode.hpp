@@ -80,6 +80,12 @@ typename QueryTraits<Q>::Case decode(const std::uint8_t* data, std::size_t size)
 
 /// The same, as a case file (found_by names the input's SHA-1 and mode).
 inline CaseFile case_from_input(QueryId q, const std::uint8_t* data, std::size_t size, const std::string& artifact = {}) {
+  if (mode_of(data, size) == Mode::Raw) {
+    CaseFile f = case_from_fuzz_input(q, size > 0 ? data + 1 : data, size > 0 ? size - 1 : 0, artifact);
+    if (artifact.empty()) f.found_by = "fuzz sha1=" + sha1_hex(data, size);  // of the whole input, as libFuzzer names it
+    f.found_by += " mode=raw";
+    return f;
+  }
   return visit_query(q, [&](auto qc) {
     constexpr QueryId Q = decltype(qc)::value;
     const std::string who = artifact.empty() ? "sha1=" + sha1_hex(data, size) : artifact;

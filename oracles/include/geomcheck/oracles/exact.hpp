@@ -57,8 +57,6 @@ QInterval max(const QInterval& a, const QInterval& b);
 QInterval sqrt_interval(const Q& x);
 /// Bracket of sqrt over an interval with lo >= 0 (monotone).
 QInterval sqrt_interval(const QInterval& x);
-/// |x - v| bounded above over the whole interval: max(|lo - v|, |hi - v|).
-double abs_error_upper(const QInterval& x, double v);
 
 /// Double nearest to q (rounded to nearest).
 double to_double(const Q& q);
