@@ -35,6 +35,16 @@ TEST(oracle_cylinder_sphere, hand_cases) {
   EXPECT_EQ(t.verdict, Verdict::Separated);
   EXPECT_LT(t.signed_distance.hi, Q(72) / 10000);  // sqrt(0.5) - 0.7 = 0.0071068
   EXPECT_GT(t.signed_distance.lo, Q(71) / 10000);
+  // Centre beyond the rim, overlapping deeply (the K <= 0 branch of the sign
+  // test): centre (1.5, 0, 2.5), rim point (1, 0, 2), distance sqrt(0.5);
+  // with s = 2, K = ea^2 + rho^2 + r^2 - s^2 = 0.25 + 2.25 + 1 - 4 < 0.
+  t = solve_cylinder_sphere(kUnit, Sphere{{1.5, 0, 2.5}, 2});
+  EXPECT_EQ(t.verdict, Verdict::Overlapping);
+  EXPECT_FALSE(t.centre_inside);
+  EXPECT_LT(t.signed_distance.hi, Q(-129) / 100);  // sqrt(0.5) - 2 = -1.2929
+  EXPECT_GT(t.signed_distance.lo, Q(-130) / 100);
+  // Beyond the rim with K > 0 but still overlapping: s = 0.75 > sqrt(0.5).
+  EXPECT_EQ(solve_cylinder_sphere(kUnit, Sphere{{1.5, 0, 2.5}, 0.75}).verdict, Verdict::Overlapping);
   // Cap-plane touch and a point on the surface.
   EXPECT_EQ(solve_cylinder_sphere(kUnit, Sphere{{0.5, 0.5, 3}, 1}).verdict, Verdict::Touching);
   EXPECT_EQ(solve_cylinder_sphere(kUnit, Sphere{{0, 1, 1}, 0}).verdict, Verdict::Touching);
