@@ -35,9 +35,9 @@ CastHit cast_scaled(const Segment& seg, const Cylinder& cyl) {
   // with the same roots, and no power of |d| is ever formed, so an axis far
   // shorter than the scene (a disk of subnormal thickness) cannot underflow
   // them (regression 0005).
-  const Vec3 d = cyl.q - cyl.p;
-  const Vec3 u = detail::normalized(d);
-  const double len = detail::safe_length(d);
+  const detail::UnitAndLength axis(cyl.q - cyl.p);
+  const Vec3 u = axis.u;
+  const double len = axis.len;
   const Vec3 m = seg.a - cyl.p;
   const Vec3 n = seg.b - seg.a;
   const double mu = dot(m, u);

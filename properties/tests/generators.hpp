@@ -19,11 +19,6 @@ rc::Gen<double> real(double lo, double hi);
 /// A value nudged by k ulps, k in [-kmax, kmax].
 double nudge(double v, int k);
 
-/// Which construction produced a case (for RC_CLASSIFY).
-struct Tagged {
-  std::string mode;
-};
-
 /// Cylinder/sphere pairs: random, at the rim, on a cap plane, on the side
 /// (touching +- k ulps, or a small or large gap either way), exactly touching
 /// Pythagorean constructions, centre inside, sphere containing the

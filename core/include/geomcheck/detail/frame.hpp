@@ -63,16 +63,22 @@ inline Vec3 unit_perpendicular_part(Vec3 v, Vec3 u) {
   return (as / l) * e1 + (bs / l) * e2;
 }
 
+/// Unit vector along d (non-zero, finite) and |d|, with one square root.
+struct UnitAndLength {
+  Vec3 u;
+  double len;
+  explicit UnitAndLength(Vec3 d) : len(safe_length(d)) { u = len > kSafeLo ? (1.0 / len) * d : normalized(d); }
+};
+
 /// The cylinder's mid point, unit axis and half height.
 struct AxisFrame {
   Vec3 mid;
   Vec3 u;
   double half;
   explicit AxisFrame(const Cylinder& c) {
-    const Vec3 d = c.q - c.p;
-    const double len = safe_length(d);
-    u = len > kSafeLo ? (1.0 / len) * d : normalized(d);
-    half = 0.5 * len;
+    const UnitAndLength a(c.q - c.p);
+    u = a.u;
+    half = 0.5 * a.len;
     mid = 0.5 * (c.p + c.q);
   }
 };
