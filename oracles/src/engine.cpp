@@ -1,0 +1,492 @@
+// geomcheck — certified convex engine: classification (verdict + signed
+// distance), the double filter, and the rational certificates.
+#include <cmath>
+#include <limits>
+#include <sstream>
+#include <stdexcept>
+
+#include "engine_search.hpp"
+
+namespace geomcheck::oracle {
+
+using namespace search;
+
+namespace {
+
+// ---- interval arithmetic on doubles (outward by one ulp per operation) ------
+
+double dn(double x) { return std::nextafter(x, -std::numeric_limits<double>::infinity()); }
+double up(double x) { return std::nextafter(x, std::numeric_limits<double>::infinity()); }
+
+struct Iv {
+  double lo = 0, hi = 0;
+  static Iv exact(double v) { return {v, v}; }
+  bool certainly_neg() const { return hi < 0; }
+  bool certainly_pos() const { return lo > 0; }
+};
+Iv operator+(Iv a, Iv b) { return {dn(a.lo + b.lo), up(a.hi + b.hi)}; }
+Iv operator-(Iv a, Iv b) { return {dn(a.lo - b.hi), up(a.hi - b.lo)}; }
+Iv operator-(Iv a) { return {-a.hi, -a.lo}; }
+Iv operator*(Iv a, Iv b) {
+  const double p[4] = {a.lo * b.lo, a.lo * b.hi, a.hi * b.lo, a.hi * b.hi};
+  double lo = p[0], hi = p[0];
+  for (double v : p) {
+    lo = v < lo ? v : lo;
+    hi = v > hi ? v : hi;
+  }
+  for (double v : p)
+    if (v != v) lo = hi = v;  // NaN poisons the interval
+  return {dn(lo), up(hi)};
+}
+Iv iv_sqrt(Iv a) {  // for values known to be >= 0
+  const double lo = a.lo <= 0 ? 0 : dn(std::sqrt(a.lo));
+  return {lo, up(std::sqrt(a.hi))};
+}
+Iv iv_max(Iv a, Iv b) { return {std::max(a.lo, b.lo), std::max(a.hi, b.hi)}; }
+Iv iv_div(Iv a, Iv b) {  // b certainly positive
+  const double p[4] = {a.lo / b.lo, a.lo / b.hi, a.hi / b.lo, a.hi / b.hi};
+  double lo = p[0], hi = p[0];
+  for (double v : p) {
+    lo = v < lo ? v : lo;
+    hi = v > hi ? v : hi;
+  }
+  return {dn(lo), up(hi)};
+}
+
+struct IV3 {
+  Iv x, y, z;
+};
+IV3 operator+(const IV3& a, const IV3& b) { return {a.x + b.x, a.y + b.y, a.z + b.z}; }
+IV3 operator-(const IV3& a, const IV3& b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
+IV3 operator*(Iv s, const IV3& a) { return {s * a.x, s * a.y, s * a.z}; }
+Iv dot(const IV3& a, const IV3& b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
+IV3 cross(const IV3& a, const IV3& b) {
+  return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
+}
+IV3 iv3(Vec3 v) { return {Iv::exact(v.x), Iv::exact(v.y), Iv::exact(v.z)}; }
+IV3 iv3(Vec3 lo, Vec3 hi) { return {{lo.x, hi.x}, {lo.y, hi.y}, {lo.z, hi.z}}; }
+IV3 iv3(const QVec& q) {
+  return {{to_double_down(q.x), to_double_up(q.x)}, {to_double_down(q.y), to_double_up(q.y)},
+          {to_double_down(q.z), to_double_up(q.z)}};
+}
+Iv iv(const Q& q) { return {to_double_down(q), to_double_up(q)}; }
+Q q_of(double v) { return to_q(v); }
+
+/// The shape in intervals.
+struct ShapeI {
+  const ConvexShape* src;
+  std::vector<IV3> pts;
+  Iv radius;
+  IV3 axis, inner;
+  ConvexShape::Round round;
+};
+ShapeI to_iv(const ConvexShape& s) {
+  ShapeI out{&s, {}, iv(s.radius), iv3(s.axis), iv3(inner_point(s)), s.radius == 0 ? ConvexShape::Round::None : s.round};
+  for (std::size_t i = 0; i < s.points.size(); ++i) out.pts.push_back(iv3(s.lo[i], s.hi[i]));
+  return out;
+}
+
+/// Enclosure of h_s(n).
+Iv support_iv(const ShapeI& s, const IV3& n) {
+  Iv m = dot(n, s.pts[0]);
+  for (std::size_t i = 1; i < s.pts.size(); ++i) m = iv_max(m, dot(n, s.pts[i]));
+  if (s.round == ConvexShape::Round::Ball) return m + s.radius * iv_sqrt(dot(n, n));
+  if (s.round == ConvexShape::Round::Disc) {
+    const IV3 c = cross(n, s.axis);
+    const Iv aa = dot(s.axis, s.axis);
+    if (!aa.certainly_pos()) return {-INFINITY, INFINITY};
+    return m + s.radius * iv_div(iv_sqrt(dot(c, c)), iv_sqrt(aa));
+  }
+  return m;
+}
+
+/// Enclosure of a support point built inside the shape: core point plus
+/// radius times a radial vector of norm <= 1 (shrunk; for a disc projected
+/// exactly onto the disc plane, which only shortens it). Returns false when
+/// the norm bound cannot be shown.
+bool sup_box(const ShapeI& s, const Sup<double>& sp, IV3& out) {
+  if (sp.i < 0) { out = s.inner; return true; }
+  out = s.pts[sp.i];
+  if (s.round == ConvexShape::Round::None || (sp.w.x == 0 && sp.w.y == 0 && sp.w.z == 0)) return true;
+  const double f = 1 - 0x1p-30;
+  IV3 w = iv3(Vec3{sp.w.x * f, sp.w.y * f, sp.w.z * f});  // exact doubles
+  if (!(dot(w, w).hi <= 1)) return false;
+  if (s.round == ConvexShape::Round::Disc) {
+    const Iv aa = dot(s.axis, s.axis);
+    if (!aa.certainly_pos()) return false;
+    w = w - iv_div(dot(w, s.axis), aa) * s.axis;
+  }
+  out = out + s.radius * w;
+  return true;
+}
+
+Iv volume_iv(const IV3& p0, const IV3& p1, const IV3& p2, const IV3& p3) {
+  return dot(p1 - p0, cross(p2 - p0, p3 - p0));
+}
+
+/// Origin certainly strictly inside the tetrahedron of boxes; `face_lo` gets
+/// a lower bound on the distance from the origin to its boundary.
+bool tet_iv(const std::array<IV3, 4>& w, double& face_lo) {
+  const Iv v = volume_iv(w[0], w[1], w[2], w[3]);
+  const int s = v.certainly_pos() ? 1 : (v.certainly_neg() ? -1 : 0);
+  if (s == 0) return false;
+  const IV3 o{Iv::exact(0), Iv::exact(0), Iv::exact(0)};
+  face_lo = INFINITY;
+  for (int i = 0; i < 4; ++i) {
+    std::array<IV3, 4> t = w;
+    t[i] = o;
+    const Iv vi = volume_iv(t[0], t[1], t[2], t[3]);
+    if (s > 0 ? !vi.certainly_pos() : !vi.certainly_neg()) return false;
+    // Distance to the face opposite i: |6 vol_i| / |face normal|.
+    const IV3& a = w[(i + 1) % 4];
+    const IV3& b = w[(i + 2) % 4];
+    const IV3& c = w[(i + 3) % 4];
+    const IV3 n = cross(b - a, c - a);
+    const Iv nn = iv_sqrt(dot(n, n));
+    const Iv av = s > 0 ? vi : -vi;
+    const double d = av.lo / nn.hi;
+    face_lo = std::min(face_lo, d > 0 ? dn(d) : 0.0);
+  }
+  return true;
+}
+
+// ---- exact construction of certificate points -------------------------------
+
+Q q_abs(const Q& x) { return x < 0 ? Q(-x) : x; }
+
+/// Lower bound of the distance from the origin to the plane of (a, b, c),
+/// the origin on the side with positive orientation `vol`.
+Q face_distance_lo(const QVec& a, const QVec& b, const QVec& c) {
+  const QVec n = cross(b - a, c - a);
+  const Q num = q_abs(dot(n, a));
+  const Q nn = dot(n, n);
+  if (nn == 0) return 0;
+  return num / sqrt_interval(nn).hi;
+}
+
+struct Ctx {
+  const ConvexShape& A;
+  const ConvexShape& B;
+  Q scale;
+  bool trust;  // a swept hull: members built inside by construction
+  std::ostringstream note;
+};
+
+/// Exact separation: n with h_A(n) + h_B(-n) < 0. Fills the result.
+bool certify_separation_q(Ctx& c, const QVec& n, DistanceResult& r, int bits) {
+  if (is_zero(n)) return false;
+  if (separation_sign(c.A, c.B, n) >= 0) return false;
+  const QVec m{-n.x, -n.y, -n.z};
+  const QInterval h = support_value(c.A, n) + support_value(c.B, m);
+  Q lo = h.hi < 0 ? Q(-h.hi / sqrt_interval(dot(n, n)).hi) : Q(0);
+  r.verdict = Verdict::Separated;
+  r.separation = SeparationCertificate{n};
+  if (!r.witness_a) {  // fallback upper bound: the inner points
+    r.witness_a = inner_point(c.A);
+    r.witness_b = inner_point(c.B);
+  }
+  const QVec d = *r.witness_a - *r.witness_b;
+  r.distance = {lo, sqrt_interval(dot(d, d)).hi};
+  r.bits = bits;
+  return true;
+}
+
+template <class T>
+void witnesses_q(const ConvexShape& A, const ConvexShape& B, const Simplex<T>& s, DistanceResult& r) {
+  const std::size_t k = s.v.size();
+  std::vector<Q> lam(k);
+  Q sum = 0;
+  for (std::size_t i = 0; i + 1 < k; ++i) {
+    lam[i] = s.lambda[i] > 0 ? exact_q(s.lambda[i]) : Q(0);
+    sum += lam[i];
+  }
+  if (sum > 1)
+    for (std::size_t i = 0; i + 1 < k; ++i) lam[i] /= sum;
+  lam[k - 1] = sum > 1 ? Q(0) : Q(1 - sum);
+  QVec a{0, 0, 0}, b{0, 0, 0};
+  for (std::size_t i = 0; i < k; ++i) {
+    a = a + lam[i] * sup_point_q(A, s.v[i].a);
+    b = b + lam[i] * sup_point_q(B, s.v[i].b);
+  }
+  r.witness_a = a;
+  r.witness_b = b;
+}
+
+/// Exact overlap: the tetrahedron of four Minkowski vertices holds the origin.
+template <class T>
+bool certify_overlap_q(Ctx& c, const std::array<Vert<T>, 4>& tet, DistanceResult& r, int bits) {
+  OverlapCertificate cert;
+  for (int i = 0; i < 4; ++i) {
+    cert.a[i] = sup_point_q(c.A, tet[i].a);
+    cert.b[i] = sup_point_q(c.B, tet[i].b);
+  }
+  if (!check_overlap_impl(c.A, c.B, cert, c.trust)) return false;
+  std::array<QVec, 4> w;
+  for (int i = 0; i < 4; ++i) w[i] = cert.a[i] - cert.b[i];
+  // Barycentric weights of the origin and the common point.
+  const Q vol = signed_volume(w[0], w[1], w[2], w[3]);
+  QVec x{0, 0, 0};
+  Q pd_lo;
+  bool first = true;
+  for (int i = 0; i < 4; ++i) {
+    std::array<QVec, 4> t = w;
+    t[i] = QVec{0, 0, 0};
+    x = x + (signed_volume(t[0], t[1], t[2], t[3]) / vol) * cert.a[i];
+    const Q d = face_distance_lo(w[(i + 1) % 4], w[(i + 2) % 4], w[(i + 3) % 4]);
+    if (first || d < pd_lo) pd_lo = d;
+    first = false;
+  }
+  // Upper bound of the depth: the support of A - B along a face normal.
+  QInterval best;
+  bool have = false;
+  for (int i = 0; i < 4; ++i) {
+    const QVec& a = w[(i + 1) % 4];
+    QVec n = cross(w[(i + 2) % 4] - a, w[(i + 3) % 4] - a);
+    if (dot(n, a) < 0) n = Q(-1) * n;
+    const Q nn = dot(n, n);
+    if (nn == 0) continue;
+    const QInterval h = (support_value(c.A, n) + support_value(c.B, Q(-1) * n)) / sqrt_interval(nn);
+    if (!have || h.hi < best.hi) best = h;
+    have = true;
+  }
+  r.verdict = Verdict::Overlapping;
+  r.overlap = cert;
+  r.common_point = x;
+  r.distance = {have ? Q(-best.hi) : Q(-2 * c.scale * 4), Q(-pd_lo)};
+  r.bits = bits;
+  return true;
+}
+
+// ---- touching ------------------------------------------------------------------
+
+std::vector<QVec> feature_directions(const ConvexShape& s) {
+  using K = ConvexShape::Kind;
+  std::vector<QVec> d;
+  const auto& P = s.points;
+  switch (s.kind) {
+    case K::Segment: case K::Capsule: case K::Cylinder:
+      d.push_back(P[1] - P[0]);
+      break;
+    case K::Triangle:
+      d.push_back(P[1] - P[0]);
+      d.push_back(P[2] - P[1]);
+      d.push_back(P[0] - P[2]);
+      d.push_back(cross(P[1] - P[0], P[2] - P[0]));
+      break;
+    case K::Box:
+      for (int i = 0; i < 3; ++i) d.push_back(s.spans[i]);
+      for (int i = 0; i < 3; ++i) d.push_back(cross(s.spans[i], s.spans[(i + 1) % 3]));
+      break;
+    default: break;
+  }
+  return d;
+}
+
+QVec snap_double(const QVec& v) { return {q_of(to_double(v.x)), q_of(to_double(v.y)), q_of(to_double(v.z))}; }
+
+/// Touching: a common point and n with h_A(n) + h_B(-n) <= 0, both exact.
+bool try_touching(Ctx& c, const std::vector<QVec>& dirs_in, const std::vector<QVec>& points_in, DistanceResult& r) {
+  std::vector<QVec> dirs = dirs_in;
+  const auto fa = feature_directions(c.A), fb = feature_directions(c.B);
+  dirs.insert(dirs.end(), fa.begin(), fa.end());
+  dirs.insert(dirs.end(), fb.begin(), fb.end());
+  for (const QVec& a : fa)
+    for (const QVec& b : fb) dirs.push_back(cross(a, b));
+  std::optional<QVec> n_ok;
+  for (const QVec& n : dirs) {
+    if (is_zero(n)) continue;
+    for (const Q& sgnq : {Q(1), Q(-1)}) {
+      const QVec m = sgnq * n;
+      if (separation_sign(c.A, c.B, m) <= 0) { n_ok = m; break; }
+    }
+    if (n_ok) break;
+  }
+  if (!n_ok) return false;
+  std::vector<QVec> pts = points_in;
+  for (const QVec& p : points_in) pts.push_back(snap_double(p));
+  if (c.A.kind != ConvexShape::Kind::Hull)
+    for (const QVec& p : c.B.points) pts.push_back(p);
+  for (const QVec& p : c.A.points) pts.push_back(p);
+  for (const QVec& p : pts) {
+    bool in = false;
+    try {
+      in = (c.trust || contains(c.A, p)) && contains(c.B, p);
+    } catch (const std::exception&) {
+      in = false;
+    }
+    if (in) {
+      r.verdict = Verdict::Touching;
+      r.separation = SeparationCertificate{*n_ok};
+      r.common_point = p;
+      r.distance = point(Q(0));
+      return true;
+    }
+  }
+  return false;
+}
+
+// ---- one round of search + certificate at precision T -------------------------
+
+enum class Round { Decided, Tiny, Open };
+
+template <class T>
+Round search_round(Ctx& c, DistanceResult& r, std::vector<QVec>& dirs, std::vector<QVec>& pts, Q& dist_est) {
+  const int bits = bits_of<T>();
+  const ShapeT<T> A = convert<T>(c.A), B = convert<T>(c.B);
+  const T sc = from_q<T>(c.scale);
+  const T contact = ldexp(sc, -(bits - 8));
+  const GjkOut<T> g = gjk(A, B, contact * contact, 64 + 2 * bits);
+  const Simplex<T>& s = g.simplex;
+  c.note << " gjk" << bits << ":" << g.iterations;
+  if (g.status == GjkStatus::Inside) {
+    std::array<Vert<T>, 4> tet{s.v[0], s.v[1], s.v[2], s.v[3]};
+    if (certify_overlap_q(c, tet, r, bits)) return Round::Decided;
+  }
+  if (g.status == GjkStatus::Separated || g.status == GjkStatus::MaxIter) {
+    witnesses_q(c.A, c.B, s, r);
+    const QVec n = exact_q(-s.closest);
+    dirs.push_back(n);
+    pts.push_back(*r.witness_a);
+    pts.push_back(*r.witness_b);
+    if (certify_separation_q(c, n, r, bits)) return Round::Decided;
+    r.witness_a.reset();
+    r.witness_b.reset();
+  }
+  {
+    using std::sqrt;
+    dist_est = exact_q(T(sqrt(dot(s.closest, s.closest))));
+  }
+  // Near contact or undecided: the portal method.
+  const MprOut<T> m = mpr(A, B, 64 + 2 * bits);
+  if (m.status == MprStatus::Hit && certify_overlap_q(c, m.tet, r, bits)) return Round::Decided;
+  if (m.status == MprStatus::Miss) {
+    const QVec n = exact_q(m.dir);
+    dirs.push_back(n);
+    if (certify_separation_q(c, n, r, bits)) return Round::Decided;
+  }
+  const Q tiny = c.scale / Q(mp::mpz_int(1) << 200);
+  return dist_est < tiny ? Round::Tiny : Round::Open;
+}
+
+/// The double filter: GJK in doubles, certificates in interval arithmetic.
+bool filter_round(Ctx& c, DistanceResult& r) {
+  for (const ConvexShape* s : {&c.A, &c.B})
+    for (std::size_t i = 0; i < s->points.size(); ++i)
+      if (!(std::isfinite(s->lo[i].x) && std::isfinite(s->hi[i].x) && std::isfinite(s->lo[i].y) &&
+            std::isfinite(s->hi[i].y) && std::isfinite(s->lo[i].z) && std::isfinite(s->hi[i].z)))
+        return false;
+  const ShapeT<double> A = convert<double>(c.A), B = convert<double>(c.B);
+  const ShapeI AI = to_iv(c.A), BI = to_iv(c.B);
+  const double sc = to_double_up(c.scale);
+  if (!(sc < 1e150 && sc > 1e-150)) return false;  // squares stay normal
+  const double contact = sc * 0x1p-45;
+  const GjkOut<double> g = gjk(A, B, contact * contact, 96);
+  const Simplex<double>& s = g.simplex;
+  auto tet_cert = [&](const std::array<Vert<double>, 4>& tet) {
+    std::array<IV3, 4> w;
+    std::array<IV3, 4> pa, pb;
+    for (int i = 0; i < 4; ++i) {
+      if (!sup_box(AI, tet[i].a, pa[i]) || !sup_box(BI, tet[i].b, pb[i])) return false;
+      w[i] = pa[i] - pb[i];
+    }
+    double face_lo = 0;
+    if (!tet_iv(w, face_lo)) return false;
+    // Depth upper bound: support of A - B along the GJK/MPR face normals.
+    double hi = INFINITY;
+    for (int i = 0; i < 4; ++i) {
+      const IV3& a = w[(i + 1) % 4];
+      IV3 n = cross(w[(i + 2) % 4] - a, w[(i + 3) % 4] - a);
+      const Vec3 nd{(n.x.lo + n.x.hi) / 2, (n.y.lo + n.y.hi) / 2, (n.z.lo + n.z.hi) / 2};
+      const IV3 ne = iv3(nd), me = iv3(Vec3{-nd.x, -nd.y, -nd.z});
+      const Iv h = support_iv(AI, ne) + support_iv(BI, me);
+      const Iv nn = iv_sqrt(dot(ne, ne));
+      if (!nn.certainly_pos() || !(h.lo > 0)) continue;
+      hi = std::min(hi, up(h.hi / nn.lo));
+    }
+    if (!std::isfinite(hi)) hi = up(up(8 * sc));
+    r.verdict = Verdict::Overlapping;
+    r.distance = {q_of(-hi), q_of(-face_lo)};
+    r.bits = 53;
+    r.by_filter = true;
+    return true;
+  };
+  if (g.status == GjkStatus::Inside) {
+    if (tet_cert({s.v[0], s.v[1], s.v[2], s.v[3]})) return true;
+  } else if (g.status == GjkStatus::Separated || g.status == GjkStatus::MaxIter) {
+    const Vec3 nd{-s.closest.x, -s.closest.y, -s.closest.z};
+    const IV3 n = iv3(nd), m = iv3(Vec3{s.closest.x, s.closest.y, s.closest.z});
+    const Iv h = support_iv(AI, n) + support_iv(BI, m);
+    if (h.certainly_neg()) {
+      // Witness points: convex combinations of points built inside.
+      IV3 wa{}, wb{};
+      bool ok = true;
+      Iv rest = Iv::exact(1);
+      for (std::size_t i = 0; i < s.v.size() && ok; ++i) {
+        IV3 a, b;
+        ok = sup_box(AI, s.v[i].a, a) && sup_box(BI, s.v[i].b, b);
+        Iv l = Iv::exact(s.lambda[i] > 0 ? s.lambda[i] : 0);
+        if (i + 1 == s.v.size()) l = rest;
+        else rest = rest - l;
+        if (!(l.lo >= 0)) ok = false;
+        wa = i == 0 ? l * a : wa + l * a;
+        wb = i == 0 ? l * b : wb + l * b;
+      }
+      const IV3 d = wa - wb;
+      const Iv dist_hi = iv_sqrt(dot(d, d));
+      const Iv nn = iv_sqrt(dot(n, n));
+      if (ok && std::isfinite(dist_hi.hi) && nn.certainly_pos()) {
+        r.verdict = Verdict::Separated;
+        r.distance = {q_of(std::max(0.0, dn(-h.hi / nn.hi))), q_of(dist_hi.hi)};
+        r.bits = 53;
+        r.by_filter = true;
+        return true;
+      }
+    }
+  }
+  return false;
+}
+
+}  // namespace
+
+DistanceResult classify(const ConvexShape& a, const ConvexShape& b, const EngineOptions& opt) {
+  Ctx c{a, b, pair_scale(a, b), a.kind == ConvexShape::Kind::Hull || b.kind == ConvexShape::Kind::Hull, {}};
+  DistanceResult r;
+  if (c.scale == 0) {  // two points at the origin
+    r.verdict = Verdict::Touching;
+    r.common_point = QVec{0, 0, 0};
+    r.separation = SeparationCertificate{QVec{1, 0, 0}};
+    r.distance = point(Q(0));
+    return r;
+  }
+  if (opt.filter && filter_round(c, r)) {
+    r.note = "filter";
+    return r;
+  }
+  std::vector<QVec> dirs, pts;
+  Q est;
+  Round rd = Round::Open;
+  try {
+    if (opt.exact_small) rd = search_round<double>(c, r, dirs, pts, est);
+    if (rd != Round::Decided) rd = search_round<HP128>(c, r, dirs, pts, est);
+    if (rd != Round::Decided) rd = search_round<HP384>(c, r, dirs, pts, est);
+    if (rd != Round::Decided && try_touching(c, dirs, pts, r)) rd = Round::Decided;
+  } catch (const std::domain_error& e) {
+    c.note << " unsupported: " << e.what();
+  }
+  if (rd != Round::Decided) {
+    // Loose but certified: the inner points bound the distance from above,
+    // the support of A - B along any direction bounds the depth.
+    r = DistanceResult{};
+    r.verdict = Verdict::Undecided;
+    const QVec d = inner_point(a) - inner_point(b);
+    const QVec n{1, 0, 0}, m{-1, 0, 0};
+    const QInterval h = support_value(a, n) + support_value(b, m);
+    r.distance = {Q(-h.hi), sqrt_interval(dot(d, d)).hi};
+    c.note << (rd == Round::Tiny ? " |distance| < 2^-200 scale" : " search did not converge")
+           << " (estimate " << to_double(est) << ")";
+  }
+  r.note = c.note.str();
+  return r;
+}
+
+}  // namespace geomcheck::oracle

@@ -1,0 +1,354 @@
+// geomcheck — certified convex engine: the floating-point search (GJK, MPR,
+// EPA), templated on the number type: double for the filter, cpp_bin_float
+// of 128 and 384 binary digits for the high-precision rounds.
+//
+// Nothing here is trusted: every answer is a candidate that the callers
+// certify in interval arithmetic or in rationals.
+#pragma once
+
+#include <boost/multiprecision/cpp_bin_float.hpp>
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include "engine_internal.hpp"
+
+namespace geomcheck::oracle::search {
+
+namespace mp = boost::multiprecision;
+using HP128 = mp::number<mp::cpp_bin_float<128, mp::digit_base_2>, mp::et_off>;
+using HP384 = mp::number<mp::cpp_bin_float<384, mp::digit_base_2>, mp::et_off>;
+
+template <class T> inline T from_q(const Q& q) { return q.template convert_to<T>(); }
+template <> inline double from_q<double>(const Q& q) { return to_double(q); }
+inline Q exact_q(double x) { return to_q(x); }
+template <class T> inline Q exact_q(const T& x) { return Q(x); }
+
+template <class T> constexpr int bits_of() { return std::numeric_limits<T>::digits; }
+
+template <class T>
+struct V3 {
+  T x{}, y{}, z{};
+};
+template <class T> V3<T> operator+(const V3<T>& a, const V3<T>& b) { return {a.x + b.x, a.y + b.y, a.z + b.z}; }
+template <class T> V3<T> operator-(const V3<T>& a, const V3<T>& b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
+template <class T> V3<T> operator-(const V3<T>& a) { return {-a.x, -a.y, -a.z}; }
+template <class T> V3<T> operator*(const T& s, const V3<T>& a) { return {s * a.x, s * a.y, s * a.z}; }
+template <class T> T dot(const V3<T>& a, const V3<T>& b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
+template <class T> V3<T> cross(const V3<T>& a, const V3<T>& b) {
+  return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
+}
+template <class T> V3<T> from_q(const QVec& v) { return {from_q<T>(v.x), from_q<T>(v.y), from_q<T>(v.z)}; }
+template <class T> QVec exact_q(const V3<T>& v) { return {exact_q(v.x), exact_q(v.y), exact_q(v.z)}; }
+template <class T> bool is_zero(const V3<T>& v) { return v.x == 0 && v.y == 0 && v.z == 0; }
+
+/// The shape in the search's number type.
+template <class T>
+struct ShapeT {
+  const ConvexShape* src = nullptr;
+  std::vector<V3<T>> pts;
+  T radius{};
+  V3<T> unit_axis;  // Disc
+  V3<T> inner;
+  ConvexShape::Round round = ConvexShape::Round::None;
+};
+
+template <class T>
+ShapeT<T> convert(const ConvexShape& s) {
+  ShapeT<T> out;
+  out.src = &s;
+  for (const QVec& p : s.points) out.pts.push_back(from_q<T>(p));
+  out.radius = from_q<T>(s.radius);
+  out.round = s.radius == 0 ? ConvexShape::Round::None : s.round;
+  out.inner = from_q<T>(inner_point(s));
+  if (s.round == ConvexShape::Round::Disc) {
+    using std::sqrt;
+    // Scale the axis to avoid overflow in its square, then normalise.
+    V3<T> a = from_q<T>(s.axis);
+    T m = std::max({abs(a.x), abs(a.y), abs(a.z)});
+    a = (T(1) / m) * a;
+    out.unit_axis = (T(1) / sqrt(dot(a, a))) * a;
+  }
+  return out;
+}
+
+/// A support point: core index (or -1: the inner point) and the radial unit
+/// vector of the ball/disc part.
+template <class T>
+struct Sup {
+  int i = -1;
+  V3<T> w;
+  V3<T> p;
+};
+
+template <class T>
+Sup<T> support(const ShapeT<T>& s, const V3<T>& d) {
+  using std::sqrt;
+  Sup<T> out;
+  out.i = 0;
+  T best = dot(d, s.pts[0]);
+  for (std::size_t k = 1; k < s.pts.size(); ++k) {
+    T v = dot(d, s.pts[k]);
+    if (v > best) { best = v; out.i = static_cast<int>(k); }
+  }
+  out.p = s.pts[out.i];
+  if (s.round != ConvexShape::Round::None) {
+    V3<T> e = d;
+    if (s.round == ConvexShape::Round::Disc) e = d - dot(d, s.unit_axis) * s.unit_axis;
+    T m = std::max({abs(e.x), abs(e.y), abs(e.z)});
+    if (m > 0) {
+      e = (T(1) / m) * e;
+      out.w = (T(1) / sqrt(dot(e, e))) * e;
+      out.p = out.p + s.radius * out.w;
+    }
+  }
+  return out;
+}
+
+template <class T>
+Sup<T> inner_sup(const ShapeT<T>& s) {
+  Sup<T> out;
+  out.i = -1;
+  out.p = s.inner;
+  return out;
+}
+
+/// The support point built inside the shape, exactly: core point plus
+/// radius * w, w projected onto the disc plane (disc) and shrunk to norm <= 1.
+template <class T>
+QVec sup_point_q(const ConvexShape& s, const Sup<T>& sp) {
+  if (sp.i < 0) return inner_point(s);  // -1: the inner point
+  QVec base = s.points[sp.i];
+  if (s.round == ConvexShape::Round::None || s.radius == 0 || is_zero(sp.w)) return base;
+  QVec w = exact_q(sp.w);
+  if (s.round == ConvexShape::Round::Disc) w = w - (dot(w, s.axis) / dot(s.axis, s.axis)) * s.axis;
+  Q ww = dot(w, w);
+  if (ww > 1) {
+    const Q f = Q(1) - Q(1) / Q(mp::mpz_int(1) << (bits_of<T>() - 6));
+    w = (f / sqrt_interval(ww).hi) * w;
+  }
+  return base + s.radius * w;
+}
+
+/// A vertex of the Minkowski difference A - B.
+template <class T>
+struct Vert {
+  Sup<T> a, b;
+  V3<T> w;
+};
+template <class T>
+Vert<T> make_vert(const Sup<T>& a, const Sup<T>& b) {
+  return {a, b, a.p - b.p};
+}
+template <class T>
+Vert<T> support_vert(const ShapeT<T>& A, const ShapeT<T>& B, const V3<T>& d) {
+  return make_vert(support(A, d), support(B, -d));
+}
+
+template <class T>
+struct Simplex {
+  std::vector<Vert<T>> v;
+  std::vector<T> lambda;
+  V3<T> closest;
+};
+
+/// Closest point of the simplex hull to the origin; keeps the minimal face.
+template <class T>
+void closest_point(Simplex<T>& s) {
+  const int n = static_cast<int>(s.v.size());
+  const T tiny = ldexp(T(1), -(bits_of<T>() - 8));
+  bool have = false;
+  T best_nn{};
+  std::vector<int> best_idx;
+  std::vector<T> best_l;
+  V3<T> best_p;
+  for (int mask = 1; mask < (1 << n); ++mask) {
+    std::vector<int> idx;
+    for (int k = 0; k < n; ++k)
+      if (mask >> k & 1) idx.push_back(k);
+    const int k = static_cast<int>(idx.size());
+    const V3<T>& w0 = s.v[idx[0]].w;
+    std::vector<T> lam(k);
+    V3<T> p = w0;
+    if (k == 1) {
+      lam[0] = 1;
+    } else {
+      // Gram system for mu (w = w0 + sum mu_j D_j).
+      std::vector<V3<T>> D(k - 1);
+      for (int j = 1; j < k; ++j) D[j - 1] = s.v[idx[j]].w - w0;
+      const int m = k - 1;
+      T G[3][4];
+      T diag = 1;
+      for (int r = 0; r < m; ++r) {
+        for (int c = 0; c < m; ++c) G[r][c] = dot(D[r], D[c]);
+        G[r][m] = -dot(D[r], w0);
+        diag *= G[r][r];
+      }
+      // Gaussian elimination with partial pivoting.
+      bool ok = diag > 0;
+      T det = 1;
+      for (int c = 0; ok && c < m; ++c) {
+        int piv = c;
+        for (int r = c + 1; r < m; ++r)
+          if (abs(G[r][c]) > abs(G[piv][c])) piv = r;
+        if (G[piv][c] == 0) { ok = false; break; }
+        if (piv != c)
+          for (int q = 0; q <= m; ++q) std::swap(G[piv][q], G[c][q]);
+        det *= G[c][c];
+        for (int r = c + 1; r < m; ++r) {
+          const T f = G[r][c] / G[c][c];
+          for (int q = c; q <= m; ++q) G[r][q] -= f * G[c][q];
+        }
+      }
+      if (!ok || !(abs(det) > tiny * diag)) continue;
+      std::vector<T> mu(m);
+      for (int r = m - 1; r >= 0; --r) {
+        T acc = G[r][m];
+        for (int q = r + 1; q < m; ++q) acc -= G[r][q] * mu[q];
+        mu[r] = acc / G[r][r];
+      }
+      T sum = 0;
+      bool pos = true;
+      for (int j = 0; j < m; ++j) {
+        lam[j + 1] = mu[j];
+        sum += mu[j];
+        if (!(mu[j] > 0)) pos = false;
+      }
+      lam[0] = 1 - sum;
+      if (!(lam[0] > 0)) pos = false;
+      if (!pos) continue;
+      for (int j = 0; j < m; ++j) p = p + mu[j] * D[j];
+    }
+    const T nn = dot(p, p);
+    if (!have || nn < best_nn) {
+      have = true;
+      best_nn = nn;
+      best_idx = idx;
+      best_l = lam;
+      best_p = p;
+    }
+  }
+  if (!have) {  // keep the newest point
+    best_idx = {n - 1};
+    best_l = {T(1)};
+    best_p = s.v[n - 1].w;
+  }
+  std::vector<Vert<T>> keep;
+  for (int k : best_idx) keep.push_back(s.v[k]);
+  s.v = std::move(keep);
+  s.lambda = best_l;
+  s.closest = best_p;
+}
+
+enum class GjkStatus { Separated, Inside, Contact, MaxIter };
+
+template <class T>
+struct GjkOut {
+  GjkStatus status = GjkStatus::MaxIter;
+  Simplex<T> simplex;
+  int iterations = 0;
+};
+
+/// GJK on A - B. `contact` is the squared distance below which the origin is
+/// taken to be on the simplex.
+template <class T>
+GjkOut<T> gjk(const ShapeT<T>& A, const ShapeT<T>& B, const T& contact2, int max_iter) {
+  GjkOut<T> out;
+  Simplex<T>& s = out.simplex;
+  V3<T> v = A.inner - B.inner;
+  if (is_zero(v)) v = {T(1), T(0), T(0)};
+  const T rel = ldexp(T(1), -(bits_of<T>() - 6));
+  for (int it = 0; it < max_iter; ++it) {
+    out.iterations = it + 1;
+    const Vert<T> x = support_vert(A, B, -v);
+    const T vv = dot(v, v);
+    if (!s.v.empty()) {
+      const T gap = vv - dot(v, x.w);
+      if (gap <= rel * vv) { out.status = GjkStatus::Separated; return out; }
+      bool dup = false;
+      for (const auto& y : s.v) dup = dup || (y.w.x == x.w.x && y.w.y == x.w.y && y.w.z == x.w.z);
+      if (dup) { out.status = GjkStatus::Separated; return out; }
+    }
+    s.v.push_back(x);
+    closest_point(s);
+    v = s.closest;
+    if (s.v.size() == 4) { out.status = GjkStatus::Inside; return out; }
+    if (dot(v, v) <= contact2) { out.status = GjkStatus::Contact; return out; }
+  }
+  out.status = GjkStatus::MaxIter;
+  return out;
+}
+
+enum class MprStatus { Hit, Miss, Unknown };
+template <class T>
+struct MprOut {
+  MprStatus status = MprStatus::Unknown;
+  std::array<Vert<T>, 4> tet;  // Hit: origin inside (v0..v3)
+  V3<T> dir;                   // Miss: h_{A-B}(dir) < 0 (candidate)
+};
+
+/// Minkowski portal refinement from the interior point inner(A) - inner(B).
+template <class T>
+MprOut<T> mpr(const ShapeT<T>& A, const ShapeT<T>& B, int max_iter) {
+  MprOut<T> out;
+  Vert<T> v0 = make_vert(inner_sup(A), inner_sup(B));
+  if (is_zero(v0.w)) return out;
+  auto sup = [&](const V3<T>& d) { return support_vert(A, B, d); };
+  auto miss = [&](const V3<T>& d) {
+    out.status = MprStatus::Miss;
+    out.dir = d;
+    return out;
+  };
+  V3<T> dir = -v0.w;
+  Vert<T> v1 = sup(dir);
+  if (dot(v1.w, dir) <= 0) return miss(dir);
+  dir = cross(v0.w, v1.w);
+  if (is_zero(dir)) return out;
+  Vert<T> v2 = sup(dir);
+  if (dot(v2.w, dir) <= 0) return miss(dir);
+  dir = cross(v1.w - v0.w, v2.w - v0.w);
+  if (dot(dir, v0.w) > 0) {
+    std::swap(v1, v2);
+    dir = -dir;
+  }
+  Vert<T> v3;
+  int it = 0;
+  for (; it < max_iter; ++it) {
+    v3 = sup(dir);
+    if (dot(v3.w, dir) <= 0) return miss(dir);
+    if (dot(cross(v1.w, v3.w), v0.w) < 0) {
+      v2 = v3;
+      dir = cross(v1.w - v0.w, v3.w - v0.w);
+      continue;
+    }
+    if (dot(cross(v3.w, v2.w), v0.w) < 0) {
+      v1 = v3;
+      dir = cross(v3.w - v0.w, v2.w - v0.w);
+      continue;
+    }
+    break;
+  }
+  const T rel = ldexp(T(1), -(bits_of<T>() - 8));
+  for (; it < max_iter; ++it) {
+    dir = cross(v2.w - v1.w, v3.w - v1.w);
+    if (is_zero(dir)) return out;
+    if (dot(v1.w, dir) >= 0) {
+      out.status = MprStatus::Hit;
+      out.tet = {v0, v1, v2, v3};
+      return out;
+    }
+    const Vert<T> v4 = sup(dir);
+    const T d4 = dot(v4.w, dir);
+    if (d4 < 0) return miss(dir);
+    if (d4 - dot(v3.w, dir) <= rel * abs(d4)) return out;  // portal converged at the origin
+    const V3<T> c = cross(v4.w, v0.w);
+    if (dot(v1.w, c) > 0) {
+      if (dot(v2.w, c) > 0) v1 = v4; else v3 = v4;
+    } else {
+      if (dot(v3.w, c) > 0) v2 = v4; else v1 = v4;
+    }
+  }
+  return out;
+}
+
+}  // namespace geomcheck::oracle::search

@@ -1,0 +1,352 @@
+// geomcheck — certified convex engine: shapes and their exact primitives.
+//
+// Everything here is exact rational arithmetic: containment of a rational
+// point, the sign of h(n) - d, the sign of h_A(n) + h_B(-n). Square roots
+// are never taken; a term r*sqrt(u) is compared by squaring with its sign
+// handled first (sign_sqrt below).
+#include <stdexcept>
+
+#include "engine_internal.hpp"
+
+namespace geomcheck::oracle {
+
+namespace {
+
+int sgn(const Q& x) { return x > 0 ? 1 : (x < 0 ? -1 : 0); }
+
+/// Exact sign of c + e*sqrt(w) with e >= 0, w >= 0.
+int sign_sqrt1(const Q& c, const Q& e, const Q& w) {
+  if (e == 0 || w == 0) return sgn(c);
+  if (c >= 0) return 1;
+  return sgn(e * e * w - c * c);
+}
+
+QVec box_vertex(const QVec& c, const std::array<QVec, 3>& s, int i) {
+  QVec v = c;
+  for (int k = 0; k < 3; ++k) v = (i >> k & 1) ? v + s[k] : v - s[k];
+  return v;
+}
+
+bool on_segment(const QVec& a, const QVec& b, const QVec& x) {
+  const QVec d = b - a, y = x - a;
+  if (!is_zero(cross(y, d))) return false;
+  const Q t = dot(y, d);
+  return t >= 0 && t <= dot(d, d);
+}
+
+Q segment_dist2_times(const QVec& p, const QVec& q, const QVec& x, Q& denom) {
+  // Squared distance from x to segment pq, as num/denom with denom > 0.
+  const QVec d = q - p, y = x - p;
+  const Q dd = dot(d, d);
+  if (dd == 0) { denom = 1; return dot(y, y); }
+  const Q t = dot(y, d);
+  if (t <= 0) { denom = 1; return dot(y, y); }
+  if (t >= dd) { const QVec z = x - q; denom = 1; return dot(z, z); }
+  denom = dd;
+  return dot(y, y) * dd - t * t;
+}
+
+bool in_triangle(const QVec& a, const QVec& b, const QVec& c, const QVec& x) {
+  const QVec n = cross(b - a, c - a);
+  if (is_zero(n)) {
+    // Collinear (or coincident) vertices: the longest of the three segments.
+    const Q ab = dot(b - a, b - a), bc = dot(c - b, c - b), ca = dot(a - c, a - c);
+    if (ab >= bc && ab >= ca) return on_segment(a, b, x);
+    if (bc >= ca) return on_segment(b, c, x);
+    return on_segment(c, a, x);
+  }
+  if (dot(n, x - a) != 0) return false;
+  return dot(cross(b - a, x - a), n) >= 0 && dot(cross(c - b, x - b), n) >= 0 &&
+         dot(cross(a - c, x - c), n) >= 0;
+}
+
+bool in_box(const QVec& c, const std::array<QVec, 3>& s, const QVec& x) {
+  const QVec y = x - c;
+  const Q det = dot(s[0], cross(s[1], s[2]));
+  if (det != 0) {
+    const Q d0 = dot(y, cross(s[1], s[2]));
+    const Q d1 = dot(s[0], cross(y, s[2]));
+    const Q d2 = dot(s[0], cross(s[1], y));
+    const Q ad = abs(det);
+    return abs(d0) <= ad && abs(d1) <= ad && abs(d2) <= ad;
+  }
+  // Flat box: keep the non-zero spans.
+  std::vector<QVec> nz;
+  for (const QVec& v : s)
+    if (!is_zero(v)) nz.push_back(v);
+  if (nz.empty()) return is_zero(y);
+  if (nz.size() == 1) {
+    // y = t * s, |t| <= 1.
+    if (!is_zero(cross(y, nz[0]))) return false;
+    const Q t = dot(y, nz[0]), ss = dot(nz[0], nz[0]);
+    return abs(t) <= ss;
+  }
+  // Two (or three, one dependent) spans: find an independent pair.
+  for (std::size_t i = 0; i < nz.size(); ++i)
+    for (std::size_t j = i + 1; j < nz.size(); ++j) {
+      const QVec n = cross(nz[i], nz[j]);
+      if (is_zero(n)) continue;
+      if (nz.size() == 3) throw std::domain_error("degenerate box: dependent non-zero spans");
+      if (dot(y, n) != 0) return false;
+      const Q nn = dot(n, n);
+      const Q ti = dot(cross(y, nz[j]), n), tj = dot(cross(nz[i], y), n);
+      return abs(ti) <= nn && abs(tj) <= nn;
+    }
+  throw std::domain_error("degenerate box: parallel non-zero spans");
+}
+
+void fill_doubles(ConvexShape& s) {
+  s.lo.clear();
+  s.hi.clear();
+  s.doubles_exact = true;
+  for (const QVec& p : s.points) {
+    const Vec3 l{to_double_down(p.x), to_double_down(p.y), to_double_down(p.z)};
+    const Vec3 h{to_double_up(p.x), to_double_up(p.y), to_double_up(p.z)};
+    if (!(l == h)) s.doubles_exact = false;
+    s.lo.push_back(l);
+    s.hi.push_back(h);
+  }
+  s.radius_hi = to_double_up(s.radius);
+  if (to_double_down(s.radius) != s.radius_hi) s.doubles_exact = false;
+  s.axis_d = {to_double(s.axis.x), to_double(s.axis.y), to_double(s.axis.z)};
+}
+
+}  // namespace
+
+int sign_sqrt2(const Q& alpha, const Q& beta, const Q& u, const Q& gamma, const Q& v) {
+  // sign(alpha + beta*sqrt(u) + gamma*sqrt(v)), beta, gamma, u, v >= 0.
+  const bool s_zero = (beta == 0 || u == 0) && (gamma == 0 || v == 0);
+  if (alpha >= 0) return (alpha > 0 || !s_zero) ? 1 : 0;
+  if (s_zero) return -1;
+  // alpha < 0: sign(S - |alpha|) = sign(S^2 - alpha^2), S >= 0.
+  return sign_sqrt1(beta * beta * u + gamma * gamma * v - alpha * alpha, 2 * beta * gamma, u * v);
+}
+
+const char* kind_name(ConvexShape::Kind k) {
+  switch (k) {
+    case ConvexShape::Kind::Point: return "point";
+    case ConvexShape::Kind::Segment: return "segment";
+    case ConvexShape::Kind::Sphere: return "sphere";
+    case ConvexShape::Kind::Capsule: return "capsule";
+    case ConvexShape::Kind::Cylinder: return "cylinder";
+    case ConvexShape::Kind::Box: return "box";
+    case ConvexShape::Kind::Triangle: return "triangle";
+    case ConvexShape::Kind::Hull: return "hull";
+  }
+  return "?";
+}
+
+ConvexShape make_point(Vec3 x) {
+  ConvexShape s;
+  s.kind = ConvexShape::Kind::Point;
+  s.points = {to_q(x)};
+  fill_doubles(s);
+  return s;
+}
+
+ConvexShape make_shape(const Segment& g) {
+  ConvexShape s;
+  s.kind = ConvexShape::Kind::Segment;
+  s.points = {to_q(g.a), to_q(g.b)};
+  fill_doubles(s);
+  return s;
+}
+
+ConvexShape make_shape(const Sphere& g) {
+  ConvexShape s;
+  s.kind = ConvexShape::Kind::Sphere;
+  s.round = ConvexShape::Round::Ball;
+  s.points = {to_q(g.c)};
+  s.radius = to_q(g.r);
+  fill_doubles(s);
+  return s;
+}
+
+ConvexShape make_shape(const Capsule& g) {
+  ConvexShape s;
+  s.kind = ConvexShape::Kind::Capsule;
+  s.round = ConvexShape::Round::Ball;
+  s.points = {to_q(g.p), to_q(g.q)};
+  s.radius = to_q(g.r);
+  fill_doubles(s);
+  return s;
+}
+
+ConvexShape make_shape(const Cylinder& g) {
+  ConvexShape s;
+  s.kind = ConvexShape::Kind::Cylinder;
+  s.round = ConvexShape::Round::Disc;
+  s.points = {to_q(g.p), to_q(g.q)};
+  s.radius = to_q(g.r);
+  s.axis = s.points[1] - s.points[0];
+  if (is_zero(s.axis)) throw std::domain_error("cylinder with p == q");
+  fill_doubles(s);
+  return s;
+}
+
+ConvexShape make_shape(const Obb& g) {
+  ConvexShape s;
+  s.kind = ConvexShape::Kind::Box;
+  s.centre = to_q(g.c);
+  const double e[3] = {g.e.x, g.e.y, g.e.z};
+  for (int k = 0; k < 3; ++k) s.spans[k] = to_q(e[k]) * to_q(g.axes[k]);
+  for (int i = 0; i < 8; ++i) s.points.push_back(box_vertex(s.centre, s.spans, i));
+  fill_doubles(s);
+  return s;
+}
+
+ConvexShape make_shape(const Triangle& g) {
+  ConvexShape s;
+  s.kind = ConvexShape::Kind::Triangle;
+  s.points = {to_q(g.a), to_q(g.b), to_q(g.c)};
+  fill_doubles(s);
+  return s;
+}
+
+ConvexShape translated(const ConvexShape& s, const QVec& t) {
+  ConvexShape out = s;
+  for (QVec& p : out.points) p = p + t;
+  out.centre = s.centre + t;
+  fill_doubles(out);
+  return out;
+}
+
+ConvexShape swept(const ConvexShape& s, const QVec& delta) {
+  ConvexShape out = s;
+  out.kind = ConvexShape::Kind::Hull;
+  for (const QVec& p : s.points) out.points.push_back(p + delta);
+  fill_doubles(out);
+  return out;
+}
+
+bool contains(const ConvexShape& s, const QVec& x) {
+  using K = ConvexShape::Kind;
+  const auto& P = s.points;
+  switch (s.kind) {
+    case K::Point: return is_zero(x - P[0]);
+    case K::Segment: return on_segment(P[0], P[1], x);
+    case K::Sphere: {
+      const QVec y = x - P[0];
+      return dot(y, y) <= s.radius * s.radius;
+    }
+    case K::Capsule: {
+      Q den;
+      const Q num = segment_dist2_times(P[0], P[1], x, den);
+      return num <= s.radius * s.radius * den;
+    }
+    case K::Cylinder: {
+      const QVec a = s.axis, y = x - P[0];
+      const Q t = dot(y, a), aa = dot(a, a);
+      if (t < 0 || t > aa) return false;
+      const QVec c = cross(y, a);
+      return dot(c, c) <= s.radius * s.radius * aa;
+    }
+    case K::Box: return in_box(s.centre, s.spans, x);
+    case K::Triangle: return in_triangle(P[0], P[1], P[2], x);
+    case K::Hull: break;
+  }
+  throw std::logic_error("contains: no exact containment test for a swept hull");
+}
+
+Q core_max(const ConvexShape& s, const QVec& n) {
+  Q m = dot(n, s.points[0]);
+  for (std::size_t i = 1; i < s.points.size(); ++i) {
+    Q v = dot(n, s.points[i]);
+    if (v > m) m = std::move(v);
+  }
+  return m;
+}
+
+void round_term(const ConvexShape& s, const QVec& n, Q& beta, Q& u) {
+  // h(n) = core_max + beta * sqrt(u).
+  beta = s.radius;
+  if (s.round == ConvexShape::Round::None || s.radius == 0) {
+    beta = 0;
+    u = 0;
+  } else if (s.round == ConvexShape::Round::Ball) {
+    u = dot(n, n);
+  } else {
+    const QVec c = cross(n, s.axis);
+    u = dot(c, c) / dot(s.axis, s.axis);
+  }
+}
+
+int support_sign(const ConvexShape& s, const QVec& n, const Q& d) {
+  Q beta, u;
+  round_term(s, n, beta, u);
+  return sign_sqrt2(core_max(s, n) - d, beta, u, Q(0), Q(0));
+}
+
+QInterval support_value(const ConvexShape& s, const QVec& n) {
+  Q beta, u;
+  round_term(s, n, beta, u);
+  QInterval h = point(core_max(s, n));
+  if (beta != 0 && u != 0) h = h + point(beta) * sqrt_interval(u);
+  return h;
+}
+
+int separation_sign(const ConvexShape& a, const ConvexShape& b, const QVec& n) {
+  const QVec m{-n.x, -n.y, -n.z};
+  Q ba, ua, bb, ub;
+  round_term(a, n, ba, ua);
+  round_term(b, m, bb, ub);
+  return sign_sqrt2(core_max(a, n) + core_max(b, m), ba, ua, bb, ub);
+}
+
+QVec inner_point(const ConvexShape& s) {
+  QVec c = s.points[0];
+  for (std::size_t i = 1; i < s.points.size(); ++i) c = c + s.points[i];
+  return Q(1, static_cast<long>(s.points.size())) * c;
+}
+
+bool check_separation(const ConvexShape& a, const ConvexShape& b, const SeparationCertificate& c, bool strict) {
+  if (is_zero(c.n)) return false;
+  const int s = separation_sign(a, b, c.n);
+  return strict ? s < 0 : s <= 0;
+}
+
+Q signed_volume(const QVec& p0, const QVec& p1, const QVec& p2, const QVec& p3) {
+  return dot(p1 - p0, cross(p2 - p0, p3 - p0));
+}
+
+bool origin_strictly_inside(const std::array<QVec, 4>& w) {
+  const Q v = signed_volume(w[0], w[1], w[2], w[3]);
+  if (v == 0) return false;
+  const QVec o{0, 0, 0};
+  for (int i = 0; i < 4; ++i) {
+    std::array<QVec, 4> t = w;
+    t[i] = o;
+    const Q vi = signed_volume(t[0], t[1], t[2], t[3]);
+    if (sgn(vi) != sgn(v)) return false;
+  }
+  return true;
+}
+
+bool check_overlap_impl(const ConvexShape& a, const ConvexShape& b, const OverlapCertificate& c, bool trust_members) {
+  if (!trust_members)
+    for (int i = 0; i < 4; ++i)
+      if (!contains(a, c.a[i]) || !contains(b, c.b[i])) return false;
+  std::array<QVec, 4> w;
+  for (int i = 0; i < 4; ++i) w[i] = c.a[i] - c.b[i];
+  return origin_strictly_inside(w);
+}
+
+bool check_overlap(const ConvexShape& a, const ConvexShape& b, const OverlapCertificate& c) {
+  return check_overlap_impl(a, b, c, false);
+}
+
+bool check_common_point(const ConvexShape& a, const ConvexShape& b, const QVec& x) {
+  return contains(a, x) && contains(b, x);
+}
+
+Q pair_scale(const ConvexShape& a, const ConvexShape& b) {
+  Q s = 0;
+  for (const ConvexShape* sh : {&a, &b}) {
+    for (const QVec& p : sh->points)
+      for (const Q* c : {&p.x, &p.y, &p.z}) s = std::max(s, Q(abs(*c)));
+    s = std::max(s, sh->radius);
+  }
+  return s;
+}
+
+}  // namespace geomcheck::oracle
