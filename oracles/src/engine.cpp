@@ -65,11 +65,11 @@ IV3 cross(const IV3& a, const IV3& b) {
 }
 IV3 iv3(Vec3 v) { return {Iv::exact(v.x), Iv::exact(v.y), Iv::exact(v.z)}; }
 IV3 iv3(Vec3 lo, Vec3 hi) { return {{lo.x, hi.x}, {lo.y, hi.y}, {lo.z, hi.z}}; }
-IV3 iv3(const QVec& q) {
-  return {{to_double_down(q.x), to_double_up(q.x)}, {to_double_down(q.y), to_double_up(q.y)},
-          {to_double_down(q.z), to_double_up(q.z)}};
+Iv iv(const Q& q) {
+  Iv out;
+  bracket(q, out.lo, out.hi);
+  return out;
 }
-Iv iv(const Q& q) { return {to_double_down(q), to_double_up(q)}; }
 Q q_of(double v) { return to_q(v); }
 
 /// The shape in intervals.
@@ -81,8 +81,39 @@ struct ShapeI {
   ConvexShape::Round round;
 };
 ShapeI to_iv(const ConvexShape& s) {
-  ShapeI out{&s, {}, iv(s.radius), iv3(s.axis), iv3(inner_point(s)), s.radius == 0 ? ConvexShape::Round::None : s.round};
+  ShapeI out;
+  out.src = &s;
+  out.radius = iv(s.radius);
+  out.round = s.radius == 0 ? ConvexShape::Round::None : s.round;
   for (std::size_t i = 0; i < s.points.size(); ++i) out.pts.push_back(iv3(s.lo[i], s.hi[i]));
+  IV3 sum = out.pts[0];
+  for (std::size_t i = 1; i < out.pts.size(); ++i) sum = sum + out.pts[i];
+  const Iv n = Iv::exact(static_cast<double>(out.pts.size()));
+  out.inner = {iv_div(sum.x, n), iv_div(sum.y, n), iv_div(sum.z, n)};
+  out.axis = s.round == ConvexShape::Round::Disc ? out.pts[1] - out.pts[0] : IV3{};
+  return out;
+}
+
+/// The shape in doubles for the filter's search (nearest values; nothing
+/// here needs to be exact).
+ShapeT<double> to_search(const ConvexShape& s) {
+  ShapeT<double> out;
+  out.src = &s;
+  V3<double> sum{};
+  for (std::size_t i = 0; i < s.points.size(); ++i) {
+    const V3<double> p{s.lo[i].x, s.lo[i].y, s.lo[i].z};
+    out.pts.push_back(p);
+    sum = sum + p;
+  }
+  out.inner = (1.0 / static_cast<double>(s.points.size())) * sum;
+  out.radius = s.radius_hi;
+  out.round = s.radius == 0 ? ConvexShape::Round::None : s.round;
+  if (out.round == ConvexShape::Round::Disc) {
+    V3<double> a{s.axis_d.x, s.axis_d.y, s.axis_d.z};
+    const double m = std::max({std::abs(a.x), std::abs(a.y), std::abs(a.z)});
+    a = (1 / m) * a;
+    out.unit_axis = (1 / std::sqrt(dot(a, a))) * a;
+  }
   return out;
 }
 
@@ -375,9 +406,15 @@ bool filter_round(Ctx& c, DistanceResult& r) {
       if (!(std::isfinite(s->lo[i].x) && std::isfinite(s->hi[i].x) && std::isfinite(s->lo[i].y) &&
             std::isfinite(s->hi[i].y) && std::isfinite(s->lo[i].z) && std::isfinite(s->hi[i].z)))
         return false;
-  const ShapeT<double> A = convert<double>(c.A), B = convert<double>(c.B);
+  const ShapeT<double> A = to_search(c.A), B = to_search(c.B);
   const ShapeI AI = to_iv(c.A), BI = to_iv(c.B);
-  const double sc = to_double_up(c.scale);
+  double sc = 0;
+  for (const ConvexShape* s : {&c.A, &c.B}) {
+    for (std::size_t i = 0; i < s->points.size(); ++i)
+      sc = std::max({sc, std::abs(s->lo[i].x), std::abs(s->lo[i].y), std::abs(s->lo[i].z), std::abs(s->hi[i].x),
+                     std::abs(s->hi[i].y), std::abs(s->hi[i].z)});
+    sc = std::max(sc, s->radius_hi);
+  }
   if (!(sc < 1e150 && sc > 1e-150)) return false;  // squares stay normal
   const double contact = sc * 0x1p-45;
   const GjkOut<double> g = gjk(A, B, contact * contact, 96);
@@ -412,7 +449,26 @@ bool filter_round(Ctx& c, DistanceResult& r) {
   };
   if (g.status == GjkStatus::Inside) {
     if (tet_cert({s.v[0], s.v[1], s.v[2], s.v[3]})) return true;
-  } else if (g.status == GjkStatus::Separated || g.status == GjkStatus::MaxIter) {
+  } else if (g.status == GjkStatus::Contact) {
+    // Origin on a face of the simplex (e.g. a mirror-symmetric pair keeps
+    // GJK in a plane): the portal method leaves the plane.
+    const MprOut<double> m = mpr(A, B, 96);
+    if (m.status == MprStatus::Hit && tet_cert(m.tet)) return true;
+    if (m.status == MprStatus::Miss) {
+      const IV3 n = iv3(Vec3{m.dir.x, m.dir.y, m.dir.z}), mm = iv3(Vec3{-m.dir.x, -m.dir.y, -m.dir.z});
+      const Iv h = support_iv(AI, n) + support_iv(BI, mm);
+      const Iv nn = iv_sqrt(dot(n, n));
+      const IV3 d = AI.inner - BI.inner;
+      const Iv hi = iv_sqrt(dot(d, d));
+      if (h.certainly_neg() && nn.certainly_pos() && std::isfinite(hi.hi)) {
+        r.verdict = Verdict::Separated;
+        r.distance = {q_of(std::max(0.0, dn(-h.hi / nn.hi))), q_of(hi.hi)};
+        r.bits = 53;
+        r.by_filter = true;
+        return true;
+      }
+    }
+  } else {
     const Vec3 nd{-s.closest.x, -s.closest.y, -s.closest.z};
     const IV3 n = iv3(nd), m = iv3(Vec3{s.closest.x, s.closest.y, s.closest.z});
     const Iv h = support_iv(AI, n) + support_iv(BI, m);
@@ -449,17 +505,18 @@ bool filter_round(Ctx& c, DistanceResult& r) {
 }  // namespace
 
 DistanceResult classify(const ConvexShape& a, const ConvexShape& b, const EngineOptions& opt) {
-  Ctx c{a, b, pair_scale(a, b), a.kind == ConvexShape::Kind::Hull || b.kind == ConvexShape::Kind::Hull, {}};
+  Ctx c{a, b, Q(0), a.kind == ConvexShape::Kind::Hull || b.kind == ConvexShape::Kind::Hull, {}};
   DistanceResult r;
+  if (opt.filter && filter_round(c, r)) {
+    r.note = "filter";
+    return r;
+  }
+  c.scale = pair_scale(a, b);
   if (c.scale == 0) {  // two points at the origin
     r.verdict = Verdict::Touching;
     r.common_point = QVec{0, 0, 0};
     r.separation = SeparationCertificate{QVec{1, 0, 0}};
     r.distance = point(Q(0));
-    return r;
-  }
-  if (opt.filter && filter_round(c, r)) {
-    r.note = "filter";
     return r;
   }
   std::vector<QVec> dirs, pts;

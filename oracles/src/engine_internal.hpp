@@ -9,6 +9,9 @@ namespace geomcheck::oracle {
 
 inline bool is_zero(const QVec& v) { return v.x == 0 && v.y == 0 && v.z == 0; }
 
+/// Double bracket [lo, hi] of a rational (one-ulp wide unless exact).
+void bracket(const Q& q, double& lo, double& hi);
+
 /// Exact sign of alpha + beta*sqrt(u) + gamma*sqrt(v) (beta, gamma, u, v >= 0).
 int sign_sqrt2(const Q& alpha, const Q& beta, const Q& u, const Q& gamma, const Q& v);
 /// max over the core points of n.p.

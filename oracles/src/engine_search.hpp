@@ -9,6 +9,7 @@
 #include <boost/multiprecision/cpp_bin_float.hpp>
 #include <algorithm>
 #include <cmath>
+#include <array>
 #include <vector>
 
 #include "engine_internal.hpp"
@@ -20,7 +21,7 @@ using HP128 = mp::number<mp::cpp_bin_float<128, mp::digit_base_2>, mp::et_off>;
 using HP384 = mp::number<mp::cpp_bin_float<384, mp::digit_base_2>, mp::et_off>;
 
 template <class T> inline T from_q(const Q& q) { return q.template convert_to<T>(); }
-template <> inline double from_q<double>(const Q& q) { return to_double(q); }
+template <> inline double from_q<double>(const Q& q) { return mpq_get_d(q.backend().data()); }
 inline Q exact_q(double x) { return to_q(x); }
 template <class T> inline Q exact_q(const T& x) { return Q(x); }
 
@@ -145,36 +146,49 @@ Vert<T> support_vert(const ShapeT<T>& A, const ShapeT<T>& B, const V3<T>& d) {
   return make_vert(support(A, d), support(B, -d));
 }
 
+/// A simplex of at most four Minkowski vertices (no heap allocation).
 template <class T>
 struct Simplex {
-  std::vector<Vert<T>> v;
-  std::vector<T> lambda;
+  struct List {
+    std::array<Vert<T>, 4> items;
+    int n = 0;
+    std::size_t size() const { return static_cast<std::size_t>(n); }
+    bool empty() const { return n == 0; }
+    void push_back(const Vert<T>& x) { items[n++] = x; }
+    const Vert<T>& operator[](std::size_t i) const { return items[i]; }
+    Vert<T>& operator[](std::size_t i) { return items[i]; }
+    const Vert<T>* begin() const { return items.data(); }
+    const Vert<T>* end() const { return items.data() + n; }
+  } v;
+  std::array<T, 4> lambda{};
   V3<T> closest;
 };
 
 /// Closest point of the simplex hull to the origin; keeps the minimal face.
+/// Every face is tried (at most 15): the closest point of the hull is the
+/// nearest of the faces whose affine closest point has positive weights.
 template <class T>
 void closest_point(Simplex<T>& s) {
-  const int n = static_cast<int>(s.v.size());
+  const int n = s.v.n;
   const T tiny = ldexp(T(1), -(bits_of<T>() - 8));
   bool have = false;
   T best_nn{};
-  std::vector<int> best_idx;
-  std::vector<T> best_l;
+  int best_mask = 0;
+  std::array<T, 4> best_l{};
   V3<T> best_p;
   for (int mask = 1; mask < (1 << n); ++mask) {
-    std::vector<int> idx;
-    for (int k = 0; k < n; ++k)
-      if (mask >> k & 1) idx.push_back(k);
-    const int k = static_cast<int>(idx.size());
+    int idx[4] = {0, 0, 0, 0};
+    int k = 0;
+    for (int q = 0; q < n; ++q)
+      if (mask >> q & 1) idx[k++] = q;
     const V3<T>& w0 = s.v[idx[0]].w;
-    std::vector<T> lam(k);
+    std::array<T, 4> lam{};
     V3<T> p = w0;
     if (k == 1) {
       lam[0] = 1;
     } else {
       // Gram system for mu (w = w0 + sum mu_j D_j).
-      std::vector<V3<T>> D(k - 1);
+      V3<T> D[3];
       for (int j = 1; j < k; ++j) D[j - 1] = s.v[idx[j]].w - w0;
       const int m = k - 1;
       T G[3][4];
@@ -201,7 +215,7 @@ void closest_point(Simplex<T>& s) {
         }
       }
       if (!ok || !(abs(det) > tiny * diag)) continue;
-      std::vector<T> mu(m);
+      T mu[3];
       for (int r = m - 1; r >= 0; --r) {
         T acc = G[r][m];
         for (int q = r + 1; q < m; ++q) acc -= G[r][q] * mu[q];
@@ -223,19 +237,20 @@ void closest_point(Simplex<T>& s) {
     if (!have || nn < best_nn) {
       have = true;
       best_nn = nn;
-      best_idx = idx;
+      best_mask = mask;
       best_l = lam;
       best_p = p;
     }
   }
   if (!have) {  // keep the newest point
-    best_idx = {n - 1};
+    best_mask = 1 << (n - 1);
     best_l = {T(1)};
     best_p = s.v[n - 1].w;
   }
-  std::vector<Vert<T>> keep;
-  for (int k : best_idx) keep.push_back(s.v[k]);
-  s.v = std::move(keep);
+  typename Simplex<T>::List keep;
+  for (int q = 0; q < n; ++q)
+    if (best_mask >> q & 1) keep.push_back(s.v[q]);
+  s.v = keep;
   s.lambda = best_l;
   s.closest = best_p;
 }

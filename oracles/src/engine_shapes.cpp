@@ -4,6 +4,7 @@
 // point, the sign of h(n) - d, the sign of h_A(n) + h_B(-n). Square roots
 // are never taken; a term r*sqrt(u) is compared by squaring with its sign
 // handled first (sign_sqrt below).
+#include <cmath>
 #include <stdexcept>
 
 #include "engine_internal.hpp"
@@ -100,18 +101,43 @@ void fill_doubles(ConvexShape& s) {
   s.hi.clear();
   s.doubles_exact = true;
   for (const QVec& p : s.points) {
-    const Vec3 l{to_double_down(p.x), to_double_down(p.y), to_double_down(p.z)};
-    const Vec3 h{to_double_up(p.x), to_double_up(p.y), to_double_up(p.z)};
+    Vec3 l, h;
+    bracket(p.x, l.x, h.x);
+    bracket(p.y, l.y, h.y);
+    bracket(p.z, l.z, h.z);
     if (!(l == h)) s.doubles_exact = false;
     s.lo.push_back(l);
     s.hi.push_back(h);
   }
-  s.radius_hi = to_double_up(s.radius);
-  if (to_double_down(s.radius) != s.radius_hi) s.doubles_exact = false;
-  s.axis_d = {to_double(s.axis.x), to_double(s.axis.y), to_double(s.axis.z)};
+  double rlo;
+  bracket(s.radius, rlo, s.radius_hi);
+  if (rlo != s.radius_hi) s.doubles_exact = false;
+  double ahi;
+  bracket(s.axis.x, s.axis_d.x, ahi);
+  bracket(s.axis.y, s.axis_d.y, ahi);
+  bracket(s.axis.z, s.axis_d.z, ahi);
 }
 
 }  // namespace
+
+void bracket(const Q& q, double& lo, double& hi) {
+  // mpq_get_d truncates towards zero; one ulp outwards brackets the value.
+  const double d = mpq_get_d(q.backend().data());
+  if (!std::isfinite(d)) {
+    lo = to_double_down(q);
+    hi = to_double_up(q);
+    return;
+  }
+  if (Q(d) == q) {
+    lo = hi = d;
+  } else if (q > 0) {
+    lo = d;
+    hi = std::nextafter(d, INFINITY);
+  } else {
+    hi = d;
+    lo = std::nextafter(d, -INFINITY);
+  }
+}
 
 int sign_sqrt2(const Q& alpha, const Q& beta, const Q& u, const Q& gamma, const Q& v) {
   // sign(alpha + beta*sqrt(u) + gamma*sqrt(v)), beta, gamma, u, v >= 0.
