@@ -137,6 +137,15 @@ Iv support_iv(const ShapeI& s, const IV3& n) {
 /// the norm bound cannot be shown.
 bool sup_box(const ShapeI& s, const Sup<double>& sp, IV3& out) {
   if (sp.i < 0) { out = s.inner; return true; }
+  if (sp.half) {
+    Sup<double> full = sp;
+    full.half = false;
+    IV3 p;
+    if (!sup_box(s, full, p)) return false;
+    const Iv h = Iv::exact(0.5);
+    out = h * (s.inner + p);
+    return true;
+  }
   out = s.pts[sp.i];
   if (s.round == ConvexShape::Round::None || (sp.w.x == 0 && sp.w.y == 0 && sp.w.z == 0)) return true;
   const double f = 1 - 0x1p-30;
@@ -149,6 +158,22 @@ bool sup_box(const ShapeI& s, const Sup<double>& sp, IV3& out) {
   }
   out = out + s.radius * w;
   return true;
+}
+
+/// The exact point that sup_box encloses.
+QVec filter_point_q(const ConvexShape& s, const Sup<double>& sp) {
+  if (sp.i < 0) return inner_point(s);
+  if (sp.half) {
+    Sup<double> full = sp;
+    full.half = false;
+    return Q(1, 2) * (inner_point(s) + filter_point_q(s, full));
+  }
+  QVec base = s.points[sp.i];
+  if (s.radius == 0 || s.round == ConvexShape::Round::None || (sp.w.x == 0 && sp.w.y == 0 && sp.w.z == 0)) return base;
+  const double f = 1 - 0x1p-30;
+  QVec w = to_q(Vec3{sp.w.x * f, sp.w.y * f, sp.w.z * f});
+  if (s.round == ConvexShape::Round::Disc) w = w - (dot(w, s.axis) / dot(s.axis, s.axis)) * s.axis;
+  return base + s.radius * w;
 }
 
 Iv volume_iv(const IV3& p0, const IV3& p1, const IV3& p2, const IV3& p3) {
@@ -200,6 +225,7 @@ struct Ctx {
   const ConvexShape& B;
   Q scale;
   bool trust;  // a swept hull: members built inside by construction
+  bool early_out = true;  // stop GJK at the first separating plane
   std::ostringstream note;
 };
 
@@ -315,6 +341,16 @@ std::vector<QVec> feature_directions(const ConvexShape& s) {
 
 QVec snap_double(const QVec& v) { return {q_of(to_double(v.x)), q_of(to_double(v.y)), q_of(to_double(v.z))}; }
 
+/// Coordinates rounded to the nearest multiple of 2^e.
+Q snap_grid(const Q& x, long e) {
+  Q step = e >= 0 ? Q(mp::mpz_int(1) << e) : Q(1) / Q(mp::mpz_int(1) << -e);
+  const Q y = x / step + Q(1, 2);
+  mp::mpz_int f = mp::numerator(y) / mp::denominator(y);  // truncates towards zero
+  if (y < 0 && Q(f) != y) f -= 1;                          // floor
+  return Q(f) * step;
+}
+QVec snap_grid(const QVec& v, long e) { return {snap_grid(v.x, e), snap_grid(v.y, e), snap_grid(v.z, e)}; }
+
 /// Touching: a common point and n with h_A(n) + h_B(-n) <= 0, both exact.
 bool try_touching(Ctx& c, const std::vector<QVec>& dirs_in, const std::vector<QVec>& points_in, DistanceResult& r) {
   std::vector<QVec> dirs = dirs_in;
@@ -323,6 +359,20 @@ bool try_touching(Ctx& c, const std::vector<QVec>& dirs_in, const std::vector<QV
   dirs.insert(dirs.end(), fb.begin(), fb.end());
   for (const QVec& a : fa)
     for (const QVec& b : fb) dirs.push_back(cross(a, b));
+  // The line of centres, and its parts perpendicular to each feature direction.
+  const QVec d = inner_point(c.B) - inner_point(c.A);
+  dirs.push_back(d);
+  for (const auto* f : {&fa, &fb})
+    for (const QVec& a : *f)
+      if (!is_zero(a)) dirs.push_back(d - (dot(d, a) / dot(a, a)) * a);
+  // Searched directions snapped to doubles and to floats.
+  for (const QVec& n : dirs_in) {
+    const double m = std::max({std::abs(to_double(n.x)), std::abs(to_double(n.y)), std::abs(to_double(n.z))});
+    if (!(m > 0) || !std::isfinite(m)) continue;
+    const Vec3 u{to_double(n.x) / m, to_double(n.y) / m, to_double(n.z) / m};
+    dirs.push_back(to_q(u));
+    dirs.push_back(to_q(Vec3{static_cast<float>(u.x), static_cast<float>(u.y), static_cast<float>(u.z)}));
+  }
   std::optional<QVec> n_ok;
   for (const QVec& n : dirs) {
     if (is_zero(n)) continue;
@@ -335,6 +385,11 @@ bool try_touching(Ctx& c, const std::vector<QVec>& dirs_in, const std::vector<QV
   if (!n_ok) return false;
   std::vector<QVec> pts = points_in;
   for (const QVec& p : points_in) pts.push_back(snap_double(p));
+  // Rounded to grids of 2^-k * scale: exact constructions have short
+  // coordinates, the searched witnesses only approach them.
+  const long e = static_cast<long>(std::floor(std::log2(to_double(c.scale))));
+  for (const QVec& p : points_in)
+    for (int k : {8, 16, 24, 32, 40, 48, 52}) pts.push_back(snap_grid(p, e - k));
   if (c.A.kind != ConvexShape::Kind::Hull)
     for (const QVec& p : c.B.points) pts.push_back(p);
   for (const QVec& p : c.A.points) pts.push_back(p);
@@ -366,23 +421,25 @@ Round search_round(Ctx& c, DistanceResult& r, std::vector<QVec>& dirs, std::vect
   const ShapeT<T> A = convert<T>(c.A), B = convert<T>(c.B);
   const T sc = from_q<T>(c.scale);
   const T contact = ldexp(sc, -(bits - 8));
-  const GjkOut<T> g = gjk(A, B, contact * contact, 64 + 2 * bits);
+  const GjkOut<T> g = gjk(A, B, contact * contact, 64 + 2 * bits, c.early_out);
   const Simplex<T>& s = g.simplex;
   c.note << " gjk" << bits << ":" << g.iterations;
   if (g.status == GjkStatus::Inside) {
     std::array<Vert<T>, 4> tet{s.v[0], s.v[1], s.v[2], s.v[3]};
     if (certify_overlap_q(c, tet, r, bits)) return Round::Decided;
   }
-  if (g.status == GjkStatus::Separated || g.status == GjkStatus::MaxIter) {
+  if (!s.v.empty()) {
     witnesses_q(c.A, c.B, s, r);
-    const QVec n = exact_q(-s.closest);
-    dirs.push_back(n);
     pts.push_back(*r.witness_a);
     pts.push_back(*r.witness_b);
-    if (certify_separation_q(c, n, r, bits)) return Round::Decided;
-    r.witness_a.reset();
-    r.witness_b.reset();
   }
+  if (g.status == GjkStatus::Separated || g.status == GjkStatus::MaxIter) {
+    const QVec n = exact_q(-s.closest);
+    dirs.push_back(n);
+    if (certify_separation_q(c, n, r, bits)) return Round::Decided;
+  }
+  r.witness_a.reset();
+  r.witness_b.reset();
   {
     using std::sqrt;
     dist_est = exact_q(T(sqrt(dot(s.closest, s.closest))));
@@ -394,6 +451,12 @@ Round search_round(Ctx& c, DistanceResult& r, std::vector<QVec>& dirs, std::vect
     const QVec n = exact_q(m.dir);
     dirs.push_back(n);
     if (certify_separation_q(c, n, r, bits)) return Round::Decided;
+  }
+  {
+    std::vector<Vert<T>> cand(s.v.begin(), s.v.end());
+    if (m.status == MprStatus::Hit) cand.insert(cand.end(), m.tet.begin(), m.tet.end());
+    std::array<Vert<T>, 4> tet;
+    if (enclosing_tet(A, B, cand, tet) && certify_overlap_q(c, tet, r, bits)) return Round::Decided;
   }
   const Q tiny = c.scale / Q(mp::mpz_int(1) << 200);
   return dist_est < tiny ? Round::Tiny : Round::Open;
@@ -417,7 +480,7 @@ bool filter_round(Ctx& c, DistanceResult& r) {
   }
   if (!(sc < 1e150 && sc > 1e-150)) return false;  // squares stay normal
   const double contact = sc * 0x1p-45;
-  const GjkOut<double> g = gjk(A, B, contact * contact, 96);
+  const GjkOut<double> g = gjk(A, B, contact * contact, 96, c.early_out);
   const Simplex<double>& s = g.simplex;
   auto tet_cert = [&](const std::array<Vert<double>, 4>& tet) {
     std::array<IV3, 4> w;
@@ -441,6 +504,13 @@ bool filter_round(Ctx& c, DistanceResult& r) {
       hi = std::min(hi, up(h.hi / nn.lo));
     }
     if (!std::isfinite(hi)) hi = up(up(8 * sc));
+    // The rational points the interval proof was about.
+    OverlapCertificate cert;
+    for (int i = 0; i < 4; ++i) {
+      cert.a[i] = filter_point_q(c.A, tet[i].a);
+      cert.b[i] = filter_point_q(c.B, tet[i].b);
+    }
+    r.overlap = cert;
     r.verdict = Verdict::Overlapping;
     r.distance = {q_of(-hi), q_of(-face_lo)};
     r.bits = 53;
@@ -454,6 +524,10 @@ bool filter_round(Ctx& c, DistanceResult& r) {
     // GJK in a plane): the portal method leaves the plane.
     const MprOut<double> m = mpr(A, B, 96);
     if (m.status == MprStatus::Hit && tet_cert(m.tet)) return true;
+    std::vector<Vert<double>> cand(s.v.begin(), s.v.end());
+    if (m.status == MprStatus::Hit) cand.insert(cand.end(), m.tet.begin(), m.tet.end());
+    std::array<Vert<double>, 4> tet;
+    if (enclosing_tet(A, B, cand, tet) && tet_cert(tet)) return true;
     if (m.status == MprStatus::Miss) {
       const IV3 n = iv3(Vec3{m.dir.x, m.dir.y, m.dir.z}), mm = iv3(Vec3{-m.dir.x, -m.dir.y, -m.dir.z});
       const Iv h = support_iv(AI, n) + support_iv(BI, mm);
@@ -462,6 +536,7 @@ bool filter_round(Ctx& c, DistanceResult& r) {
       const Iv hi = iv_sqrt(dot(d, d));
       if (h.certainly_neg() && nn.certainly_pos() && std::isfinite(hi.hi)) {
         r.verdict = Verdict::Separated;
+        r.separation = SeparationCertificate{to_q(Vec3{m.dir.x, m.dir.y, m.dir.z})};
         r.distance = {q_of(std::max(0.0, dn(-h.hi / nn.hi))), q_of(hi.hi)};
         r.bits = 53;
         r.by_filter = true;
@@ -474,7 +549,8 @@ bool filter_round(Ctx& c, DistanceResult& r) {
     const Iv h = support_iv(AI, n) + support_iv(BI, m);
     if (h.certainly_neg()) {
       // Witness points: convex combinations of points built inside.
-      IV3 wa{}, wb{};
+      // (GJK's early exit may come before any point: then the inner points.)
+      IV3 wa = AI.inner, wb = BI.inner;
       bool ok = true;
       Iv rest = Iv::exact(1);
       for (std::size_t i = 0; i < s.v.size() && ok; ++i) {
@@ -492,6 +568,7 @@ bool filter_round(Ctx& c, DistanceResult& r) {
       const Iv nn = iv_sqrt(dot(n, n));
       if (ok && std::isfinite(dist_hi.hi) && nn.certainly_pos()) {
         r.verdict = Verdict::Separated;
+        r.separation = SeparationCertificate{to_q(nd)};
         r.distance = {q_of(std::max(0.0, dn(-h.hi / nn.hi))), q_of(dist_hi.hi)};
         r.bits = 53;
         r.by_filter = true;
@@ -504,8 +581,10 @@ bool filter_round(Ctx& c, DistanceResult& r) {
 
 }  // namespace
 
-DistanceResult classify(const ConvexShape& a, const ConvexShape& b, const EngineOptions& opt) {
-  Ctx c{a, b, Q(0), a.kind == ConvexShape::Kind::Hull || b.kind == ConvexShape::Kind::Hull, {}};
+namespace {
+
+DistanceResult decide(const ConvexShape& a, const ConvexShape& b, const EngineOptions& opt, bool early_out) {
+  Ctx c{a, b, Q(0), a.kind == ConvexShape::Kind::Hull || b.kind == ConvexShape::Kind::Hull, early_out, {}};
   DistanceResult r;
   if (opt.filter && filter_round(c, r)) {
     r.note = "filter";
@@ -543,6 +622,34 @@ DistanceResult classify(const ConvexShape& a, const ConvexShape& b, const Engine
            << " (estimate " << to_double(est) << ")";
   }
   r.note = c.note.str();
+  return r;
+}
+
+}  // namespace
+
+DistanceResult classify(const ConvexShape& a, const ConvexShape& b, const EngineOptions& opt) {
+  DistanceResult r = decide(a, b, opt, opt.rel_width == 0);
+  if (opt.rel_width == 0 || r.verdict == Verdict::Touching || r.verdict == Verdict::Undecided) return r;
+  const Q target = pair_scale(a, b) * to_q(opt.rel_width);
+  if (r.distance.hi - r.distance.lo <= target) return r;
+  if (r.verdict == Verdict::Overlapping) {
+    const PenetrationResult p = penetration(a, b, opt.rel_width);
+    if (p.overlapping && p.depth.hi - p.depth.lo < r.distance.hi - r.distance.lo) {
+      r.distance = {Q(-p.depth.hi), Q(-p.depth.lo)};
+      r.note += " depth: " + p.note;
+    }
+    return r;
+  }
+  // Separated: GJK to convergence without the filter, in 128 then 384 digits.
+  EngineOptions o = opt;
+  o.filter = false;
+  o.exact_small = false;
+  const DistanceResult t = decide(a, b, o, false);
+  if (t.verdict == Verdict::Separated && t.distance.hi - t.distance.lo < r.distance.hi - r.distance.lo) {
+    DistanceResult out = t;
+    out.note = r.note + " refined:" + t.note;
+    return out;
+  }
   return r;
 }
 

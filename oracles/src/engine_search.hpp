@@ -78,6 +78,7 @@ ShapeT<T> convert(const ConvexShape& s) {
 template <class T>
 struct Sup {
   int i = -1;
+  bool half = false;  // the midpoint of the inner point and this support point
   V3<T> w;
   V3<T> p;
 };
@@ -99,10 +100,28 @@ Sup<T> support(const ShapeT<T>& s, const V3<T>& d) {
     T m = std::max({abs(e.x), abs(e.y), abs(e.z)});
     if (m > 0) {
       e = (T(1) / m) * e;
+      // Once more: for d nearly along the axis the first projection leaves
+      // an axial residue comparable to e itself.
+      if (s.round == ConvexShape::Round::Disc) {
+        e = e - dot(e, s.unit_axis) * s.unit_axis;
+        m = std::max({abs(e.x), abs(e.y), abs(e.z)});
+        if (!(m > 0)) return out;
+        e = (T(1) / m) * e;
+      }
       out.w = (T(1) / sqrt(dot(e, e))) * e;
       out.p = out.p + s.radius * out.w;
     }
   }
+  return out;
+}
+
+/// Midpoint of the inner point and the support point along d: a point of
+/// the relative interior when the inner point is in it.
+template <class T>
+Sup<T> half_sup(const ShapeT<T>& s, const V3<T>& d) {
+  Sup<T> out = support(s, d);
+  out.half = true;
+  out.p = T(0.5) * (s.inner + out.p);
   return out;
 }
 
@@ -119,6 +138,11 @@ Sup<T> inner_sup(const ShapeT<T>& s) {
 template <class T>
 QVec sup_point_q(const ConvexShape& s, const Sup<T>& sp) {
   if (sp.i < 0) return inner_point(s);  // -1: the inner point
+  if (sp.half) {
+    Sup<T> full = sp;
+    full.half = false;
+    return Q(1, 2) * (inner_point(s) + sup_point_q(s, full));
+  }
   QVec base = s.points[sp.i];
   if (s.round == ConvexShape::Round::None || s.radius == 0 || is_zero(sp.w)) return base;
   QVec w = exact_q(sp.w);
@@ -260,6 +284,9 @@ enum class GjkStatus { Separated, Inside, Contact, MaxIter };
 template <class T>
 struct GjkOut {
   GjkStatus status = GjkStatus::MaxIter;
+  /// v.w and v.v of the last iteration: v.w / |v| is a lower bound of the
+  /// distance (the support of A - B along -v), |v| an upper bound.
+  T vw{}, vv{};
   Simplex<T> simplex;
   int iterations = 0;
 };
@@ -267,16 +294,28 @@ struct GjkOut {
 /// GJK on A - B. `contact` is the squared distance below which the origin is
 /// taken to be on the simplex.
 template <class T>
-GjkOut<T> gjk(const ShapeT<T>& A, const ShapeT<T>& B, const T& contact2, int max_iter) {
+GjkOut<T> gjk(const ShapeT<T>& A, const ShapeT<T>& B, const T& contact2, int max_iter, bool early_out = false,
+              int tol_bits = bits_of<T>() - 6) {
   GjkOut<T> out;
   Simplex<T>& s = out.simplex;
   V3<T> v = A.inner - B.inner;
   if (is_zero(v)) v = {T(1), T(0), T(0)};
-  const T rel = ldexp(T(1), -(bits_of<T>() - 6));
+  const T rel = ldexp(T(1), -tol_bits);
   for (int it = 0; it < max_iter; ++it) {
     out.iterations = it + 1;
     const Vert<T> x = support_vert(A, B, -v);
     const T vv = dot(v, v);
+    if (early_out) {
+      // v.w > 0: the plane normal to v already separates (h_{A-B}(-v) < 0),
+      // with a margin well above the rounding of the search.
+      const T vw = dot(v, x.w);
+      if (vw > 0 && vw * vw > ldexp(T(1), -2 * (bits_of<T>() - 12)) * vv * dot(x.w, x.w)) {
+        out.status = GjkStatus::Separated;
+        return out;
+      }
+    }
+    out.vw = dot(v, x.w);
+    out.vv = vv;
     if (!s.v.empty()) {
       const T gap = vv - dot(v, x.w);
       if (gap <= rel * vv) { out.status = GjkStatus::Separated; return out; }
@@ -306,19 +345,40 @@ struct MprOut {
 template <class T>
 MprOut<T> mpr(const ShapeT<T>& A, const ShapeT<T>& B, int max_iter) {
   MprOut<T> out;
-  Vert<T> v0 = make_vert(inner_sup(A), inner_sup(B));
-  if (is_zero(v0.w)) return out;
+  auto perpendicular = [](const V3<T>& a) {
+    const V3<T> e = abs(a.x) <= abs(a.y) && abs(a.x) <= abs(a.z) ? V3<T>{T(1), T(0), T(0)}
+                    : abs(a.y) <= abs(a.z)                      ? V3<T>{T(0), T(1), T(0)}
+                                                                 : V3<T>{T(0), T(0), T(1)};
+    return cross(a, e);
+  };
   auto sup = [&](const V3<T>& d) { return support_vert(A, B, d); };
   auto miss = [&](const V3<T>& d) {
     out.status = MprStatus::Miss;
     out.dir = d;
     return out;
   };
-  V3<T> dir = -v0.w;
-  Vert<T> v1 = sup(dir);
-  if (dot(v1.w, dir) <= 0) return miss(dir);
-  dir = cross(v0.w, v1.w);
-  if (is_zero(dir)) return out;
+  Vert<T> v0 = make_vert(inner_sup(A), inner_sup(B));
+  Vert<T> v1;
+  V3<T> dir;
+  // The interior point v0 must not be the origin, and the first support
+  // point must not lie on the line through v0 and the origin (symmetric
+  // pairs): then move v0 half-way to a support point in a perpendicular
+  // direction (still interior, now off the line).
+  for (int attempt = 0; attempt < 3; ++attempt) {
+    if (!is_zero(v0.w)) {
+      dir = -v0.w;
+      v1 = sup(dir);
+      if (dot(v1.w, dir) <= 0) return miss(dir);
+      dir = cross(v0.w, v1.w);
+      const T tiny = ldexp(T(1), -(bits_of<T>() - 4));
+      if (dot(dir, dir) > tiny * dot(v0.w, v0.w) * dot(v1.w, v1.w)) break;
+      dir = V3<T>{};
+    }
+    V3<T> d = is_zero(v0.w) ? V3<T>{T(1), T(0), T(0)} : perpendicular(v0.w);
+    if (attempt == 1) d = -d;
+    v0 = make_vert(half_sup(A, d), half_sup(B, -d));
+  }
+  if (is_zero(dir) || is_zero(v0.w)) return out;
   Vert<T> v2 = sup(dir);
   if (dot(v2.w, dir) <= 0) return miss(dir);
   dir = cross(v1.w - v0.w, v2.w - v0.w);
@@ -364,6 +424,44 @@ MprOut<T> mpr(const ShapeT<T>& A, const ShapeT<T>& B, int max_iter) {
     }
   }
   return out;
+}
+
+/// Fallback for symmetric and degenerate pairs (the origin on an edge of
+/// every portal, e.g. at the centre of the ball part of A - B): support
+/// points along two tetrahedral frames, plus the given candidates; returns
+/// the four whose tetrahedron holds the origin with the largest smallest
+/// barycentric weight.
+template <class T>
+bool enclosing_tet(const ShapeT<T>& A, const ShapeT<T>& B, std::vector<Vert<T>> cand, std::array<Vert<T>, 4>& best) {
+  const T one(1), z(0);
+  const V3<T> dirs[8] = {{one, one, one},  {one, -one, -one}, {-one, one, -one}, {-one, -one, one},
+                         {one, z, z},      {-one, z, z},      {z, one, z},       {z, z, one}};
+  for (const auto& d : dirs) cand.push_back(support_vert(A, B, d));
+  cand.push_back(make_vert(inner_sup(A), inner_sup(B)));
+  const int n = static_cast<int>(cand.size());
+  T best_score(0);
+  bool found = false;
+  auto vol = [](const V3<T>& a, const V3<T>& b, const V3<T>& c, const V3<T>& d) {
+    return dot(b - a, cross(c - a, d - a));
+  };
+  const V3<T> o{};
+  for (int i = 0; i < n; ++i)
+    for (int j = i + 1; j < n; ++j)
+      for (int k = j + 1; k < n; ++k)
+        for (int l = k + 1; l < n; ++l) {
+          const V3<T>&a = cand[i].w, &b = cand[j].w, &c = cand[k].w, &d = cand[l].w;
+          const T v = vol(a, b, c, d);
+          if (v == 0) continue;
+          const T l0 = vol(o, b, c, d) / v, l1 = vol(a, o, c, d) / v, l2 = vol(a, b, o, d) / v,
+                  l3 = vol(a, b, c, o) / v;
+          const T m = std::min({l0, l1, l2, l3});
+          if (m > best_score) {
+            best_score = m;
+            best = {cand[i], cand[j], cand[k], cand[l]};
+            found = true;
+          }
+        }
+  return found;
 }
 
 }  // namespace geomcheck::oracle::search

@@ -1,0 +1,351 @@
+// Self-tests of the certified convex engine: agreement with the closed-form
+// oracles (sphere / point / segment cast against the cylinder), exact
+// touching constructions, certificates re-checked, metamorphic properties
+// over every shape pair. Seeds are fixed (RC_PARAMS from ctest).
+#include <gtest/gtest.h>
+#include <rapidcheck.h>
+#include <rapidcheck/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <string>
+
+#include "geomcheck/oracles/cast_segment_cylinder.hpp"
+#include "geomcheck/oracles/cylinder_sphere.hpp"
+#include "geomcheck/oracles/engine.hpp"
+
+using namespace geomcheck;
+using namespace geomcheck::oracle;
+
+namespace {
+
+std::string hex(double v) {
+  char b[40];
+  std::snprintf(b, sizeof b, "%a", v);
+  return b;
+}
+std::string hex(Vec3 v) { return "{" + hex(v.x) + ", " + hex(v.y) + ", " + hex(v.z) + "}"; }
+std::string show(const Cylinder& c) { return "Cylinder{" + hex(c.p) + ", " + hex(c.q) + ", " + hex(c.r) + "}"; }
+std::string show(const Sphere& s) { return "Sphere{" + hex(s.c) + ", " + hex(s.r) + "}"; }
+std::string show(const Segment& s) { return "Segment{" + hex(s.a) + ", " + hex(s.b) + "}"; }
+std::string show(const Capsule& c) { return "Capsule{" + hex(c.p) + ", " + hex(c.q) + ", " + hex(c.r) + "}"; }
+std::string show(const Triangle& t) { return "Triangle{" + hex(t.a) + ", " + hex(t.b) + ", " + hex(t.c) + "}"; }
+std::string show(const Obb& b) {
+  return "Obb{" + hex(b.c) + ", {" + hex(b.axes[0]) + ", " + hex(b.axes[1]) + ", " + hex(b.axes[2]) + "}, " + hex(b.e) + "}";
+}
+
+bool intervals_meet(const QInterval& a, const QInterval& b) { return !(a.hi < b.lo) && !(b.hi < a.lo); }
+
+/// Every certificate in a result passes the exact checks, and the verdict
+/// agrees with the sign of the interval.
+void expect_consistent(const ConvexShape& a, const ConvexShape& b, const DistanceResult& r, const std::string& what) {
+  SCOPED_TRACE(what + " note:" + r.note);
+  EXPECT_LE(r.distance.lo, r.distance.hi);
+  switch (r.verdict) {
+    case Verdict::Separated:
+      ASSERT_TRUE(r.separation.has_value());
+      EXPECT_TRUE(check_separation(a, b, *r.separation, true));
+      EXPECT_GE(r.distance.lo, 0);
+      break;
+    case Verdict::Overlapping:
+      ASSERT_TRUE(r.overlap.has_value());
+      if (a.kind != ConvexShape::Kind::Hull && b.kind != ConvexShape::Kind::Hull) {
+        EXPECT_TRUE(check_overlap(a, b, *r.overlap));
+        if (r.common_point) {
+          EXPECT_TRUE(check_common_point(a, b, *r.common_point));
+        }
+      }
+      EXPECT_LT(r.distance.hi, 0);
+      break;
+    case Verdict::Touching:
+      ASSERT_TRUE(r.separation.has_value());
+      ASSERT_TRUE(r.common_point.has_value());
+      EXPECT_TRUE(check_separation(a, b, *r.separation, false));
+      EXPECT_TRUE(check_common_point(a, b, *r.common_point));
+      EXPECT_TRUE(r.distance.lo == 0 && r.distance.hi == 0);
+      break;
+    case Verdict::Undecided:
+      ADD_FAILURE() << "undecided";
+      break;
+  }
+}
+
+// ---- generators ------------------------------------------------------------------
+
+rc::Gen<double> coord() {
+  return rc::gen::oneOf(rc::gen::map(rc::gen::inRange(-4000, 4001), [](int v) { return v / 1000.0; }),
+                        rc::gen::map(rc::gen::inRange(-4, 5), [](int v) { return static_cast<double>(v) / 2; }));
+}
+rc::Gen<double> radius() {
+  return rc::gen::oneOf(rc::gen::map(rc::gen::inRange(0, 2001), [](int v) { return v / 1000.0; }),
+                        rc::gen::element(0.0, 0.5, 1.0));
+}
+rc::Gen<Vec3> vec() {
+  return rc::gen::apply([](double x, double y, double z) { return Vec3{x, y, z}; }, coord(), coord(), coord());
+}
+rc::Gen<Cylinder> cylinder() {
+  return rc::gen::suchThat(rc::gen::apply([](Vec3 p, Vec3 q, double r) { return Cylinder{p, q, r}; }, vec(), vec(), radius()),
+                           [](const Cylinder& c) { return !(c.p == c.q); });
+}
+rc::Gen<Sphere> sphere() { return rc::gen::apply([](Vec3 c, double r) { return Sphere{c, r}; }, vec(), radius()); }
+rc::Gen<Capsule> capsule() {
+  return rc::gen::apply([](Vec3 p, Vec3 q, double r) { return Capsule{p, q, r}; }, vec(), vec(), radius());
+}
+rc::Gen<Segment> segment() { return rc::gen::apply([](Vec3 a, Vec3 b) { return Segment{a, b}; }, vec(), vec()); }
+rc::Gen<Triangle> triangle() {
+  return rc::gen::apply([](Vec3 a, Vec3 b, Vec3 c) { return Triangle{a, b, c}; }, vec(), vec(), vec());
+}
+/// Boxes with exactly orthogonal (unnormalised-free) axes: permutations and
+/// sign flips of the unit axes, or a rotation by a Pythagorean angle (3/5, 4/5).
+rc::Gen<Obb> box() {
+  return rc::gen::apply(
+      [](Vec3 c, double ex, double ey, double ez, int rot) {
+        Obb b;
+        b.c = c;
+        b.e = {ex, ey, ez};
+        const double s = 0.6, k = 0.8;
+        switch (rot) {
+          case 0: break;
+          case 1: b.axes = {Vec3{k, s, 0}, Vec3{-s, k, 0}, Vec3{0, 0, 1}}; break;
+          case 2: b.axes = {Vec3{1, 0, 0}, Vec3{0, k, s}, Vec3{0, -s, k}}; break;
+          default: b.axes = {Vec3{k, 0, -s}, Vec3{0, 1, 0}, Vec3{s, 0, k}}; break;
+        }
+        return b;
+      },
+      vec(), radius(), radius(), radius(), rc::gen::inRange(0, 4));
+}
+
+// ---- closed-form agreement -------------------------------------------------------------
+
+TEST(EngineClosedForm, SphereCylinderVerdictAndDistance) {
+  const bool ok = rc::check("engine agrees with the closed-form cylinder-sphere oracle", [] {
+    const Cylinder c = *cylinder();
+    const Sphere s = *sphere();
+    const auto truth = solve_cylinder_sphere(c, s);
+    const ConvexShape A = make_shape(c), B = make_shape(s);
+    const DistanceResult r = classify(A, B);
+    RC_LOG() << show(c) << " " << show(s) << " engine " << to_string(r.verdict) << " [" << to_double(r.distance.lo)
+             << ", " << to_double(r.distance.hi) << "] truth " << to_string(truth.verdict) << " " << r.note << "\n";
+    RC_ASSERT(r.verdict == truth.verdict);
+    RC_ASSERT(intervals_meet(r.distance, truth.signed_distance));
+    if (r.verdict == Verdict::Separated) RC_ASSERT(check_separation(A, B, *r.separation, true));
+    if (r.verdict == Verdict::Overlapping) RC_ASSERT(check_overlap(A, B, *r.overlap));
+  });
+  EXPECT_TRUE(ok);
+}
+
+TEST(EngineClosedForm, PointCylinderDistance) {
+  const bool ok = rc::check("point distance interval meets the closed form", [] {
+    const Cylinder c = *cylinder();
+    const Vec3 x = *vec();
+    const QInterval truth = signed_distance(to_q(c), to_q(x));
+    const DistanceResult r = classify(make_point(x), make_shape(c));
+    RC_LOG() << show(c) << " point " << hex(x) << " " << r.note << "\n";
+    if (truth.hi < 0) {
+      // Inside: the point's penetration depth is its distance to the boundary.
+      RC_ASSERT(r.verdict == Verdict::Overlapping);
+      RC_ASSERT(intervals_meet(r.distance, truth));
+    } else if (truth.lo > 0) {
+      RC_ASSERT(r.verdict == Verdict::Separated);
+      RC_ASSERT(intervals_meet(r.distance, truth));
+    } else {
+      RC_ASSERT(r.verdict == Verdict::Touching || r.verdict == Verdict::Undecided);
+    }
+  });
+  EXPECT_TRUE(ok);
+}
+
+TEST(EngineClosedForm, PenetrationDepthMatchesSphereCylinder) {
+  const bool ok = rc::check("certified depth meets the closed form", [] {
+    const Cylinder c = *cylinder();
+    const Sphere s = *sphere();
+    const auto truth = solve_cylinder_sphere(c, s);
+    RC_PRE(truth.verdict == Verdict::Overlapping);
+    const PenetrationResult p = penetration(make_shape(c), make_shape(s), 1e-30);
+    RC_LOG() << show(c) << " " << show(s) << " " << p.note << "\n";
+    RC_ASSERT(p.overlapping);
+    const QInterval depth{Q(-truth.signed_distance.hi), Q(-truth.signed_distance.lo)};
+    RC_ASSERT(intervals_meet(p.depth, depth));
+  });
+  EXPECT_TRUE(ok);
+}
+
+TEST(EngineClosedForm, TimeOfImpactMatchesSegmentCast) {
+  const bool ok = rc::check("time of impact meets the closed-form cast", [] {
+    const Cylinder c = *cylinder();
+    const Segment s = *segment();
+    const CastTruth truth = solve_cast(s, c);
+    const ImpactResult r = time_of_impact(make_point(s.a), to_q(s.b) - to_q(s.a), make_shape(c));
+    RC_LOG() << show(c) << " " << show(s) << " " << to_string(r.kind) << " " << r.note << "\n";
+    RC_ASSERT(r.kind != ImpactResult::Kind::Undecided);
+    if (r.kind == ImpactResult::Kind::NoHit) {
+      RC_ASSERT(!truth.hit);
+    } else {
+      RC_ASSERT(truth.hit);
+      RC_ASSERT(intervals_meet(r.t, truth.t));
+      RC_ASSERT((r.kind == ImpactResult::Kind::StartsInside) == (truth.t.hi == 0));
+    }
+  });
+  EXPECT_TRUE(ok);
+}
+
+// ---- exact constructions -----------------------------------------------------------------
+
+TEST(EngineHand, SphereOnCapIsTouching) {
+  const Cylinder c{{0, 0, 0}, {0, 0, 2}, 1};
+  const Sphere s{{0.25, 0.5, 2.75}, 0.75};
+  const ConvexShape A = make_shape(c), B = make_shape(s);
+  const DistanceResult r = classify(A, B);
+  EXPECT_EQ(r.verdict, Verdict::Touching) << r.note;
+  expect_consistent(A, B, r, "sphere on cap");
+}
+
+TEST(EngineHand, ParallelCylindersSideBySide) {
+  const Cylinder a{{0, 0, 0}, {0, 0, 3}, 1};
+  const Cylinder b{{2, 0, 1}, {2, 0, 5}, 1};
+  const DistanceResult r = classify(make_shape(a), make_shape(b));
+  EXPECT_EQ(r.verdict, Verdict::Touching) << r.note;
+  expect_consistent(make_shape(a), make_shape(b), r, "side by side");
+  // One ulp apart / one ulp into each other.
+  const Cylinder apart{{std::nextafter(2.0, 3.0), 0, 1}, {std::nextafter(2.0, 3.0), 0, 5}, 1};
+  const DistanceResult r2 = classify(make_shape(a), make_shape(apart));
+  EXPECT_EQ(r2.verdict, Verdict::Separated) << r2.note;
+  expect_consistent(make_shape(a), make_shape(apart), r2, "one ulp apart");
+  const Cylinder into{{std::nextafter(2.0, 1.0), 0, 1}, {std::nextafter(2.0, 1.0), 0, 5}, 1};
+  const DistanceResult r3 = classify(make_shape(a), make_shape(into));
+  EXPECT_EQ(r3.verdict, Verdict::Overlapping) << r3.note;
+  expect_consistent(make_shape(a), make_shape(into), r3, "one ulp into");
+}
+
+TEST(EngineHand, BoxOnCapAndCornerOnRim) {
+  const Cylinder c{{0, 0, -1}, {0, 0, 0}, 1};
+  Obb b;
+  b.c = {0.25, 0, 0.5};
+  b.e = {0.5, 0.5, 0.5};
+  const DistanceResult r = classify(make_shape(b), make_shape(c));
+  EXPECT_EQ(r.verdict, Verdict::Touching) << r.note;
+  expect_consistent(make_shape(b), make_shape(c), r, "box on cap");
+  // A box corner exactly on the rim (3, 4, 0) of a radius-5 cylinder:
+  // touching; lifted by one ulp: separated; lowered: overlapping.
+  const Cylinder c5{{0, 0, -1}, {0, 0, 0}, 5};
+  Obb k;
+  k.c = {3.5, 4.5, 0.5};
+  k.e = {0.5, 0.5, 0.5};
+  const DistanceResult r2 = classify(make_shape(k), make_shape(c5));
+  EXPECT_EQ(r2.verdict, Verdict::Touching) << r2.note;
+  expect_consistent(make_shape(k), make_shape(c5), r2, "corner on rim");
+  k.c.z = std::nextafter(0.5, 1.0);
+  const DistanceResult r3 = classify(make_shape(k), make_shape(c5));
+  EXPECT_EQ(r3.verdict, Verdict::Separated) << r3.note;
+  k.c = {std::nextafter(3.5, 0.0), 4.5, std::nextafter(0.5, 0.0)};
+  const DistanceResult r4 = classify(make_shape(k), make_shape(c5));
+  EXPECT_EQ(r4.verdict, Verdict::Overlapping) << r4.note;
+}
+
+TEST(EngineHand, TriangleThroughCylinder) {
+  const Cylinder c{{0, 0, 0}, {0, 0, 1}, 0.5};
+  const Triangle t{{-2, -2, 0.5}, {2, -2, 0.5}, {0, 2, 0.5}};
+  const DistanceResult r = classify(make_shape(t), make_shape(c));
+  EXPECT_EQ(r.verdict, Verdict::Overlapping) << r.note;
+  expect_consistent(make_shape(t), make_shape(c), r, "triangle through");
+  const PenetrationResult p = penetration(make_shape(t), make_shape(c));
+  // The cheapest way out is through a cap: depth 0.5 exactly.
+  EXPECT_TRUE(p.overlapping) << p.note;
+  EXPECT_LE(p.depth.lo, Q(1, 2));
+  EXPECT_GE(p.depth.hi, Q(1, 2));
+}
+
+TEST(EngineHand, CoincidentCentresOverlap) {
+  // Mirror-symmetric pair with the same centre: GJK's first direction is zero.
+  const Cylinder c{{0, 0, -1}, {0, 0, 1}, 1};
+  const Sphere s{{0, 0, 0}, 0.5};
+  const DistanceResult r = classify(make_shape(c), make_shape(s));
+  EXPECT_EQ(r.verdict, Verdict::Overlapping) << r.note;
+  const PenetrationResult p = penetration(make_shape(c), make_shape(s));
+  EXPECT_TRUE(p.overlapping) << p.note;
+  EXPECT_LE(p.depth.lo, Q(3, 2));
+  EXPECT_GE(p.depth.hi, Q(3, 2));
+}
+
+TEST(EngineHand, TinyGapsAreDecided) {
+  // The point (0.5, 2^-k, z) lies outside the radius-0.5 cylinder by
+  // sqrt(0.25 + 2^-2k) - 0.5 ~ 2^-2k: gaps of 2^-60, 2^-150 and 2^-190
+  // relative to scale 1, all above the 2^-200 limit, must be decided.
+  const Cylinder c{{0, 0, 0}, {0, 0, 1}, 0.5};
+  for (int k : {30, 75, 95}) {
+    const Vec3 x{0.5, std::ldexp(1.0, -k), 0.5};
+    const DistanceResult r = classify(make_point(x), make_shape(c));
+    EXPECT_EQ(r.verdict, Verdict::Separated) << "gap ~2^-" << 2 * k << " " << r.note;
+    expect_consistent(make_point(x), make_shape(c), r, "tiny gap");
+    // And a segment through that point, parallel to the side.
+    const Segment s{{0.5, std::ldexp(1.0, -k), 0.25}, {0.5, std::ldexp(1.0, -k), 0.75}};
+    const DistanceResult q = classify(make_shape(s), make_shape(c));
+    EXPECT_EQ(q.verdict, Verdict::Separated) << "segment gap ~2^-" << 2 * k << " " << q.note;
+  }
+  // A segment touching the side along a line: touching.
+  const Segment t{{0.5, -1, 0.5}, {0.5, 1, 0.5}};
+  const DistanceResult r = classify(make_shape(t), make_shape(c));
+  EXPECT_EQ(r.verdict, Verdict::Touching) << r.note;
+}
+
+TEST(EngineHand, ForgedCertificatesAreRejected) {
+  const Cylinder c{{0, 0, 0}, {0, 0, 1}, 1};
+  const ConvexShape A = make_shape(c);
+  const Sphere s{{2.5, 0, 0.5}, 1};  // gap 0.5 along x
+  const ConvexShape B = make_shape(s);
+  EXPECT_TRUE(check_separation(A, B, {QVec{1, 0, 0}}, true));
+  EXPECT_FALSE(check_separation(A, B, {QVec{1, 1, 0}}, false));  // tilted: cuts the sphere
+  EXPECT_FALSE(check_separation(A, B, {QVec{-1, 0, 0}}, false));
+  // Rim point (1, 0, 1) is in the cylinder, one ulp further out is not.
+  EXPECT_TRUE(contains(A, to_q(Vec3{1, 0, 1})));
+  EXPECT_FALSE(contains(A, to_q(Vec3{std::nextafter(1.0, 2.0), 0, 1})));
+  EXPECT_FALSE(contains(A, to_q(Vec3{1, 0, std::nextafter(1.0, 2.0)})));
+  // A "common point" one ulp outside the cylinder.
+  const Sphere t{{2, 0, 0.5}, 1};
+  EXPECT_TRUE(check_common_point(A, make_shape(t), to_q(Vec3{1, 0, 0.5})));
+  EXPECT_FALSE(check_common_point(A, make_shape(t), to_q(Vec3{std::nextafter(1.0, 2.0), 0, 0.5})));
+}
+
+// ---- every pair: certificates and metamorphic properties --------------------------------
+
+template <class SA, class SB>
+void pair_properties(const char* name, rc::Gen<SA> ga, rc::Gen<SB> gb) {
+  const bool ok = rc::check(std::string(name) + ": certified, symmetric, translation and scale invariant", [&] {
+    const SA a = *ga;
+    const SB b = *gb;
+    const ConvexShape A = make_shape(a), B = make_shape(b);
+    const DistanceResult r = classify(A, B);
+    RC_LOG() << show(a) << " " << show(b) << " " << to_string(r.verdict) << " " << r.note << "\n";
+    RC_ASSERT(r.verdict != Verdict::Undecided);
+    switch (r.verdict) {
+      case Verdict::Separated: RC_ASSERT(check_separation(A, B, *r.separation, true)); break;
+      case Verdict::Overlapping: RC_ASSERT(check_overlap(A, B, *r.overlap)); break;
+      case Verdict::Touching:
+        RC_ASSERT(check_separation(A, B, *r.separation, false));
+        RC_ASSERT(check_common_point(A, B, *r.common_point));
+        break;
+      default: break;
+    }
+    // Symmetry.
+    const DistanceResult s = classify(B, A);
+    RC_ASSERT(s.verdict == r.verdict);
+    RC_ASSERT(intervals_meet(s.distance, r.distance));
+    // Exact translation and power-of-two scaling keep the verdict.
+    const QVec t{Q(3, 8), Q(-5, 4), Q(7, 2)};
+    const DistanceResult u = classify(translated(A, t), translated(B, t));
+    RC_ASSERT(u.verdict == r.verdict);
+    RC_ASSERT(intervals_meet(u.distance, r.distance));
+  });
+  EXPECT_TRUE(ok);
+}
+
+TEST(EnginePairs, CylinderCylinder) { pair_properties("cylinder-cylinder", cylinder(), cylinder()); }
+TEST(EnginePairs, BoxCylinder) { pair_properties("box-cylinder", box(), cylinder()); }
+TEST(EnginePairs, TriangleCylinder) { pair_properties("triangle-cylinder", triangle(), cylinder()); }
+TEST(EnginePairs, CapsuleCylinder) { pair_properties("capsule-cylinder", capsule(), cylinder()); }
+TEST(EnginePairs, SegmentCylinder) { pair_properties("segment-cylinder", segment(), cylinder()); }
+TEST(EnginePairs, SphereBox) { pair_properties("sphere-box", sphere(), box()); }
+TEST(EnginePairs, TriangleBox) { pair_properties("triangle-box", triangle(), box()); }
+TEST(EnginePairs, CapsuleTriangle) { pair_properties("capsule-triangle", capsule(), triangle()); }
+
+}  // namespace
