@@ -359,6 +359,14 @@ bool try_touching(Ctx& c, const std::vector<QVec>& dirs_in, const std::vector<QV
   dirs.insert(dirs.end(), fb.begin(), fb.end());
   for (const QVec& a : fa)
     for (const QVec& b : fb) dirs.push_back(cross(a, b));
+  // The coordinate axes, and each feature direction crossed with them (a
+  // plane through a segment: A - B is a segment or a point when both shapes
+  // lie on one line).
+  const QVec axes[3] = {QVec{1, 0, 0}, QVec{0, 1, 0}, QVec{0, 0, 1}};
+  for (const QVec& e : axes) dirs.push_back(e);
+  for (const auto* f : {&fa, &fb})
+    for (const QVec& a : *f)
+      for (const QVec& e : axes) dirs.push_back(cross(a, e));
   // The line of centres, and its parts perpendicular to each feature direction.
   const QVec d = inner_point(c.B) - inner_point(c.A);
   dirs.push_back(d);

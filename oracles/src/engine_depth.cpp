@@ -1,6 +1,7 @@
 // geomcheck — certified convex engine: penetration depth (EPA with a
 // certified inner polytope) and time of impact (conservative advancement,
 // then separation/overlap certificates at both ends of the interval).
+#include <algorithm>
 #include <map>
 #include <sstream>
 
@@ -17,17 +18,24 @@ struct Face {
   int v[3];
   V3<T> n;  // unit outward normal
   T d;      // distance of the plane from the origin
+  double dd;         // d and n rounded, for the scans
+  V3<double> nd;
   bool alive = true;
 };
 
 template <class T>
 struct Epa {
   std::vector<Vert<T>> verts;
+  std::vector<V3<double>> wd;  // vertices rounded
   std::vector<Face<T>> faces;
   int iterations = 0;
   bool ok = true;
-  int start_of[4] = {0, 1, 2, 3};  // which certificate point each start vertex is
+  bool converged = false;
 };
+
+inline double to_d(double x) { return x; }
+template <class T> double to_d(const T& x) { return static_cast<double>(x); }
+template <class T> V3<double> to_d(const V3<T>& v) { return {to_d(v.x), to_d(v.y), to_d(v.z)}; }
 
 template <class T>
 bool make_face(Epa<T>& e, int a, int b, int c, Face<T>& f) {
@@ -37,87 +45,150 @@ bool make_face(Epa<T>& e, int a, int b, int c, Face<T>& f) {
   const T nn = dot(n, n);
   if (!(nn > 0)) return false;
   n = (T(1) / sqrt(nn)) * n;
-  f = Face<T>{{a, b, c}, n, dot(n, A), true};
+  const T d = dot(n, A);
+  f = Face<T>{{a, b, c}, n, d, to_d(d), to_d(n), true};
+  return true;
+}
+
+/// Adds vertex `v` to the polytope: the faces that see it, grown from
+/// `start` across edges (so that they form one patch), are replaced by a fan
+/// from their boundary to the new vertex.
+template <class T>
+bool insert_point(Epa<T>& e, std::map<std::pair<int, int>, int>& edge_face, const Vert<T>& v, int start,
+                  double margin) {
+  const int vi = static_cast<int>(e.verts.size());
+  e.verts.push_back(v);
+  const V3<double> vd = to_d(v.w);
+  e.wd.push_back(vd);
+  auto visible = [&](const Face<T>& f) {
+    const double sd = dot(f.nd, vd - e.wd[f.v[0]]);
+    if (sd > margin) return true;
+    if (sd < -margin) return false;
+    return dot(f.n, v.w - e.verts[f.v[0]].w) > 0;
+  };
+  std::vector<int> stack{start};
+  std::vector<std::pair<int, int>> horizon;
+  e.faces[start].alive = false;
+  std::vector<int> dead{start};
+  while (!stack.empty()) {
+    const int fi = stack.back();
+    stack.pop_back();
+    const Face<T> f = e.faces[fi];
+    for (int k = 0; k < 3; ++k) {
+      const int a = f.v[k], b = f.v[(k + 1) % 3];
+      auto it = edge_face.find({b, a});
+      if (it == edge_face.end()) return false;
+      const int g = it->second;
+      if (!e.faces[g].alive) continue;  // already removed
+      if (visible(e.faces[g])) {
+        e.faces[g].alive = false;
+        dead.push_back(g);
+        stack.push_back(g);
+      } else {
+        horizon.push_back({a, b});
+      }
+    }
+  }
+  // An edge between two removed faces is not on the horizon: drop the ones
+  // whose neighbour was removed after the edge was recorded.
+  std::vector<std::pair<int, int>> rim;
+  for (const auto& ed : horizon) {
+    auto it = edge_face.find({ed.second, ed.first});
+    if (it != edge_face.end() && e.faces[it->second].alive) rim.push_back(ed);
+  }
+  for (int fi : dead)
+    for (int k = 0; k < 3; ++k) edge_face.erase({e.faces[fi].v[k], e.faces[fi].v[(k + 1) % 3]});
+  if (rim.size() < 3) return false;
+  for (const auto& ed : rim) {
+    Face<T> f;
+    if (!make_face(e, ed.first, ed.second, vi, f)) return false;
+    const int id = static_cast<int>(e.faces.size());
+    e.faces.push_back(f);
+    edge_face[{ed.first, ed.second}] = id;
+    edge_face[{ed.second, vi}] = id;
+    edge_face[{vi, ed.first}] = id;
+  }
   return true;
 }
 
 /// EPA from a tetrahedron holding the origin; stops when the gap between the
-/// closest face and the support along its normal is below `tol`.
+/// closest face and the support along its normal is below `tol`. The scans
+/// run on rounded copies; only close calls are settled in T.
 template <class T>
-Epa<T> epa(const ShapeT<T>& A, const ShapeT<T>& B, const std::array<Vert<T>, 4>& tet, const T& tol, int max_iter) {
+Epa<T> epa(const ShapeT<T>& A, const ShapeT<T>& B, std::array<Vert<T>, 4> tet, const T& tol, double scale,
+           int max_iter, std::map<std::pair<int, int>, int>& edge_face) {
   Epa<T> e;
-  e.verts.assign(tet.begin(), tet.end());
-  // Orient the tetrahedron: (0,1,2) must face away from vertex 3.
   {
-    const V3<T> n = cross(e.verts[1].w - e.verts[0].w, e.verts[2].w - e.verts[0].w);
-    if (dot(n, e.verts[3].w - e.verts[0].w) > 0) {
-      std::swap(e.verts[1], e.verts[2]);
-      std::swap(e.start_of[1], e.start_of[2]);
-    }
+    const V3<T> n = cross(tet[1].w - tet[0].w, tet[2].w - tet[0].w);
+    if (dot(n, tet[3].w - tet[0].w) > 0) std::swap(tet[1], tet[2]);
   }
+  e.verts.assign(tet.begin(), tet.end());
+  for (const auto& v : e.verts) e.wd.push_back(to_d(v.w));
+  edge_face.clear();
   const int init[4][3] = {{0, 1, 2}, {0, 3, 1}, {1, 3, 2}, {0, 2, 3}};
   for (const auto& t : init) {
     Face<T> f;
     if (!make_face(e, t[0], t[1], t[2], f)) { e.ok = false; return e; }
+    const int id = static_cast<int>(e.faces.size());
     e.faces.push_back(f);
+    for (int k = 0; k < 3; ++k) edge_face[{t[k], t[(k + 1) % 3]}] = id;
   }
+  const double margin = scale * 1e-9;
   for (int it = 0; it < max_iter; ++it) {
     e.iterations = it + 1;
     int best = -1;
     for (std::size_t i = 0; i < e.faces.size(); ++i)
-      if (e.faces[i].alive && (best < 0 || e.faces[i].d < e.faces[best].d)) best = static_cast<int>(i);
+      if (e.faces[i].alive && (best < 0 || e.faces[i].dd < e.faces[best].dd)) best = static_cast<int>(i);
     if (best < 0) { e.ok = false; return e; }
+    // Settle ties in T among faces within rounding of the best.
+    for (std::size_t i = 0; i < e.faces.size(); ++i)
+      if (e.faces[i].alive && e.faces[i].dd <= e.faces[best].dd + 1e-12 * scale && e.faces[i].d < e.faces[best].d)
+        best = static_cast<int>(i);
     const Face<T> fb = e.faces[best];
     const Vert<T> v = support_vert(A, B, fb.n);
     const T dist = dot(v.w, fb.n);
-    if (dist - fb.d <= tol) return e;
-    const int vi = static_cast<int>(e.verts.size());
-    e.verts.push_back(v);
-    // Remove the faces that see the new point; keep the horizon.
-    std::map<std::pair<int, int>, int> edges;
-    for (auto& f : e.faces) {
-      if (!f.alive) continue;
-      if (dot(f.n, v.w - e.verts[f.v[0]].w) > 0) {
-        f.alive = false;
-        for (int k = 0; k < 3; ++k) {
-          const int a = f.v[k], b = f.v[(k + 1) % 3];
-          auto rev = edges.find({b, a});
-          if (rev != edges.end()) edges.erase(rev);
-          else edges[{a, b}] = 1;
-        }
-      }
-    }
-    if (edges.empty()) { e.ok = false; return e; }
-    for (const auto& [ed, one] : edges) {
-      Face<T> f;
-      if (!make_face(e, ed.first, ed.second, vi, f)) { e.ok = false; return e; }
-      e.faces.push_back(f);
-    }
-    // Compact occasionally.
-    if (e.faces.size() > 4 * e.verts.size() + 64) {
-      std::vector<Face<T>> keep;
-      for (const auto& f : e.faces)
-        if (f.alive) keep.push_back(f);
-      e.faces.swap(keep);
-    }
+    if (dist - fb.d <= tol) { e.converged = true; return e; }
+    if (!insert_point(e, edge_face, v, best, margin)) { e.ok = false; return e; }
   }
   return e;
 }
 
+using Z = mp::mpz_int;
+struct ZVec {
+  Z x, y, z;
+};
+Z zdot(const ZVec& a, const ZVec& b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
+ZVec zcross(const ZVec& a, const ZVec& b) {
+  return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
+}
+ZVec zscale(const Z& s, const ZVec& a) { return {s * a.x, s * a.y, s * a.z}; }
+ZVec zadd(const ZVec& a, const ZVec& b) { return {a.x + b.x, a.y + b.y, a.z + b.z}; }
+
+/// A rational point as integer numerators over one positive denominator.
+struct ZPoint {
+  ZVec n;
+  Z den;
+};
+ZPoint to_z(const QVec& p) {
+  Z den = mp::denominator(p.x);
+  den = mp::lcm(den, Z(mp::denominator(p.y)));
+  den = mp::lcm(den, Z(mp::denominator(p.z)));
+  auto num = [&](const Q& c) { return Z(mp::numerator(c) * (den / mp::denominator(c))); };
+  return {{num(p.x), num(p.y), num(p.z)}, den};
+}
+
 /// Certified depth interval from an EPA polytope.
-/// Lower bound: the faces form a closed surface, every face has the origin
-/// strictly on its inner side (exact sign), so every ray from the origin
-/// meets the surface, the surface lies in A - B (its vertices are points
-/// a_i - b_i built inside), and the depth is at least the smallest face
-/// distance. Upper bound: the support of A - B along the closest face normal.
+/// Lower bound: the faces form a closed, consistently oriented surface and
+/// every face has the origin strictly on its inner side (exact signs), so
+/// every ray from the origin meets the surface; the surface lies in A - B
+/// (its vertices are points a_i - b_i built inside A and B), hence so does
+/// the union of the segments from the origin to it, and the depth is at
+/// least the smallest face distance. Upper bound: the support of A - B along
+/// the closest face normal. All in integers: a point is N / den, a face's
+/// distance is det(N_a, N_b, N_c) / |M| with
+/// M = den_a (N_b x N_c) + den_c (N_a x N_b) + den_b (N_c x N_a).
 template <class T>
-bool certify_epa(const ConvexShape& A, const ConvexShape& B, const Epa<T>& e, const OverlapCertificate& start,
-                 PenetrationResult& out) {
-  // The first four vertices are the overlap certificate's exact points.
-  std::vector<QVec> W(e.verts.size());
-  for (std::size_t i = 0; i < e.verts.size(); ++i)
-    W[i] = i < 4 ? start.a[e.start_of[i]] - start.b[e.start_of[i]]
-                 : sup_point_q(A, e.verts[i].a) - sup_point_q(B, e.verts[i].b);
+bool certify_epa(const ConvexShape& A, const ConvexShape& B, const Epa<T>& e, PenetrationResult& out) {
   std::vector<const Face<T>*> faces;
   std::map<std::pair<int, int>, int> edge_count;
   for (const auto& f : e.faces) {
@@ -125,33 +196,42 @@ bool certify_epa(const ConvexShape& A, const ConvexShape& B, const Epa<T>& e, co
     faces.push_back(&f);
     for (int k = 0; k < 3; ++k) ++edge_count[{f.v[k], f.v[(k + 1) % 3]}];
   }
-  // Closed, consistently oriented surface: each directed edge once, and its
-  // reverse once.
   for (const auto& [ed, n] : edge_count) {
-    if (n != 1) return false;
+    if (n != 1) { out.note = "edge used twice"; return false; }
     auto rev = edge_count.find({ed.second, ed.first});
-    if (rev == edge_count.end() || rev->second != 1) return false;
+    if (rev == edge_count.end() || rev->second != 1) { out.note = "open surface"; return false; }
   }
-  // Closest face first: its exact lower bound is the candidate.
+  std::vector<ZPoint> W(e.verts.size());
+  std::vector<bool> used(e.verts.size(), false);
+  for (const Face<T>* f : faces)
+    for (int k = 0; k < 3; ++k) used[f->v[k]] = true;
+  for (std::size_t i = 0; i < e.verts.size(); ++i)
+    if (used[i]) W[i] = to_z(sup_point_q(A, e.verts[i].a) - sup_point_q(B, e.verts[i].b));
+  // Closest face first: its exact distance (bracketed) is the candidate
+  // bound; every other face is checked against it with integers only.
   std::sort(faces.begin(), faces.end(), [](const Face<T>* a, const Face<T>* b) { return a->d < b->d; });
-  Q lo;
+  Z lo_num, lo_den;  // lo = lo_num / lo_den, lo_den > 0
   bool have_lo = false;
   for (const Face<T>* f : faces) {
-    const QVec &a = W[f->v[0]], &b = W[f->v[1]], &c = W[f->v[2]];
-    const Q vol = dot(a, cross(b, c));  // origin strictly inside: > 0
-    if (!(vol > 0)) return false;
-    const QVec n = cross(b - a, c - a);
-    const Q nn = dot(n, n);
-    // dist = vol / |n| >= lo  <=>  vol^2 >= lo^2 |n|^2 (vol > 0).
-    if (have_lo && vol * vol >= lo * lo * nn) continue;
-    const Q d = vol / sqrt_interval(nn).hi;
-    if (!have_lo || d < lo) lo = d;
+    const ZPoint &a = W[f->v[0]], &b = W[f->v[1]], &c = W[f->v[2]];
+    const Z det = zdot(a.n, zcross(b.n, c.n));
+    if (det <= 0) { out.note = "face through or behind the origin"; return false; }
+    const ZVec M = zadd(zadd(zscale(a.den, zcross(b.n, c.n)), zscale(c.den, zcross(a.n, b.n))), zscale(b.den, zcross(c.n, a.n)));
+    const Z mm = zdot(M, M);
+    // dist >= lo  <=>  det * lo_den >= lo_num * |M|  <=>  (det lo_den)^2 >= lo_num^2 |M|^2.
+    if (have_lo) {
+      const Z l = det * lo_den;
+      if (l * l >= lo_num * lo_num * mm) continue;
+    }
+    const Q d = Q(det) / sqrt_interval(Q(mm)).hi;
+    lo_num = mp::numerator(d);
+    lo_den = mp::denominator(d);
     have_lo = true;
   }
   if (!have_lo) return false;
-  // Upper bound along the closest face normal (rationalised).
   const QVec n = exact_q(faces.front()->n);
   const QInterval h = (support_value(A, n) + support_value(B, Q(-1) * n)) / sqrt_interval(dot(n, n));
+  const Q lo = Q(lo_num) / Q(lo_den);
   out.overlapping = lo > 0;
   out.depth = {lo, h.hi};
   out.direction = n;
@@ -165,31 +245,65 @@ PenetrationResult penetration(const ConvexShape& a, const ConvexShape& b, double
   PenetrationResult out;
   std::ostringstream note;
   const Q scale = pair_scale(a, b);
-  EngineOptions opt;
-  opt.filter = false;
-  const DistanceResult c = classify(a, b, opt);
-  if (c.verdict != Verdict::Overlapping || !c.overlap) {
-    out.note = std::string("not certified overlapping: ") + to_string(c.verdict);
+  const ShapeT<HP128> A = convert<HP128>(a), B = convert<HP128>(b);
+  const HP128 sc = from_q<HP128>(scale);
+  // A tetrahedron around the origin, searched in 128 digits (GJK, else the
+  // portal method, else the tetrahedral probes).
+  std::array<Vert<HP128>, 4> tet;
+  bool have = false;
+  const HP128 contact = ldexp(sc, -120);
+  const GjkOut<HP128> g = gjk(A, B, contact * contact, 400);
+  if (g.status == GjkStatus::Inside) {
+    tet = {g.simplex.v[0], g.simplex.v[1], g.simplex.v[2], g.simplex.v[3]};
+    have = true;
+  } else if (g.status == GjkStatus::Contact) {
+    const MprOut<HP128> m = mpr(A, B, 400);
+    std::vector<Vert<HP128>> cand(g.simplex.v.begin(), g.simplex.v.end());
+    if (m.status == MprStatus::Hit) cand.insert(cand.end(), m.tet.begin(), m.tet.end());
+    have = enclosing_tet(A, B, cand, tet);
+  }
+  if (!have) {
+    out.note = "no tetrahedron around the origin (not overlapping, or touching)";
     return out;
   }
-  const ShapeT<HP128> A = convert<HP128>(a), B = convert<HP128>(b);
-  // The starting tetrahedron: the certificate's points (exact, inside).
-  std::array<Vert<HP128>, 4> tet;
-  for (int i = 0; i < 4; ++i) {
-    Sup<HP128> sa, sb;
-    sa.i = sb.i = -2;  // a fixed point, not a support point
-    sa.p = from_q<HP128>(c.overlap->a[i]);
-    sb.p = from_q<HP128>(c.overlap->b[i]);
-    tet[i] = make_vert(sa, sb);
-  }
-  const HP128 tol = from_q<HP128>(scale) * HP128(rel_width) / 4;
-  const Epa<HP128> e = epa(A, B, tet, tol, 400);
+  const HP128 tol = sc * HP128(rel_width) / 4;
+  std::map<std::pair<int, int>, int> edge_face;
+  Epa<HP128> e = epa(A, B, tet, tol, static_cast<double>(sc), 200, edge_face);
   note << "epa128:" << e.iterations;
-  if (!e.ok || !certify_epa(a, b, e, *c.overlap, out)) {
-    // Fall back to the certificate's tetrahedron bounds.
-    out.overlapping = true;
-    out.depth = {Q(-c.distance.hi), Q(-c.distance.lo)};
-    note << " (polytope not certified; tetrahedron bounds)";
+  bool done = false;
+  if (e.ok && !e.converged) {
+    // Not converged in 128 digits: near a smooth optimum the faces get
+    // small enough that their normals lose the digits a width of 1e-30 needs.
+    // EPA again in 384 digits.
+    const ShapeT<HP384> A3 = convert<HP384>(a), B3 = convert<HP384>(b);
+    std::array<Vert<HP384>, 4> tet3;
+    bool have3 = false;
+    const HP384 sc3 = from_q<HP384>(scale);
+    const HP384 contact3 = ldexp(sc3, -370);
+    const GjkOut<HP384> g3 = gjk(A3, B3, contact3 * contact3, 800);
+    if (g3.status == GjkStatus::Inside) {
+      tet3 = {g3.simplex.v[0], g3.simplex.v[1], g3.simplex.v[2], g3.simplex.v[3]};
+      have3 = true;
+    } else {
+      std::vector<Vert<HP384>> cand(g3.simplex.v.begin(), g3.simplex.v.end());
+      have3 = enclosing_tet(A3, B3, cand, tet3);
+    }
+    if (have3) {
+      std::map<std::pair<int, int>, int> ef3;
+      Epa<HP384> e3 = epa(A3, B3, tet3, sc3 * HP384(rel_width) / 4, static_cast<double>(sc), 200, ef3);
+      note << " epa384:" << e3.iterations;
+      PenetrationResult r3;
+      if (e3.ok && certify_epa(a, b, e3, r3)) {
+        out = r3;
+        done = true;
+      } else {
+        note << " (384: " << (e3.ok ? r3.note : std::string("search failed")) << ")";
+      }
+    }
+  }
+  if (!done && (!e.ok || !certify_epa(a, b, e, out))) {
+    note << " polytope not certified: " << (e.ok ? out.note : std::string("search failed"));
+    out = PenetrationResult{};
   }
   out.note = note.str();
   return out;

@@ -451,7 +451,9 @@ bool enclosing_tet(const ShapeT<T>& A, const ShapeT<T>& B, std::vector<Vert<T>> 
         for (int l = k + 1; l < n; ++l) {
           const V3<T>&a = cand[i].w, &b = cand[j].w, &c = cand[k].w, &d = cand[l].w;
           const T v = vol(a, b, c, d);
-          if (v == 0) continue;
+          // Flat (or repeated-vertex) tetrahedra: rounding-level volume.
+          const T p2 = dot(b - a, b - a) * dot(c - a, c - a) * dot(d - a, d - a);
+          if (!(v * v > ldexp(T(1), -2 * (bits_of<T>() - 16)) * p2)) continue;
           const T l0 = vol(o, b, c, d) / v, l1 = vol(a, o, c, d) / v, l2 = vol(a, b, o, d) / v,
                   l3 = vol(a, b, c, o) / v;
           const T m = std::min({l0, l1, l2, l3});

@@ -1229,11 +1229,11 @@ TEST_F(EngineCgalNear, BoxesFaceToFace) {
 
 // =====================================================================================
 // hand cases: exact contacts along a line (the Minkowski difference is a
-// segment or a point). The contract allows Undecided there (|distance| = 0 <
-// 2^-200 * scale), but a touching certificate exists and is accepted by the
-// engine's own checks; the engine does not build it (no direction
-// perpendicular to the common line is tried). Found by the constructions
-// above; kept with their exact inputs.
+// segment or a point). The contract would allow Undecided there (|distance|
+// = 0 < 2^-200 * scale), but a touching certificate exists; the engine left
+// these Undecided until it tried planes through the common line (feature
+// directions crossed with the axes). Kept with their exact inputs as
+// regressions: Touching is now required.
 // =====================================================================================
 
 namespace {
@@ -1267,12 +1267,9 @@ void expect_line_contact(const Shape& sa, const Shape& sb, const char* name) {
     opt.filter = filter;
     const DistanceResult r = classify(A, B, opt);
     SCOPED_TRACE(describe(r));
-    EXPECT_TRUE(r.verdict == Verdict::Touching || r.verdict == Verdict::Undecided);
+    EXPECT_EQ(r.verdict, Verdict::Touching) << name << ": a touching certificate n = " << qs(*n) << ", x = " << qs(*x)
+                                            << " passes check_separation(strict = false) and check_common_point";
     EXPECT_TRUE(r.distance.lo <= 0 && r.distance.hi >= 0);
-    if (r.verdict == Verdict::Undecided && filter)
-      std::printf("[%s] engine: Undecided at an exact contact; a touching certificate n = %s, x = %s passes "
-                  "check_separation(strict = false) and check_common_point\n",
-                  name, qs(*n).c_str(), qs(*x).c_str());
   }
 }
 

@@ -152,7 +152,8 @@ PenetrationResult penetration(const ConvexShape& a, const ConvexShape& b, double
 
 struct ImpactResult {
   enum class Kind { NoHit, Hit, StartsInside, Undecided } kind = Kind::Undecided;
-  QInterval t;   // Hit: A swept over [0, t.lo] separated, A + t.hi*delta overlapping
+  QInterval t;   // Hit: A swept over [0, t.lo] certified separated from B,
+                 // A + t.hi*delta certified to meet B (overlapping or touching)
   std::string note;
 };
 /// First time t in [0, 1] at which A + t*delta meets B, certified.
