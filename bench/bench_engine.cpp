@@ -29,9 +29,10 @@
 //           be separated); the signed distance is 1-Lipschitz in B's
 //           translation. (Translating B by the certified distance along the
 //           certificates' direction, as first planned, does not work here:
-//           classify's distance enclosure is often as loose as [0.09, 1.4]
-//           since EngineOptions::rel_width is not used by classify, and
-//           penetration on a random overlapping pose costs up to seconds.)
+//           classify's distance enclosure for a verdict is often as loose
+//           as [0.09, 1.4] (GJK stops at the first separating plane unless
+//           EngineOptions::rel_width asks for more), and a tight enclosure
+//           costs a penetration or a converged 128-digit GJK per case.)
 //   depth   kDepthBatch random poses as above (256; GEOMCHECK_BENCH_DEPTH_CASES
 //           overrides), all certified overlapping. penetration(.., 1e-30)
 //           took ~20 ms per call, but tens of seconds on some inputs in

@@ -226,6 +226,7 @@ struct Ctx {
   Q scale;
   bool trust;  // a swept hull: members built inside by construction
   bool early_out = true;  // stop GJK at the first separating plane
+  bool certificates = true;
   std::ostringstream note;
 };
 
@@ -513,12 +514,14 @@ bool filter_round(Ctx& c, DistanceResult& r) {
     }
     if (!std::isfinite(hi)) hi = up(up(8 * sc));
     // The rational points the interval proof was about.
-    OverlapCertificate cert;
-    for (int i = 0; i < 4; ++i) {
-      cert.a[i] = filter_point_q(c.A, tet[i].a);
-      cert.b[i] = filter_point_q(c.B, tet[i].b);
+    if (c.certificates) {
+      OverlapCertificate cert;
+      for (int i = 0; i < 4; ++i) {
+        cert.a[i] = filter_point_q(c.A, tet[i].a);
+        cert.b[i] = filter_point_q(c.B, tet[i].b);
+      }
+      r.overlap = cert;
     }
-    r.overlap = cert;
     r.verdict = Verdict::Overlapping;
     r.distance = {q_of(-hi), q_of(-face_lo)};
     r.bits = 53;
@@ -592,7 +595,8 @@ bool filter_round(Ctx& c, DistanceResult& r) {
 namespace {
 
 DistanceResult decide(const ConvexShape& a, const ConvexShape& b, const EngineOptions& opt, bool early_out) {
-  Ctx c{a, b, Q(0), a.kind == ConvexShape::Kind::Hull || b.kind == ConvexShape::Kind::Hull, early_out, {}};
+  Ctx c{a, b, Q(0), a.kind == ConvexShape::Kind::Hull || b.kind == ConvexShape::Kind::Hull, early_out,
+        opt.certificates, {}};
   DistanceResult r;
   if (opt.filter && filter_round(c, r)) {
     r.note = "filter";

@@ -311,6 +311,7 @@ GjkOut<T> gjk(const ShapeT<T>& A, const ShapeT<T>& B, const T& contact2, int max
       const T vw = dot(v, x.w);
       if (vw > 0 && vw * vw > ldexp(T(1), -2 * (bits_of<T>() - 12)) * vv * dot(x.w, x.w)) {
         out.status = GjkStatus::Separated;
+        s.closest = v;  // the separating direction is -v
         return out;
       }
     }

@@ -5,6 +5,7 @@
 // are never taken; a term r*sqrt(u) is compared by squaring with its sign
 // handled first (sign_sqrt below).
 #include <cmath>
+#include <initializer_list>
 #include <stdexcept>
 
 #include "engine_internal.hpp"
@@ -118,6 +119,16 @@ void fill_doubles(ConvexShape& s) {
   bracket(s.axis.z, s.axis_d.z, ahi);
 }
 
+/// The enclosures when the shape was built from doubles: exact, no rational
+/// rounding needed.
+void fill_exact(ConvexShape& s, std::initializer_list<Vec3> pts, double radius, Vec3 axis = {}) {
+  s.lo.assign(pts.begin(), pts.end());
+  s.hi = s.lo;
+  s.radius_hi = radius;
+  s.axis_d = axis;
+  s.doubles_exact = true;
+}
+
 }  // namespace
 
 void bracket(const Q& q, double& lo, double& hi) {
@@ -166,7 +177,7 @@ ConvexShape make_point(Vec3 x) {
   ConvexShape s;
   s.kind = ConvexShape::Kind::Point;
   s.points = {to_q(x)};
-  fill_doubles(s);
+  fill_exact(s, {x}, 0);
   return s;
 }
 
@@ -174,7 +185,7 @@ ConvexShape make_shape(const Segment& g) {
   ConvexShape s;
   s.kind = ConvexShape::Kind::Segment;
   s.points = {to_q(g.a), to_q(g.b)};
-  fill_doubles(s);
+  fill_exact(s, {g.a, g.b}, 0);
   return s;
 }
 
@@ -184,7 +195,7 @@ ConvexShape make_shape(const Sphere& g) {
   s.round = ConvexShape::Round::Ball;
   s.points = {to_q(g.c)};
   s.radius = to_q(g.r);
-  fill_doubles(s);
+  fill_exact(s, {g.c}, g.r);
   return s;
 }
 
@@ -194,7 +205,7 @@ ConvexShape make_shape(const Capsule& g) {
   s.round = ConvexShape::Round::Ball;
   s.points = {to_q(g.p), to_q(g.q)};
   s.radius = to_q(g.r);
-  fill_doubles(s);
+  fill_exact(s, {g.p, g.q}, g.r);
   return s;
 }
 
@@ -206,7 +217,7 @@ ConvexShape make_shape(const Cylinder& g) {
   s.radius = to_q(g.r);
   s.axis = s.points[1] - s.points[0];
   if (is_zero(s.axis)) throw std::domain_error("cylinder with p == q");
-  fill_doubles(s);
+  fill_exact(s, {g.p, g.q}, g.r, g.q - g.p);  // axis_d only steers the search
   return s;
 }
 
@@ -225,7 +236,7 @@ ConvexShape make_shape(const Triangle& g) {
   ConvexShape s;
   s.kind = ConvexShape::Kind::Triangle;
   s.points = {to_q(g.a), to_q(g.b), to_q(g.c)};
-  fill_doubles(s);
+  fill_exact(s, {g.a, g.b, g.c}, 0);
   return s;
 }
 

@@ -120,6 +120,10 @@ Q pair_scale(const ConvexShape& a, const ConvexShape& b);
 struct EngineOptions {
   bool filter = true;        // run the double filter first
   bool exact_small = true;   // re-check the double candidates in rationals
+  /// Also build the rational certificate objects when the interval filter
+  /// decided (the verdict is certified either way; for curved shapes the
+  /// objects cost more than the verdict).
+  bool certificates = true;
   /// Distance interval wanted, relative to scale (0: the verdict suffices).
   double rel_width = 0;
 };
