@@ -148,7 +148,7 @@ bool sup_box(const ShapeI& s, const Sup<double>& sp, IV3& out) {
   }
   out = s.pts[sp.i];
   if (s.round == ConvexShape::Round::None || (sp.w.x == 0 && sp.w.y == 0 && sp.w.z == 0)) return true;
-  const double f = 1 - 0x1p-30;
+  const double f = 1 - 0x1p-48;
   IV3 w = iv3(Vec3{sp.w.x * f, sp.w.y * f, sp.w.z * f});  // exact doubles
   if (!(dot(w, w).hi <= 1)) return false;
   if (s.round == ConvexShape::Round::Disc) {
@@ -170,7 +170,7 @@ QVec filter_point_q(const ConvexShape& s, const Sup<double>& sp) {
   }
   QVec base = s.points[sp.i];
   if (s.radius == 0 || s.round == ConvexShape::Round::None || (sp.w.x == 0 && sp.w.y == 0 && sp.w.z == 0)) return base;
-  const double f = 1 - 0x1p-30;
+  const double f = 1 - 0x1p-48;
   QVec w = to_q(Vec3{sp.w.x * f, sp.w.y * f, sp.w.z * f});
   if (s.round == ConvexShape::Round::Disc) w = w - (dot(w, s.axis) / dot(s.axis, s.axis)) * s.axis;
   return base + s.radius * w;
@@ -530,7 +530,8 @@ bool filter_round(Ctx& c, DistanceResult& r) {
   };
   if (g.status == GjkStatus::Inside) {
     if (tet_cert({s.v[0], s.v[1], s.v[2], s.v[3]})) return true;
-  } else if (g.status == GjkStatus::Contact) {
+  }
+  if (g.status != GjkStatus::Separated) {
     // Origin on a face of the simplex (e.g. a mirror-symmetric pair keeps
     // GJK in a plane): the portal method leaves the plane.
     const MprOut<double> m = mpr(A, B, 96);
@@ -554,7 +555,8 @@ bool filter_round(Ctx& c, DistanceResult& r) {
         return true;
       }
     }
-  } else {
+  }
+  if (g.status == GjkStatus::Separated || g.status == GjkStatus::MaxIter) {
     const Vec3 nd{-s.closest.x, -s.closest.y, -s.closest.z};
     const IV3 n = iv3(nd), m = iv3(Vec3{s.closest.x, s.closest.y, s.closest.z});
     const Iv h = support_iv(AI, n) + support_iv(BI, m);

@@ -290,7 +290,7 @@ PenetrationResult penetration(const ConvexShape& a, const ConvexShape& b, double
     }
     if (have3) {
       std::map<std::pair<int, int>, int> ef3;
-      Epa<HP384> e3 = epa(A3, B3, tet3, sc3 * HP384(rel_width) / 4, static_cast<double>(sc), 200, ef3);
+      Epa<HP384> e3 = epa(A3, B3, tet3, sc3 * HP384(rel_width) / 4, static_cast<double>(sc), 600, ef3);
       note << " epa384:" << e3.iterations;
       PenetrationResult r3;
       if (e3.ok && certify_epa(a, b, e3, r3)) {
