@@ -189,6 +189,44 @@ TEST(EngineClosedForm, TimeOfImpactMatchesSegmentCast) {
   EXPECT_TRUE(ok);
 }
 
+TEST(EngineClosedForm, SphereSweepMatchesQuadratic) {
+  // A sphere moving against a sphere: first contact at the smaller root of
+  // |d + t delta|^2 = (r1 + r2)^2, d = c1 - c2; exact up to one square root.
+  const bool ok = rc::check("sphere sweep meets the closed form", [] {
+    const Sphere a = *sphere();
+    const Sphere b = *sphere();
+    const Vec3 end = *vec();
+    const QVec delta = to_q(end) - to_q(a.c);
+    const QVec d = to_q(a.c) - to_q(b.c);
+    const Q R = to_q(a.r) + to_q(b.r);
+    const Q qa = dot(delta, delta), qb = dot(d, delta), qc = dot(d, d) - R * R;
+    const ImpactResult r = time_of_impact(make_shape(a), delta, make_shape(b));
+    RC_LOG() << show(a) << " -> " << hex(end) << " against " << show(b) << ": " << to_string(r.kind) << " "
+             << r.note << "\n";
+    RC_TAG(std::string(to_string(r.kind)));
+    if (qc <= 0) {
+      RC_ASSERT(r.kind == ImpactResult::Kind::StartsInside);
+      return;
+    }
+    const Q disc = qb * qb - qa * qc;
+    RC_PRE(disc != 0);  // grazing: touching at one instant only
+    const bool hit = qa > 0 && qb < 0 && disc > 0 && qa + 2 * qb + qc <= 0 ? true
+                     : qa > 0 && qb < 0 && disc > 0 && (-qb) <= qa ? true
+                                                                   : false;
+    if (!hit) {
+      RC_ASSERT(r.kind == ImpactResult::Kind::NoHit);
+      return;
+    }
+    // t* = qc / (-qb + sqrt(disc)) (stable form), in [0, 1].
+    const QInterval t = point(qc) / (point(Q(-qb)) + sqrt_interval(disc));
+    RC_PRE(t.hi <= 1);
+    RC_ASSERT(r.kind == ImpactResult::Kind::Hit);
+    RC_ASSERT(intervals_meet(r.t, t));
+    RC_ASSERT(r.t.hi - r.t.lo <= Q(1, 1 << 30));
+  });
+  EXPECT_TRUE(ok);
+}
+
 // ---- exact constructions -----------------------------------------------------------------
 
 TEST(EngineHand, SphereOnCapIsTouching) {
