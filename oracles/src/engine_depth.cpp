@@ -16,9 +16,11 @@ namespace {
 template <class T>
 struct Face {
   int v[3];
-  V3<T> n;  // unit outward normal
-  T d;      // distance of the plane from the origin
-  double dd;         // d and n rounded, for the scans
+  V3<T> n;  // outward normal (b - a) x (c - a), not normalised: no square root
+  T nn;     // |n|^2
+  T num;    // n . a = distance * |n|
+  T d2;     // signed squared distance of the plane, num |num| / nn (for ordering)
+  double dd;  // the distance and the unit normal, rounded, for the scans
   V3<double> nd;
   bool alive = true;
 };
@@ -39,14 +41,14 @@ template <class T> V3<double> to_d(const V3<T>& v) { return {to_d(v.x), to_d(v.y
 
 template <class T>
 bool make_face(Epa<T>& e, int a, int b, int c, Face<T>& f) {
-  using std::sqrt;
   const V3<T>& A = e.verts[a].w;
-  V3<T> n = cross(e.verts[b].w - A, e.verts[c].w - A);
+  const V3<T> n = cross(e.verts[b].w - A, e.verts[c].w - A);
   const T nn = dot(n, n);
   if (!(nn > 0)) return false;
-  n = (T(1) / sqrt(nn)) * n;
-  const T d = dot(n, A);
-  f = Face<T>{{a, b, c}, n, d, to_d(d), to_d(n), true};
+  const T num = dot(n, A);
+  const double inv = 1 / std::sqrt(to_d(nn));
+  const V3<double> nd = to_d(n);
+  f = Face<T>{{a, b, c}, n, nn, num, num * abs(num) / nn, to_d(num) * inv, {nd.x * inv, nd.y * inv, nd.z * inv}, true};
   return true;
 }
 
@@ -142,12 +144,13 @@ Epa<T> epa(const ShapeT<T>& A, const ShapeT<T>& B, std::array<Vert<T>, 4> tet, c
     if (best < 0) { e.ok = false; return e; }
     // Settle ties in T among faces within rounding of the best.
     for (std::size_t i = 0; i < e.faces.size(); ++i)
-      if (e.faces[i].alive && e.faces[i].dd <= e.faces[best].dd + 1e-12 * scale && e.faces[i].d < e.faces[best].d)
+      if (e.faces[i].alive && e.faces[i].dd <= e.faces[best].dd + 1e-12 * scale && e.faces[i].d2 < e.faces[best].d2)
         best = static_cast<int>(i);
     const Face<T> fb = e.faces[best];
     const Vert<T> v = support_vert(A, B, fb.n);
-    const T dist = dot(v.w, fb.n);
-    if (dist - fb.d <= tol) { e.converged = true; return e; }
+    // Converged when (support - plane distance) <= tol, i.e. gap <= tol |n|.
+    const T gap = dot(v.w, fb.n) - fb.num;
+    if (gap <= 0 || gap * gap <= tol * tol * fb.nn) { e.converged = true; return e; }
     if (!insert_point(e, edge_face, v, best, margin)) { e.ok = false; return e; }
   }
   return e;
@@ -209,7 +212,7 @@ bool certify_epa(const ConvexShape& A, const ConvexShape& B, const Epa<T>& e, Pe
     if (used[i]) W[i] = to_z(sup_point_q(A, e.verts[i].a) - sup_point_q(B, e.verts[i].b));
   // Closest face first: its exact distance (bracketed) is the candidate
   // bound; every other face is checked against it with integers only.
-  std::sort(faces.begin(), faces.end(), [](const Face<T>* a, const Face<T>* b) { return a->d < b->d; });
+  std::sort(faces.begin(), faces.end(), [](const Face<T>* a, const Face<T>* b) { return a->d2 < b->d2; });
   Z lo_num, lo_den;  // lo = lo_num / lo_den, lo_den > 0
   bool have_lo = false;
   for (const Face<T>* f : faces) {
