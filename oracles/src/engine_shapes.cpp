@@ -228,7 +228,42 @@ ConvexShape make_shape(const Obb& g) {
   const double e[3] = {g.e.x, g.e.y, g.e.z};
   for (int k = 0; k < 3; ++k) s.spans[k] = to_q(e[k]) * to_q(g.axes[k]);
   for (int i = 0; i < 8; ++i) s.points.push_back(box_vertex(s.centre, s.spans, i));
-  fill_doubles(s);
+  // Enclosures of the vertices by interval arithmetic on the doubles (each
+  // product and sum widened outwards by one ulp): no rational rounding.
+  auto dn = [](double x) { return std::nextafter(x, -INFINITY); };
+  auto up = [](double x) { return std::nextafter(x, INFINITY); };
+  const double c[3] = {g.c.x, g.c.y, g.c.z};
+  double slo[3][3], shi[3][3];  // span k, coordinate j
+  for (int k = 0; k < 3; ++k) {
+    const double a[3] = {g.axes[k].x, g.axes[k].y, g.axes[k].z};
+    for (int j = 0; j < 3; ++j) {
+      const double p = e[k] * a[j];
+      slo[k][j] = dn(p);
+      shi[k][j] = up(p);
+    }
+  }
+  bool finite = true;
+  for (int i = 0; i < 8; ++i) {
+    double lo[3], hi[3];
+    for (int j = 0; j < 3; ++j) {
+      lo[j] = hi[j] = c[j];
+      for (int k = 0; k < 3; ++k) {
+        if (i >> k & 1) {
+          lo[j] = dn(lo[j] + slo[k][j]);
+          hi[j] = up(hi[j] + shi[k][j]);
+        } else {
+          lo[j] = dn(lo[j] - shi[k][j]);
+          hi[j] = up(hi[j] - slo[k][j]);
+        }
+      }
+      finite = finite && std::isfinite(lo[j]) && std::isfinite(hi[j]);
+    }
+    s.lo.push_back({lo[0], lo[1], lo[2]});
+    s.hi.push_back({hi[0], hi[1], hi[2]});
+  }
+  s.radius_hi = 0;
+  s.doubles_exact = false;
+  if (!finite) fill_doubles(s);  // overflow: the rational brackets
   return s;
 }
 
