@@ -48,11 +48,10 @@
 // is part of every query), and penetration(make_shape(a), make_shape(b),
 // 1e-30).
 //
-// Peer: the FCL adapter (oracles/fcl) answers cylinder/sphere only. It has no
-// box or triangle conversion, so FCL is measured for cylinder-cylinder only:
-// both cylinders converted with the adapter's FclCylinder (fcl_convert.hpp),
-// then fcl::collide / fcl::distance called directly, GST_LIBCCD as
-// everywhere in the adapter. The conversion is inside the timed loop, as
+// Peer: the FCL adapter (oracles/fcl) has no box or triangle conversion, so
+// FCL is measured for cylinder-cylinder only, through the adapter's
+// converted-pair calls (FclCylinderCylinder and fcl_*_prepared in
+// fcl_convert.hpp, GST_LIBCCD). The conversion is inside the timed loop, as
 // make_shape is for the engine. Note (fcl_adapter.hpp): for cylinder/cylinder
 // FCL runs libccd's GJK/MPR (no closed form), whose MPR has no iteration cap
 // and is known to hang on elongated or far-from-origin scenes; the scenes
@@ -449,35 +448,18 @@ Set<A> make_depth(Rng& rng, std::size_t n) {
 
 // ---- FCL (cylinder-cylinder) -------------------------------------------------------
 
-struct FclPair {
-  oracles::FclCylinder a, b;
-  explicit FclPair(const Pair<Cylinder>& p) : a(p.a), b(p.b) {}
-};
+using FclPair = oracles::FclCylinderCylinder;
+FclPair fcl_pair(const Pair<Cylinder>& p) { return FclPair(p.a, p.b); }
 
-bool fcl_collide(const FclPair& p) {
-  fcl::CollisionRequestd req(1, false);
-  req.gjk_solver_type = fcl::GST_LIBCCD;
-  fcl::CollisionResultd res;
-  return fcl::collide(&p.a.shape, p.a.pose, &p.b.shape, p.b.pose, req, res) > 0;
-}
-
+// The adapter's calls on converted pairs (oracles/fcl/fcl_convert.hpp).
+bool fcl_collide(const FclPair& p) { return oracles::fcl_overlap_prepared(p); }
 /// FCL's penetration depth (collide with contact); -1 when FCL sees no contact.
 double fcl_depth(const FclPair& p) {
-  fcl::CollisionRequestd req(1, true);
-  req.gjk_solver_type = fcl::GST_LIBCCD;
-  fcl::CollisionResultd res;
-  fcl::collide(&p.a.shape, p.a.pose, &p.b.shape, p.b.pose, req, res);
-  return res.numContacts() > 0 ? res.getContact(0).penetration_depth : -1.0;
+  const oracles::PeerContact c = oracles::fcl_collide_prepared(p);
+  return c.hit ? c.depth : -1.0;
 }
-
 /// FCL's distance (> 0 separated; negative when FCL sees contact).
-double fcl_distance(const FclPair& p) {
-  fcl::DistanceRequestd req;
-  req.gjk_solver_type = fcl::GST_LIBCCD;
-  fcl::DistanceResultd res;
-  fcl::distance(&p.a.shape, p.a.pose, &p.b.shape, p.b.pose, req, res);
-  return res.min_distance;
-}
+double fcl_distance(const FclPair& p) { return oracles::fcl_distance_prepared(p).distance; }
 
 /// FCL's verdicts on a random or near cylinder set against the certified
 /// ones (untimed; also runs every FCL query once before timing).
@@ -485,7 +467,7 @@ void fcl_check(Set<Cylinder>& s) {
   s.st.fcl = true;
   for (const Pair<Cylinder>& pr : s.pairs) {
     try {
-      const FclPair fp(pr);
+      const FclPair fp = fcl_pair(pr);
       const bool f = fcl_collide(fp);
       const double d = fcl_distance(fp);
       s.st.fcl_says_overlap += f;
@@ -580,7 +562,7 @@ void bm_fcl_depth(benchmark::State& state, const Set<Cylinder>* set, CaptureRepo
     for (const auto& pr : set->pairs) cases.push_back(&pr);
   for (auto _ : state) {
     for (const Pair<Cylinder>* pr : cases) {
-      const FclPair fp(*pr);  // conversion from doubles, as make_shape for the engine
+      const FclPair fp = fcl_pair(*pr);  // conversion from doubles, as make_shape for the engine
       benchmark::DoNotOptimize(fcl_depth(fp));
     }
   }
@@ -591,7 +573,7 @@ template <class F>
 void bm_fcl(benchmark::State& state, const std::vector<Pair<Cylinder>>* pairs, F query) {
   for (auto _ : state) {
     for (const Pair<Cylinder>& pr : *pairs) {
-      const FclPair fp(pr);  // conversion from doubles, as make_shape for the engine
+      const FclPair fp = fcl_pair(pr);  // conversion from doubles, as make_shape for the engine
       benchmark::DoNotOptimize(query(fp));
     }
   }
@@ -738,7 +720,7 @@ DepthSummary print_depth(const Set<A>& s, bool fcl) {
       std::vector<double> err;
       for (std::size_t i = 0; i < s.obs.size(); ++i) {
         try {
-          const double fd = fcl_depth(FclPair(s.pairs[i]));
+          const double fd = fcl_depth(fcl_pair(s.pairs[i]));
           says += fd >= 0;
           if (s.obs[i].seen && s.obs[i].reached && fd >= 0) {
             const double e = (fd - s.obs[i].depth_mid) / s.obs[i].scale;

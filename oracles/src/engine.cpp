@@ -5,6 +5,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "engine_interval.hpp"
 #include "engine_search.hpp"
 
 namespace geomcheck::oracle {
@@ -13,58 +14,6 @@ using namespace search;
 
 namespace {
 
-// ---- interval arithmetic on doubles (outward by one ulp per operation) ------
-
-double dn(double x) { return std::nextafter(x, -std::numeric_limits<double>::infinity()); }
-double up(double x) { return std::nextafter(x, std::numeric_limits<double>::infinity()); }
-
-struct Iv {
-  double lo = 0, hi = 0;
-  static Iv exact(double v) { return {v, v}; }
-  bool certainly_neg() const { return hi < 0; }
-  bool certainly_pos() const { return lo > 0; }
-};
-Iv operator+(Iv a, Iv b) { return {dn(a.lo + b.lo), up(a.hi + b.hi)}; }
-Iv operator-(Iv a, Iv b) { return {dn(a.lo - b.hi), up(a.hi - b.lo)}; }
-Iv operator-(Iv a) { return {-a.hi, -a.lo}; }
-Iv operator*(Iv a, Iv b) {
-  const double p[4] = {a.lo * b.lo, a.lo * b.hi, a.hi * b.lo, a.hi * b.hi};
-  double lo = p[0], hi = p[0];
-  for (double v : p) {
-    lo = v < lo ? v : lo;
-    hi = v > hi ? v : hi;
-  }
-  for (double v : p)
-    if (v != v) lo = hi = v;  // NaN poisons the interval
-  return {dn(lo), up(hi)};
-}
-Iv iv_sqrt(Iv a) {  // for values known to be >= 0
-  const double lo = a.lo <= 0 ? 0 : dn(std::sqrt(a.lo));
-  return {lo, up(std::sqrt(a.hi))};
-}
-Iv iv_max(Iv a, Iv b) { return {std::max(a.lo, b.lo), std::max(a.hi, b.hi)}; }
-Iv iv_div(Iv a, Iv b) {  // b certainly positive
-  const double p[4] = {a.lo / b.lo, a.lo / b.hi, a.hi / b.lo, a.hi / b.hi};
-  double lo = p[0], hi = p[0];
-  for (double v : p) {
-    lo = v < lo ? v : lo;
-    hi = v > hi ? v : hi;
-  }
-  return {dn(lo), up(hi)};
-}
-
-struct IV3 {
-  Iv x, y, z;
-};
-IV3 operator+(const IV3& a, const IV3& b) { return {a.x + b.x, a.y + b.y, a.z + b.z}; }
-IV3 operator-(const IV3& a, const IV3& b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
-IV3 operator*(Iv s, const IV3& a) { return {s * a.x, s * a.y, s * a.z}; }
-Iv dot(const IV3& a, const IV3& b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
-IV3 cross(const IV3& a, const IV3& b) {
-  return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
-}
-IV3 iv3(Vec3 v) { return {Iv::exact(v.x), Iv::exact(v.y), Iv::exact(v.z)}; }
-IV3 iv3(Vec3 lo, Vec3 hi) { return {{lo.x, hi.x}, {lo.y, hi.y}, {lo.z, hi.z}}; }
 Iv iv(const Q& q) {
   Iv out;
   bracket(q, out.lo, out.hi);
@@ -208,13 +157,11 @@ bool tet_iv(const std::array<IV3, 4>& w, double& face_lo) {
 
 // ---- exact construction of certificate points -------------------------------
 
-Q q_abs(const Q& x) { return x < 0 ? Q(-x) : x; }
-
 /// Lower bound of the distance from the origin to the plane of (a, b, c),
 /// the origin on the side with positive orientation `vol`.
 Q face_distance_lo(const QVec& a, const QVec& b, const QVec& c) {
   const QVec n = cross(b - a, c - a);
-  const Q num = q_abs(dot(n, a));
+  const Q num = abs(dot(n, a));
   const Q nn = dot(n, n);
   if (nn == 0) return 0;
   return num / sqrt_interval(nn).hi;
@@ -528,6 +475,22 @@ bool filter_round(Ctx& c, DistanceResult& r) {
     r.by_filter = true;
     return true;
   };
+  // Separated: h_A(n) + h_B(-n) certainly negative; wa, wb enclose points
+  // of A and B (the upper bound of the distance).
+  auto sep_cert = [&](const Vec3& nd, const IV3& wa, const IV3& wb) {
+    const IV3 n = iv3(nd), m = iv3(-nd);
+    const Iv h = support_iv(AI, n) + support_iv(BI, m);
+    const Iv nn = iv_sqrt(dot(n, n));
+    const IV3 d = wa - wb;
+    const Iv hi = iv_sqrt(dot(d, d));
+    if (!h.certainly_neg() || !nn.certainly_pos() || !std::isfinite(hi.hi)) return false;
+    r.verdict = Verdict::Separated;
+    r.separation = SeparationCertificate{to_q(nd)};
+    r.distance = {q_of(std::max(0.0, dn(-h.hi / nn.hi))), q_of(hi.hi)};
+    r.bits = 53;
+    r.by_filter = true;
+    return true;
+  };
   if (g.status == GjkStatus::Inside) {
     if (tet_cert({s.v[0], s.v[1], s.v[2], s.v[3]})) return true;
   }
@@ -540,54 +503,25 @@ bool filter_round(Ctx& c, DistanceResult& r) {
     if (m.status == MprStatus::Hit) cand.insert(cand.end(), m.tet.begin(), m.tet.end());
     std::array<Vert<double>, 4> tet;
     if (enclosing_tet(A, B, cand, tet) && tet_cert(tet)) return true;
-    if (m.status == MprStatus::Miss) {
-      const IV3 n = iv3(Vec3{m.dir.x, m.dir.y, m.dir.z}), mm = iv3(Vec3{-m.dir.x, -m.dir.y, -m.dir.z});
-      const Iv h = support_iv(AI, n) + support_iv(BI, mm);
-      const Iv nn = iv_sqrt(dot(n, n));
-      const IV3 d = AI.inner - BI.inner;
-      const Iv hi = iv_sqrt(dot(d, d));
-      if (h.certainly_neg() && nn.certainly_pos() && std::isfinite(hi.hi)) {
-        r.verdict = Verdict::Separated;
-        r.separation = SeparationCertificate{to_q(Vec3{m.dir.x, m.dir.y, m.dir.z})};
-        r.distance = {q_of(std::max(0.0, dn(-h.hi / nn.hi))), q_of(hi.hi)};
-        r.bits = 53;
-        r.by_filter = true;
-        return true;
-      }
-    }
+    if (m.status == MprStatus::Miss && sep_cert(Vec3{m.dir.x, m.dir.y, m.dir.z}, AI.inner, BI.inner)) return true;
   }
   if (g.status == GjkStatus::Separated || g.status == GjkStatus::MaxIter) {
-    const Vec3 nd{-s.closest.x, -s.closest.y, -s.closest.z};
-    const IV3 n = iv3(nd), m = iv3(Vec3{s.closest.x, s.closest.y, s.closest.z});
-    const Iv h = support_iv(AI, n) + support_iv(BI, m);
-    if (h.certainly_neg()) {
-      // Witness points: convex combinations of points built inside.
-      // (GJK's early exit may come before any point: then the inner points.)
-      IV3 wa = AI.inner, wb = BI.inner;
-      bool ok = true;
-      Iv rest = Iv::exact(1);
-      for (std::size_t i = 0; i < s.v.size() && ok; ++i) {
-        IV3 a, b;
-        ok = sup_box(AI, s.v[i].a, a) && sup_box(BI, s.v[i].b, b);
-        Iv l = Iv::exact(s.lambda[i] > 0 ? s.lambda[i] : 0);
-        if (i + 1 == s.v.size()) l = rest;
-        else rest = rest - l;
-        if (!(l.lo >= 0)) ok = false;
-        wa = i == 0 ? l * a : wa + l * a;
-        wb = i == 0 ? l * b : wb + l * b;
-      }
-      const IV3 d = wa - wb;
-      const Iv dist_hi = iv_sqrt(dot(d, d));
-      const Iv nn = iv_sqrt(dot(n, n));
-      if (ok && std::isfinite(dist_hi.hi) && nn.certainly_pos()) {
-        r.verdict = Verdict::Separated;
-        r.separation = SeparationCertificate{to_q(nd)};
-        r.distance = {q_of(std::max(0.0, dn(-h.hi / nn.hi))), q_of(dist_hi.hi)};
-        r.bits = 53;
-        r.by_filter = true;
-        return true;
-      }
+    // Witness points: convex combinations of points built inside (GJK's
+    // early exit may come before any point: then the inner points).
+    IV3 wa = AI.inner, wb = BI.inner;
+    bool ok = true;
+    Iv rest = Iv::exact(1);
+    for (std::size_t i = 0; i < s.v.size() && ok; ++i) {
+      IV3 a, b;
+      ok = sup_box(AI, s.v[i].a, a) && sup_box(BI, s.v[i].b, b);
+      Iv l = Iv::exact(s.lambda[i] > 0 ? s.lambda[i] : 0);
+      if (i + 1 == s.v.size()) l = rest;
+      else rest = rest - l;
+      if (!(l.lo >= 0)) ok = false;
+      wa = i == 0 ? l * a : wa + l * a;
+      wb = i == 0 ? l * b : wb + l * b;
     }
+    if (ok && sep_cert(Vec3{-s.closest.x, -s.closest.y, -s.closest.z}, wa, wb)) return true;
   }
   return false;
 }

@@ -8,6 +8,7 @@
 #include <initializer_list>
 #include <stdexcept>
 
+#include "engine_interval.hpp"
 #include "engine_internal.hpp"
 
 namespace geomcheck::oracle {
@@ -100,33 +101,20 @@ bool in_box(const QVec& c, const std::array<QVec, 3>& s, const QVec& x) {
 void fill_doubles(ConvexShape& s) {
   s.lo.clear();
   s.hi.clear();
-  s.doubles_exact = true;
   for (const QVec& p : s.points) {
     Vec3 l, h;
     bracket(p.x, l.x, h.x);
     bracket(p.y, l.y, h.y);
     bracket(p.z, l.z, h.z);
-    if (!(l == h)) s.doubles_exact = false;
     s.lo.push_back(l);
     s.hi.push_back(h);
   }
   double rlo;
   bracket(s.radius, rlo, s.radius_hi);
-  if (rlo != s.radius_hi) s.doubles_exact = false;
   double ahi;
   bracket(s.axis.x, s.axis_d.x, ahi);
   bracket(s.axis.y, s.axis_d.y, ahi);
   bracket(s.axis.z, s.axis_d.z, ahi);
-}
-
-/// The enclosures when the shape was built from doubles: exact, no rational
-/// rounding needed.
-void fill_exact(ConvexShape& s, std::initializer_list<Vec3> pts, double radius, Vec3 axis = {}) {
-  s.lo.assign(pts.begin(), pts.end());
-  s.hi = s.lo;
-  s.radius_hi = radius;
-  s.axis_d = axis;
-  s.doubles_exact = true;
 }
 
 }  // namespace
@@ -173,51 +161,46 @@ const char* kind_name(ConvexShape::Kind k) {
   return "?";
 }
 
-ConvexShape make_point(Vec3 x) {
+namespace {
+
+/// A shape whose core points and radius are the given doubles: exact
+/// rationals, and their double enclosures are the doubles themselves.
+ConvexShape from_doubles(ConvexShape::Kind kind, ConvexShape::Round round, std::initializer_list<Vec3> pts,
+                         double radius) {
   ConvexShape s;
-  s.kind = ConvexShape::Kind::Point;
-  s.points = {to_q(x)};
-  fill_exact(s, {x}, 0);
+  s.kind = kind;
+  s.round = round;
+  for (const Vec3& p : pts) s.points.push_back(to_q(p));
+  s.radius = to_q(radius);
+  s.lo.assign(pts.begin(), pts.end());
+  s.hi = s.lo;
+  s.radius_hi = radius;
   return s;
+}
+
+}  // namespace
+
+ConvexShape make_point(Vec3 x) {
+  return from_doubles(ConvexShape::Kind::Point, ConvexShape::Round::None, {x}, 0);
 }
 
 ConvexShape make_shape(const Segment& g) {
-  ConvexShape s;
-  s.kind = ConvexShape::Kind::Segment;
-  s.points = {to_q(g.a), to_q(g.b)};
-  fill_exact(s, {g.a, g.b}, 0);
-  return s;
+  return from_doubles(ConvexShape::Kind::Segment, ConvexShape::Round::None, {g.a, g.b}, 0);
 }
 
 ConvexShape make_shape(const Sphere& g) {
-  ConvexShape s;
-  s.kind = ConvexShape::Kind::Sphere;
-  s.round = ConvexShape::Round::Ball;
-  s.points = {to_q(g.c)};
-  s.radius = to_q(g.r);
-  fill_exact(s, {g.c}, g.r);
-  return s;
+  return from_doubles(ConvexShape::Kind::Sphere, ConvexShape::Round::Ball, {g.c}, g.r);
 }
 
 ConvexShape make_shape(const Capsule& g) {
-  ConvexShape s;
-  s.kind = ConvexShape::Kind::Capsule;
-  s.round = ConvexShape::Round::Ball;
-  s.points = {to_q(g.p), to_q(g.q)};
-  s.radius = to_q(g.r);
-  fill_exact(s, {g.p, g.q}, g.r);
-  return s;
+  return from_doubles(ConvexShape::Kind::Capsule, ConvexShape::Round::Ball, {g.p, g.q}, g.r);
 }
 
 ConvexShape make_shape(const Cylinder& g) {
-  ConvexShape s;
-  s.kind = ConvexShape::Kind::Cylinder;
-  s.round = ConvexShape::Round::Disc;
-  s.points = {to_q(g.p), to_q(g.q)};
-  s.radius = to_q(g.r);
+  ConvexShape s = from_doubles(ConvexShape::Kind::Cylinder, ConvexShape::Round::Disc, {g.p, g.q}, g.r);
   s.axis = s.points[1] - s.points[0];
   if (is_zero(s.axis)) throw std::domain_error("cylinder with p == q");
-  fill_exact(s, {g.p, g.q}, g.r, g.q - g.p);  // axis_d only steers the search
+  s.axis_d = g.q - g.p;  // only steers the search
   return s;
 }
 
@@ -228,51 +211,25 @@ ConvexShape make_shape(const Obb& g) {
   const double e[3] = {g.e.x, g.e.y, g.e.z};
   for (int k = 0; k < 3; ++k) s.spans[k] = to_q(e[k]) * to_q(g.axes[k]);
   for (int i = 0; i < 8; ++i) s.points.push_back(box_vertex(s.centre, s.spans, i));
-  // Enclosures of the vertices by interval arithmetic on the doubles (each
-  // product and sum widened outwards by one ulp): no rational rounding.
-  auto dn = [](double x) { return std::nextafter(x, -INFINITY); };
-  auto up = [](double x) { return std::nextafter(x, INFINITY); };
-  const double c[3] = {g.c.x, g.c.y, g.c.z};
-  double slo[3][3], shi[3][3];  // span k, coordinate j
-  for (int k = 0; k < 3; ++k) {
-    const double a[3] = {g.axes[k].x, g.axes[k].y, g.axes[k].z};
-    for (int j = 0; j < 3; ++j) {
-      const double p = e[k] * a[j];
-      slo[k][j] = dn(p);
-      shi[k][j] = up(p);
-    }
-  }
+  // Enclosures of the vertices by interval arithmetic on the doubles: no
+  // rational rounding.
+  IV3 span[3];
+  for (int k = 0; k < 3; ++k) span[k] = Iv::exact(e[k]) * iv3(g.axes[k]);
   bool finite = true;
   for (int i = 0; i < 8; ++i) {
-    double lo[3], hi[3];
-    for (int j = 0; j < 3; ++j) {
-      lo[j] = hi[j] = c[j];
-      for (int k = 0; k < 3; ++k) {
-        if (i >> k & 1) {
-          lo[j] = dn(lo[j] + slo[k][j]);
-          hi[j] = up(hi[j] + shi[k][j]);
-        } else {
-          lo[j] = dn(lo[j] - shi[k][j]);
-          hi[j] = up(hi[j] - slo[k][j]);
-        }
-      }
-      finite = finite && std::isfinite(lo[j]) && std::isfinite(hi[j]);
-    }
-    s.lo.push_back({lo[0], lo[1], lo[2]});
-    s.hi.push_back({hi[0], hi[1], hi[2]});
+    IV3 v = iv3(g.c);
+    for (int k = 0; k < 3; ++k) v = (i >> k & 1) ? v + span[k] : v - span[k];
+    for (const Iv& c : {v.x, v.y, v.z}) finite = finite && std::isfinite(c.lo) && std::isfinite(c.hi);
+    s.lo.push_back({v.x.lo, v.y.lo, v.z.lo});
+    s.hi.push_back({v.x.hi, v.y.hi, v.z.hi});
   }
   s.radius_hi = 0;
-  s.doubles_exact = false;
   if (!finite) fill_doubles(s);  // overflow: the rational brackets
   return s;
 }
 
 ConvexShape make_shape(const Triangle& g) {
-  ConvexShape s;
-  s.kind = ConvexShape::Kind::Triangle;
-  s.points = {to_q(g.a), to_q(g.b), to_q(g.c)};
-  fill_exact(s, {g.a, g.b, g.c}, 0);
-  return s;
+  return from_doubles(ConvexShape::Kind::Triangle, ConvexShape::Round::None, {g.a, g.b, g.c}, 0);
 }
 
 ConvexShape translated(const ConvexShape& s, const QVec& t) {

@@ -148,14 +148,19 @@ FclSphere::FclSphere(const Sphere& s) : shape(s.r), pose(fcl::Transform3d::Ident
   pose.translation() = to_fcl(s.c);
 }
 
-bool fcl_overlap_prepared(const FclCylinderSphere& pair) {
+namespace {
+
+// The FCL calls on any converted pair (members a, b with shape and pose).
+template <class Pair>
+bool overlap_on(const Pair& pair) {
   fcl::CollisionRequestd req(1, false);
   req.gjk_solver_type = fcl::GST_LIBCCD;
   fcl::CollisionResultd res;
   return fcl::collide(&pair.a.shape, pair.a.pose, &pair.b.shape, pair.b.pose, req, res) > 0;
 }
 
-PeerContact fcl_collide_prepared(const FclCylinderSphere& pair) {
+template <class Pair>
+PeerContact collide_on(const Pair& pair) {
   try {
     fcl::CollisionRequestd req(1, true);
     req.gjk_solver_type = fcl::GST_LIBCCD;
@@ -172,6 +177,41 @@ PeerContact fcl_collide_prepared(const FclCylinderSphere& pair) {
     return out;
   }
 }
+
+template <class Pair>
+PeerDistance distance_on(const Pair& pair) {
+  PeerDistance out;
+  try {
+    fcl::DistanceRequestd req(true);
+    req.gjk_solver_type = fcl::GST_LIBCCD;
+    fcl::DistanceResultd res;
+    fcl::distance(&pair.a.shape, pair.a.pose, &pair.b.shape, pair.b.pose, req, res);
+    out.ok = true;
+    out.distance = res.min_distance;
+    out.p_a = from_fcl(res.nearest_points[0]);
+    out.p_b = from_fcl(res.nearest_points[1]);
+    if (!std::isfinite(out.distance) || !is_finite(out.p_a) || !is_finite(out.p_b)) {
+      out.ok = false;
+      out.error = "FCL returned a non-finite distance or point";
+    }
+  } catch (const std::exception& e) {
+    out.ok = false;
+    out.error = describe(e);
+  } catch (...) {
+    out.ok = false;
+    out.error = kUnknownThrow;
+  }
+  return out;
+}
+
+}  // namespace
+
+bool fcl_overlap_prepared(const FclCylinderSphere& pair) { return overlap_on(pair); }
+PeerContact fcl_collide_prepared(const FclCylinderSphere& pair) { return collide_on(pair); }
+PeerDistance fcl_distance_prepared(const FclCylinderSphere& pair) { return distance_on(pair); }
+bool fcl_overlap_prepared(const FclCylinderCylinder& pair) { return overlap_on(pair); }
+PeerContact fcl_collide_prepared(const FclCylinderCylinder& pair) { return collide_on(pair); }
+PeerDistance fcl_distance_prepared(const FclCylinderCylinder& pair) { return distance_on(pair); }
 
 PeerContact fcl_collide(const Cylinder& a, const Sphere& b) {
   if (!is_valid(a) || !is_valid(b)) {
@@ -209,33 +249,22 @@ bool fcl_overlap(const Cylinder& a, const Sphere& b, std::string* error) {
 }
 
 PeerDistance fcl_distance(const Cylinder& a, const Sphere& b) {
-  PeerDistance out;
   if (!is_valid(a) || !is_valid(b)) {
+    PeerDistance out;
     out.error = kInvalidInput;
     return out;
   }
   try {
-    const FclCylinderSphere pair(a, b);
-    fcl::DistanceRequestd req(true);
-    req.gjk_solver_type = fcl::GST_LIBCCD;
-    fcl::DistanceResultd res;
-    fcl::distance(&pair.a.shape, pair.a.pose, &pair.b.shape, pair.b.pose, req, res);
-    out.ok = true;
-    out.distance = res.min_distance;
-    out.p_a = from_fcl(res.nearest_points[0]);
-    out.p_b = from_fcl(res.nearest_points[1]);
-    if (!std::isfinite(out.distance) || !is_finite(out.p_a) || !is_finite(out.p_b)) {
-      out.ok = false;
-      out.error = "FCL returned a non-finite distance or point";
-    }
-  } catch (const std::exception& e) {
-    out.ok = false;
+    return distance_on(FclCylinderSphere(a, b));
+  } catch (const std::exception& e) {  // the conversion
+    PeerDistance out;
     out.error = describe(e);
+    return out;
   } catch (...) {
-    out.ok = false;
+    PeerDistance out;
     out.error = kUnknownThrow;
+    return out;
   }
-  return out;
 }
 
 PeerCast fcl_cast(const Segment& s, const Cylinder& c, FclCastMethod method) {

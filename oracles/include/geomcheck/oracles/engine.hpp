@@ -63,7 +63,6 @@ struct ConvexShape {
   std::vector<Vec3> lo, hi;  // per point, coordinate-wise
   double radius_hi = 0;
   Vec3 axis_d;               // nearest double of the axis
-  bool doubles_exact = true; // every point and the radius are doubles
 };
 
 ConvexShape make_point(Vec3 x);

@@ -45,9 +45,21 @@ struct FclCylinderSphere {
   FclCylinderSphere(const Cylinder& cyl, const Sphere& sph) : a(cyl), b(sph) {}
 };
 
+/// A cylinder/cylinder pair converted once (PeerContact's normal and
+/// PeerDistance's points then refer to the first and second cylinder).
+struct FclCylinderCylinder {
+  FclCylinder a, b;
+  FclCylinderCylinder(const Cylinder& first, const Cylinder& second) : a(first), b(second) {}
+};
+
 /// fcl_overlap on a converted pair (no validity check; exceptions propagate).
 bool fcl_overlap_prepared(const FclCylinderSphere& pair);
+bool fcl_overlap_prepared(const FclCylinderCylinder& pair);
 /// fcl_collide on a converted pair (no validity check; exceptions are caught).
 PeerContact fcl_collide_prepared(const FclCylinderSphere& pair);
+PeerContact fcl_collide_prepared(const FclCylinderCylinder& pair);
+/// fcl_distance on a converted pair (no validity check; exceptions are caught).
+PeerDistance fcl_distance_prepared(const FclCylinderSphere& pair);
+PeerDistance fcl_distance_prepared(const FclCylinderCylinder& pair);
 
 }  // namespace geomcheck::oracles
