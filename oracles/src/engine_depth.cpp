@@ -3,6 +3,8 @@
 // then separation/overlap certificates at both ends of the interval).
 #include <algorithm>
 #include <map>
+#include <optional>
+#include <string>
 #include <sstream>
 
 #include "engine_search.hpp"
@@ -180,45 +182,35 @@ ZPoint to_z(const QVec& p) {
   return {{num(p.x), num(p.y), num(p.z)}, den};
 }
 
-/// Certified depth interval from an EPA polytope.
-/// Lower bound: the faces form a closed, consistently oriented surface and
-/// every face has the origin strictly on its inner side (exact signs), so
-/// every ray from the origin meets the surface; the surface lies in A - B
-/// (its vertices are points a_i - b_i built inside A and B), hence so does
-/// the union of the segments from the origin to it, and the depth is at
-/// least the smallest face distance. Upper bound: the support of A - B along
-/// the closest face normal. All in integers: a point is N / den, a face's
-/// distance is det(N_a, N_b, N_c) / |M| with
+/// Smallest face distance of a surface around the origin, certified, or
+/// nothing when the surface is not closed and consistently oriented or a face
+/// does not have the origin strictly on its inner side. Faces are visited in
+/// the given order: the first one's exact distance (bracketed) is the
+/// candidate bound, every other face is checked against it with integers
+/// only. A point is N / den; a face's distance is det(N_a, N_b, N_c) / |M|,
 /// M = den_a (N_b x N_c) + den_c (N_a x N_b) + den_b (N_c x N_a).
-template <class T>
-bool certify_epa(const ConvexShape& A, const ConvexShape& B, const Epa<T>& e, PenetrationResult& out) {
-  std::vector<const Face<T>*> faces;
+std::optional<Q> surface_lower_bound(const std::vector<QVec>& points, const std::vector<std::array<int, 3>>& faces,
+                                     std::string& why) {
   std::map<std::pair<int, int>, int> edge_count;
-  for (const auto& f : e.faces) {
-    if (!f.alive) continue;
-    faces.push_back(&f);
-    for (int k = 0; k < 3; ++k) ++edge_count[{f.v[k], f.v[(k + 1) % 3]}];
+  for (const auto& f : faces) {
+    for (int k = 0; k < 3; ++k) {
+      if (f[k] < 0 || f[k] >= static_cast<int>(points.size())) { why = "vertex index out of range"; return {}; }
+      ++edge_count[{f[k], f[(k + 1) % 3]}];
+    }
   }
   for (const auto& [ed, n] : edge_count) {
-    if (n != 1) { out.note = "edge used twice"; return false; }
+    if (n != 1) { why = "edge used twice"; return {}; }
     auto rev = edge_count.find({ed.second, ed.first});
-    if (rev == edge_count.end() || rev->second != 1) { out.note = "open surface"; return false; }
+    if (rev == edge_count.end() || rev->second != 1) { why = "open surface"; return {}; }
   }
-  std::vector<ZPoint> W(e.verts.size());
-  std::vector<bool> used(e.verts.size(), false);
-  for (const Face<T>* f : faces)
-    for (int k = 0; k < 3; ++k) used[f->v[k]] = true;
-  for (std::size_t i = 0; i < e.verts.size(); ++i)
-    if (used[i]) W[i] = to_z(sup_point_q(A, e.verts[i].a) - sup_point_q(B, e.verts[i].b));
-  // Closest face first: its exact distance (bracketed) is the candidate
-  // bound; every other face is checked against it with integers only.
-  std::sort(faces.begin(), faces.end(), [](const Face<T>* a, const Face<T>* b) { return a->d2 < b->d2; });
+  std::vector<ZPoint> W(points.size());
+  for (std::size_t i = 0; i < points.size(); ++i) W[i] = to_z(points[i]);
   Z lo_num, lo_den;  // lo = lo_num / lo_den, lo_den > 0
   bool have_lo = false;
-  for (const Face<T>* f : faces) {
-    const ZPoint &a = W[f->v[0]], &b = W[f->v[1]], &c = W[f->v[2]];
+  for (const auto& f : faces) {
+    const ZPoint &a = W[f[0]], &b = W[f[1]], &c = W[f[2]];
     const Z det = zdot(a.n, zcross(b.n, c.n));
-    if (det <= 0) { out.note = "face through or behind the origin"; return false; }
+    if (det <= 0) { why = "face through or behind the origin"; return {}; }
     const ZVec M = zadd(zadd(zscale(a.den, zcross(b.n, c.n)), zscale(c.den, zcross(a.n, b.n))), zscale(b.den, zcross(c.n, a.n)));
     const Z mm = zdot(M, M);
     // dist >= lo  <=>  det * lo_den >= lo_num * |M|  <=>  (det lo_den)^2 >= lo_num^2 |M|^2.
@@ -231,18 +223,67 @@ bool certify_epa(const ConvexShape& A, const ConvexShape& B, const Epa<T>& e, Pe
     lo_den = mp::denominator(d);
     have_lo = true;
   }
-  if (!have_lo) return false;
+  if (!have_lo) { why = "no face"; return {}; }
+  return Q(lo_num) / Q(lo_den);
+}
+
+/// Certified depth interval from an EPA polytope.
+/// Lower bound: the faces form a closed, consistently oriented surface and
+/// every face has the origin strictly on its inner side (exact signs), so
+/// every ray from the origin meets the surface; the surface lies in A - B
+/// (its vertices are points a_i - b_i built inside A and B), hence so does
+/// the union of the segments from the origin to it, and the depth is at
+/// least the smallest face distance. Upper bound: the support of A - B along
+/// the closest face normal.
+template <class T>
+bool certify_epa(const ConvexShape& A, const ConvexShape& B, const Epa<T>& e, PenetrationResult& out) {
+  std::vector<const Face<T>*> faces;
+  for (const auto& f : e.faces)
+    if (f.alive) faces.push_back(&f);
+  // Closest face first (its bound is the candidate for all others).
+  std::sort(faces.begin(), faces.end(), [](const Face<T>* a, const Face<T>* b) { return a->d2 < b->d2; });
+  DepthCertificate cert;
+  std::vector<int> index(e.verts.size(), -1);
+  std::vector<QVec> W;
+  for (const Face<T>* f : faces) {
+    std::array<int, 3> g;
+    for (int k = 0; k < 3; ++k) {
+      int& id = index[f->v[k]];
+      if (id < 0) {
+        id = static_cast<int>(cert.a.size());
+        cert.a.push_back(sup_point_q(A, e.verts[f->v[k]].a));
+        cert.b.push_back(sup_point_q(B, e.verts[f->v[k]].b));
+        W.push_back(cert.a.back() - cert.b.back());
+      }
+      g[k] = id;
+    }
+    cert.faces.push_back(g);
+  }
+  const std::optional<Q> lo = surface_lower_bound(W, cert.faces, out.note);
+  if (!lo) return false;
   const QVec n = exact_q(faces.front()->n);
   const QInterval h = (support_value(A, n) + support_value(B, Q(-1) * n)) / sqrt_interval(dot(n, n));
-  const Q lo = Q(lo_num) / Q(lo_den);
-  out.overlapping = lo > 0;
-  out.depth = {lo, h.hi};
+  out.overlapping = *lo > 0;
+  out.depth = {*lo, h.hi};
   out.direction = n;
   out.faces = static_cast<int>(faces.size());
+  out.certificate = std::move(cert);
   return out.overlapping;
 }
 
 }  // namespace
+
+bool check_depth(const ConvexShape& a, const ConvexShape& b, const DepthCertificate& c, const Q& lo) {
+  if (c.a.size() != c.b.size()) return false;
+  std::vector<QVec> W;
+  for (std::size_t i = 0; i < c.a.size(); ++i) {
+    if (!contains(a, c.a[i]) || !contains(b, c.b[i])) return false;
+    W.push_back(c.a[i] - c.b[i]);
+  }
+  std::string why;
+  const std::optional<Q> bound = surface_lower_bound(W, c.faces, why);
+  return bound && *bound >= lo;
+}
 
 PenetrationResult penetration(const ConvexShape& a, const ConvexShape& b, double rel_width) {
   PenetrationResult out;

@@ -164,6 +164,7 @@ TEST(EngineClosedForm, PenetrationDepthMatchesSphereCylinder) {
     const PenetrationResult p = penetration(make_shape(c), make_shape(s), 1e-30);
     RC_LOG() << show(c) << " " << show(s) << " " << p.note << "\n";
     RC_ASSERT(p.overlapping);
+    RC_ASSERT(p.certificate && check_depth(make_shape(c), make_shape(s), *p.certificate, p.depth.lo));
     const QInterval depth{Q(-truth.signed_distance.hi), Q(-truth.signed_distance.lo)};
     RC_ASSERT(intervals_meet(p.depth, depth));
   });
@@ -342,6 +343,40 @@ TEST(EngineHand, ForgedCertificatesAreRejected) {
   const Sphere t{{2, 0, 0.5}, 1};
   EXPECT_TRUE(check_common_point(A, make_shape(t), to_q(Vec3{1, 0, 0.5})));
   EXPECT_FALSE(check_common_point(A, make_shape(t), to_q(Vec3{std::nextafter(1.0, 2.0), 0, 0.5})));
+}
+
+TEST(EngineHand, ForgedDepthCertificatesAreRejected) {
+  const Cylinder c{{0, 0, 0}, {0, 0, 1}, 0.5};
+  const Triangle t{{-2, -2, 0.5}, {2, -2, 0.5}, {0, 2, 0.5}};
+  const ConvexShape A = make_shape(t), B = make_shape(c);
+  const PenetrationResult p = penetration(A, B);
+  ASSERT_TRUE(p.overlapping && p.certificate) << p.note;
+  const DepthCertificate& good = *p.certificate;
+  EXPECT_TRUE(check_depth(A, B, good, p.depth.lo));
+  EXPECT_FALSE(check_depth(A, B, good, p.depth.lo + Q(1, 1000)));  // claims more than it shows
+  DepthCertificate flipped = good;  // one face turned inside out
+  std::swap(flipped.faces[0][1], flipped.faces[0][2]);
+  EXPECT_FALSE(check_depth(A, B, flipped, Q(0)));
+  DepthCertificate open = good;  // one face missing
+  open.faces.pop_back();
+  EXPECT_FALSE(check_depth(A, B, open, Q(0)));
+  DepthCertificate outside = good;  // a point of B moved out of the cylinder
+  outside.b[0] = outside.b[0] + QVec{Q(0), Q(0), Q(2)};
+  EXPECT_FALSE(check_depth(A, B, outside, Q(0)));
+  // A surface with every face seen from behind: the origin outside a
+  // tetrahedron of genuine points (a separated pair's points).
+  const Cylinder far{{3, 0, 0}, {3, 0, 1}, 0.5};
+  DepthCertificate behind;
+  const ConvexShape F = make_shape(far);
+  behind.a = {to_q(Vec3{-2, -2, 0.5}), to_q(Vec3{2, -2, 0.5}), to_q(Vec3{0, 2, 0.5}), to_q(Vec3{0, 0, 0.5})};
+  behind.b = {to_q(Vec3{3, 0, 0}), to_q(Vec3{3, 0, 1}), to_q(Vec3{3.5, 0, 0.5}), to_q(Vec3{3, 0.5, 0})};
+  behind.faces = {{0, 1, 2}, {0, 3, 1}, {1, 3, 2}, {0, 2, 3}};
+  EXPECT_FALSE(check_depth(A, F, behind, Q(0)));
+  std::swap(behind.faces[0][1], behind.faces[0][2]);
+  std::swap(behind.faces[1][1], behind.faces[1][2]);
+  std::swap(behind.faces[2][1], behind.faces[2][2]);
+  std::swap(behind.faces[3][1], behind.faces[3][2]);
+  EXPECT_FALSE(check_depth(A, F, behind, Q(0)));
 }
 
 // ---- every pair: certificates and metamorphic properties --------------------------------

@@ -142,11 +142,25 @@ struct DistanceResult {
 /// Certified verdict and signed-distance enclosure of A against B.
 DistanceResult classify(const ConvexShape& a, const ConvexShape& b, const EngineOptions& opt = {});
 
+/// Lower bound of a penetration depth: points a_i of A and b_i of B whose
+/// differences span a closed, consistently oriented triangulated surface
+/// (faces outward) with the origin strictly inside every face; then every
+/// ray from the origin meets the surface inside A - B, and the depth is at
+/// least the smallest face distance.
+struct DepthCertificate {
+  std::vector<QVec> a, b;
+  std::vector<std::array<int, 3>> faces;
+};
+/// Checks (exactly: containment of every point, closedness, orientation
+/// signs, face distances squared) that the certificate proves depth >= lo.
+bool check_depth(const ConvexShape& a, const ConvexShape& b, const DepthCertificate& c, const Q& lo);
+
 struct PenetrationResult {
   bool overlapping = false;   // certified; false = not certified overlapping
   QInterval depth;            // certified enclosure of the penetration depth
   QVec direction;             // translate B by depth*direction/|direction| to touch
   int faces = 0;              // faces of the certified inner polytope
+  std::optional<DepthCertificate> certificate;  // proves depth >= depth.lo
   std::string note;
 };
 /// Penetration depth of overlapping shapes, enclosed to rel_width * scale
