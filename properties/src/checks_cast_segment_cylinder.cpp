@@ -1,5 +1,6 @@
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <sstream>
 
 #include "common.hpp"
@@ -46,7 +47,7 @@ bool meets_adjusted(const oracle::QSegment& s, const oracle::QCylinder& c, const
 // delta deep (misses the cylinder shrunk by delta).
 double disagreement_margin(const oracle::QSegment& s, const oracle::QCylinder& c, bool false_hit, double scale) {
   auto explained = [&](double lg) {
-    const Q delta = oracle::to_q(std::exp2(lg) * scale);
+    const Q delta = times_scale(std::exp2(lg), scale);
     return false_hit ? meets_adjusted(s, c, delta, +1) : !meets_adjusted(s, c, delta, -1);
   };
   double lo = -100, hi = 2;
@@ -76,13 +77,12 @@ double cone_distance(Vec3 n, Vec3 g1, Vec3 g2) {
 }
 
 // Error of production's outward normal at its own hit point x (exact).
-double normal_error(const oracle::QCylinder& c, const QVec& x, Vec3 n, double near) {
+double normal_error(const oracle::QCylinder& c, const QVec& x, Vec3 n, const Q& qnear) {
   const QVec d = c.q - c.p;
   const Q dd = oracle::dot(d, d);
   const QVec xr = x - c.p;
   const Q ax = oracle::dot(xr, d);
   const QInterval len = oracle::sqrt_interval(dd);
-  const Q qnear = oracle::to_q(near);
   // Gaps to the two cap planes and to the side, certified.
   const QInterval gp = oracle::point(ax < 0 ? -ax : ax) / len;
   const Q axq = dd - ax;
@@ -142,7 +142,7 @@ Evaluation evaluate(const SegmentCylinderCase& c, const CastSegmentCylinderImpl&
   e.truth_text = truth.hit ? std::string("hit ") + oracle::to_string(truth.feature) + " t=" + oracle::to_string(truth.t)
                            : std::string("miss");
   e.disagree = e.prod_hit != e.truth_hit;
-  const Q band = oracle::to_q(tol.verdict * e.scale);
+  const Q band = times_scale(tol.verdict, e.scale);
   // Within the band of touching: a miss that meets the grown cylinder, or a
   // hit that never gets band-deep into the cylinder.
   e.near_boundary = truth.hit ? !meets_adjusted(qs, qc, band, -1) : meets_adjusted(qs, qc, band, +1);
@@ -166,10 +166,13 @@ Evaluation evaluate(const SegmentCylinderCase& c, const CastSegmentCylinderImpl&
     e.t_err = rel_up(a > b ? a : b, e.scale);
     // Bracketing: no point of S([0, t]) is more than the t bound inside.
     const oracle::QSegment prefix{qs.a, x};
-    if (meets_adjusted(prefix, qc, oracle::to_q(tol.t * e.scale), -1))
+    if (meets_adjusted(prefix, qc, times_scale(tol.t, e.scale), -1))
       e.extra_failure = "S([0, t]) reaches deeper than the t bound into the cylinder (hit reported too late)";
     e.unit_err = std::fabs(length(h.normal) - 1);
-    e.normal_err = normal_error(qc, x, h.normal, 4 * tol.t * e.scale);
+    // "Near a feature": within 4x the t bound, which is t_err's own reach
+    // (its bound plus the output resolution of 4 smallest subnormals).
+    const Q near = times_scale(4 * tol.t, e.scale) + oracle::to_q(16 * std::numeric_limits<double>::denorm_min());
+    e.normal_err = normal_error(qc, x, h.normal, near);
   }
   // point must be S(t).
   const QVec dp = oracle::to_q(h.point) - x;
@@ -257,7 +260,7 @@ CheckResult check_metamorphic(const SegmentCylinderCase& c, int move, const Cast
   // translates), so the slack is taken at the larger of the two scales.
   const double scale = oracle::case_scale(c.a, c.b);
   const double moved_scale = std::max(scale, oracle::case_scale(t.a, t.b));
-  const Q delta = oracle::to_q(tolerances(kId).verdict * scale + moves::rigid_slack(c.b) * moved_scale);
+  const Q delta = times_scale(tolerances(kId).verdict, scale) + times_scale(moves::rigid_slack(c.b), moved_scale);
   const oracle::QSegment qs = oracle::to_q(c.a);
   const oracle::QCylinder qc = oracle::to_q(c.b);
   const bool truth = oracle::solve_cast(qs, qc).hit;

@@ -63,7 +63,7 @@ Evaluation evaluate(const CylinderSphereCase& c, const CylinderSphereImpl& impl)
                  " signed_distance=" + oracle::to_string(truth.signed_distance);
   e.disagree = e.prod_hit != e.truth_hit;
   // Near the boundary unless certainly farther than the band from touching.
-  const oracle::Q qband = oracle::to_q(tol.verdict * e.scale);
+  const oracle::Q qband = times_scale(tol.verdict, e.scale);
   e.near_boundary = !(truth.signed_distance.lo > qband || truth.signed_distance.hi < -qband);
   if (e.disagree) {
     e.margin = std::fabs(e.signed_distance) / e.scale;

@@ -24,6 +24,8 @@ double rel_up(const oracle::Q& q, double scale) {
   return oracle::to_double_up(above / oracle::to_q(scale));
 }
 
+oracle::Q times_scale(double k, double scale) { return oracle::to_q(k) * oracle::to_q(scale); }
+
 double rel_error(const oracle::QInterval& x, double v, double scale) {
   const oracle::Q qv = oracle::to_q(v);
   oracle::Q a = x.lo - qv, b = x.hi - qv;

@@ -17,6 +17,9 @@ std::string vec(Vec3 v);
 /// rationals first: rounding a tiny q up to a double and then dividing
 /// would turn one subnormal ulp into a large relative error.
 double rel_up(const oracle::Q& q, double scale);
+/// k * scale in rationals: a bound k * scale formed in doubles underflows
+/// to zero in a subnormal scene.
+oracle::Q times_scale(double k, double scale);
 /// max |x - v| over the enclosure x, divided by scale, rounded up.
 double rel_error(const oracle::QInterval& x, double v, double scale);
 
