@@ -6,6 +6,7 @@
 #include <utility>
 
 #include "geomcheck/detail/frame.hpp"
+#include "geomcheck/detail/segment_tube.hpp"
 
 namespace geomcheck {
 
@@ -40,62 +41,16 @@ CastHit cast_scaled(const Segment& seg, const Cylinder& cyl) {
   const double len = axis.len;
   const Vec3 m = seg.a - cyl.p;
   const Vec3 n = seg.b - seg.a;
-  const double mu = dot(m, u);
-  const double nu = dot(n, u);
-  const Vec3 mxu = cross(m, u);
-  const Vec3 nxu = cross(n, u);
-  // |perp(S(t))|^2 - r^2 = qa t^2 + 2 qb t + qc
-  const double qa = dot(nxu, nxu);
-  const double qb = dot(mxu, nxu);
-  const double qc = dot(mxu, mxu) - cyl.r * cyl.r;
-
   // The segment is in the cylinder where it is both in the slab between the
   // cap planes and in the infinite cylinder: intersect the two parameter
   // intervals with [0, 1]. Accepting by interval rather than by feature
   // leaves no gap at the rim, where a cap test and a side test can both
-  // reject by one rounding (regression 0002).
-  const double inf = std::numeric_limits<double>::infinity();
-  double slab_lo = -inf, slab_hi = inf;
-  if (nu == 0) {
-    if (mu < 0 || mu > len) return out;
-  } else {
-    slab_lo = -mu / nu;
-    slab_hi = (len - mu) / nu;
-    if (slab_lo > slab_hi) std::swap(slab_lo, slab_hi);
-  }
-  double cyl_lo = -inf, cyl_hi = inf;
-  if (qa == 0) {
-    if (qc > 0) return out;  // parallel to the axis and outside the radius
-  } else {
-    // disc = qb^2 - qa qc, in the form that cannot cancel:
-    //  * qc <= 0 (start inside the infinite cylinder): qb^2 + qa |qc|, a sum
-    //    of non-negative terms (regression 0003: a segment parallel to the
-    //    axis to 1e-15 rad, where |n x u| is rounding noise);
-    //  * qc > 0: r^2 |n x u|^2 - (n.(m x u))^2 by Lagrange's identity, the
-    //    triple product being the lines' offset (regression 0001: the
-    //    textbook form cancels when the line passes near the axis).
-    double sq;
-    if (qc <= 0) {
-      sq = std::sqrt(qb * qb - qa * qc);
-    } else {
-      const double triple = dot(n, mxu);
-      const double disc = cyl.r * cyl.r * qa - triple * triple;
-      if (disc < 0) return out;
-      sq = std::sqrt(disc);
-    }
-    // Roots without cancellation: k / qa and qc / k with k = -(qb + sign(qb) sq).
-    const double k = -(qb + std::copysign(sq, qb));
-    if (k == 0) {
-      cyl_lo = cyl_hi = 0;
-    } else {
-      cyl_lo = k / qa;
-      cyl_hi = qc / k;
-      if (cyl_lo > cyl_hi) std::swap(cyl_lo, cyl_hi);
-    }
-  }
-  const double entry = std::max(slab_lo, cyl_lo);
-  const double exit = std::min(slab_hi, cyl_hi);
-  if (!(entry <= exit) || entry > 1 || exit < 0) return out;
+  // reject by one rounding (regression 0002). The discriminant is formed so
+  // that it cannot cancel (regressions 0001, 0003): see segment_tube.hpp.
+  const detail::TubeInterval iv = detail::tube_interval(m, n, u, len, 0.0, cyl.r);
+  if (iv.empty) return out;
+  const double entry = iv.entry, exit = iv.exit;
+  if (entry > 1 || exit < 0) return out;
 
   if (entry <= 0) {
     out.hit = true;
@@ -105,7 +60,7 @@ CastHit cast_scaled(const Segment& seg, const Cylinder& cyl) {
     return out;
   }
   const double best = entry;
-  const int feature = slab_lo >= cyl_lo ? (nu > 0 ? 2 : 3) : 1;  // 1 side, 2 cap p, 3 cap q
+  const int feature = iv.side_entry ? 1 : (iv.cap_q ? 3 : 2);  // 1 side, 2 cap p, 3 cap q
   out.hit = true;
   out.t = best;
   out.point = seg.a + best * n;

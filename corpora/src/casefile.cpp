@@ -194,6 +194,7 @@ bool unescape_text(std::string_view s, std::string& out, std::string& what) {
 constexpr ShapeLayout kAllShapes[] = {
     shape_layout<Segment>(), shape_layout<Sphere>(), shape_layout<Capsule>(),
     shape_layout<Cylinder>(), shape_layout<Obb>(),   shape_layout<Triangle>(),
+    shape_layout<MovingSphere>(),
 };
 
 bool is_shape_kind(std::string_view kind) {

@@ -232,6 +232,17 @@ ConvexShape make_shape(const Triangle& g) {
   return from_doubles(ConvexShape::Kind::Triangle, ConvexShape::Round::None, {g.a, g.b, g.c}, 0);
 }
 
+ConvexShape make_capsule(const QVec& p, const QVec& q, const Q& r) {
+  if (r < 0) throw std::domain_error("capsule with a negative radius");
+  ConvexShape s;
+  s.kind = r == 0 ? ConvexShape::Kind::Segment : ConvexShape::Kind::Capsule;
+  s.round = r == 0 ? ConvexShape::Round::None : ConvexShape::Round::Ball;
+  s.points = {p, q};
+  s.radius = r;
+  fill_doubles(s);
+  return s;
+}
+
 ConvexShape translated(const ConvexShape& s, const QVec& t) {
   ConvexShape out = s;
   for (QVec& p : out.points) p = p + t;

@@ -60,60 +60,6 @@ double disagreement_margin(const oracle::QSegment& s, const oracle::QCylinder& c
   return std::exp2(hi);
 }
 
-// Unit vector (as doubles) of an exact rational vector.
-Vec3 unit_of(const QVec& v) {
-  const QInterval len = oracle::sqrt_interval(oracle::dot(v, v));
-  const Q l = (len.lo + len.hi) / 2;
-  return {oracle::to_double(v.x / l), oracle::to_double(v.y / l), oracle::to_double(v.z / l)};
-}
-
-// Distance of unit n from the cone spanned by unit generators g1, g2 (orthogonal).
-double cone_distance(Vec3 n, Vec3 g1, Vec3 g2) {
-  const double a = dot(n, g1), b = dot(n, g2);
-  const Vec3 proj = std::fmax(a, 0.0) * g1 + std::fmax(b, 0.0) * g2;
-  const double pl = length(proj);
-  if (pl == 0) return length(n);
-  return length(n - (1.0 / pl) * proj);
-}
-
-// Error of production's outward normal at its own hit point x (exact).
-double normal_error(const oracle::QCylinder& c, const QVec& x, Vec3 n, const Q& qnear) {
-  const QVec d = c.q - c.p;
-  const Q dd = oracle::dot(d, d);
-  const QVec xr = x - c.p;
-  const Q ax = oracle::dot(xr, d);
-  const QInterval len = oracle::sqrt_interval(dd);
-  // Gaps to the two cap planes and to the side, certified.
-  const QInterval gp = oracle::point(ax < 0 ? -ax : ax) / len;
-  const Q axq = dd - ax;
-  const QInterval gq = oracle::point(axq < 0 ? -axq : axq) / len;
-  const QVec perp = xr - (ax / dd) * d;
-  const Q rho2 = oracle::dot(perp, perp);
-  QInterval gs = oracle::sqrt_interval(rho2) - oracle::point(c.r);
-  if (gs.lo < 0 && gs.hi < 0) gs = -gs;
-  else if (gs.lo < 0) gs = {Q(0), gs.hi > -gs.lo ? gs.hi : -gs.lo};
-  const Vec3 u = unit_of(d);
-  const bool near_p = gp.lo <= qnear, near_q = gq.lo <= qnear, near_s = gs.lo <= qnear;
-  double best = INFINITY;
-  if (near_p) best = std::fmin(best, length(n - (-u)));
-  if (near_q) best = std::fmin(best, length(n - u));
-  // A cylinder thinner than `near` has no meaningful radial direction at
-  // this tolerance (its hit point's offset from the axis is noise).
-  if (rho2 > 0 && c.r > qnear) {
-    const Vec3 radial = unit_of(perp);
-    if (near_s) best = std::fmin(best, length(n - radial));
-    if (near_s && near_p) best = std::fmin(best, cone_distance(n, -u, radial));
-    if (near_s && near_q) best = std::fmin(best, cone_distance(n, u, radial));
-  } else if (near_s) {
-    // On a cylinder thinner than `near` (r = 0: a segment):
-    // every perpendicular is a side normal, and next to a cap the cone is
-    // the whole hemisphere around the cap normal.
-    best = std::fmin(best, std::fabs(dot(n, u)));
-    if (near_p) best = std::fmin(best, std::fmax(0.0, dot(n, u)));
-    if (near_q) best = std::fmin(best, std::fmax(0.0, -dot(n, u)));
-  }
-  return best;  // INFINITY when x is near no feature (then t_err reports it)
-}
 
 }  // namespace
 
@@ -172,7 +118,7 @@ Evaluation evaluate(const SegmentCylinderCase& c, const CastSegmentCylinderImpl&
     // "Near a feature": within 4x the t bound, which is t_err's own reach
     // (its bound plus the output resolution of 4 smallest subnormals).
     const Q near = times_scale(4 * tol.t, e.scale) + oracle::to_q(16 * std::numeric_limits<double>::denorm_min());
-    e.normal_err = normal_error(qc, x, h.normal, near);
+    e.normal_err = cylinder_normal_error(qc, x, h.normal, near);
   }
   // point must be S(t).
   const QVec dp = oracle::to_q(h.point) - x;

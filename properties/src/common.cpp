@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <limits>
 
+#include "geomcheck/oracles/cylinder_sphere.hpp"
 #include "geomcheck/properties/tolerances.hpp"
 
 namespace geomcheck {
@@ -57,6 +58,64 @@ CheckResult judge(QueryId id, const Evaluation& e) {
   if (auto f = over("t", e.t_err, tol.t)) return f;
   if (!e.extra_failure.empty()) return Failure{"oracle-bracketing", e.extra_failure + "; oracle: " + e.truth_text + "; production: " + e.prod_text};
   return std::nullopt;
+}
+
+namespace {
+// Unit vector (as doubles) of an exact rational vector.
+Vec3 unit_of(const oracle::QVec& v) {
+  const oracle::QInterval len = oracle::sqrt_interval(oracle::dot(v, v));
+  const oracle::Q l = (len.lo + len.hi) / 2;
+  return {oracle::to_double(v.x / l), oracle::to_double(v.y / l), oracle::to_double(v.z / l)};
+}
+
+// Distance of unit n from the cone spanned by unit generators g1, g2 (orthogonal).
+double cone_distance(Vec3 n, Vec3 g1, Vec3 g2) {
+  const double a = dot(n, g1), b = dot(n, g2);
+  const Vec3 proj = std::fmax(a, 0.0) * g1 + std::fmax(b, 0.0) * g2;
+  const double pl = length(proj);
+  if (pl == 0) return length(n);
+  return length(n - (1.0 / pl) * proj);
+}
+
+}  // namespace
+
+// Error of production's outward normal at its own hit point x (exact).
+double cylinder_normal_error(const oracle::QCylinder& c, const oracle::QVec& x, Vec3 n, const oracle::Q& qnear) {
+  const oracle::QVec d = c.q - c.p;
+  const oracle::Q dd = oracle::dot(d, d);
+  const oracle::QVec xr = x - c.p;
+  const oracle::Q ax = oracle::dot(xr, d);
+  const oracle::QInterval len = oracle::sqrt_interval(dd);
+  // Gaps to the two cap planes and to the side, certified.
+  const oracle::QInterval gp = oracle::point(ax < 0 ? -ax : ax) / len;
+  const oracle::Q axq = dd - ax;
+  const oracle::QInterval gq = oracle::point(axq < 0 ? -axq : axq) / len;
+  const oracle::QVec perp = xr - (ax / dd) * d;
+  const oracle::Q rho2 = oracle::dot(perp, perp);
+  oracle::QInterval gs = oracle::sqrt_interval(rho2) - oracle::point(c.r);
+  if (gs.lo < 0 && gs.hi < 0) gs = -gs;
+  else if (gs.lo < 0) gs = {oracle::Q(0), gs.hi > -gs.lo ? gs.hi : -gs.lo};
+  const Vec3 u = unit_of(d);
+  const bool near_p = gp.lo <= qnear, near_q = gq.lo <= qnear, near_s = gs.lo <= qnear;
+  double best = INFINITY;
+  if (near_p) best = std::fmin(best, length(n - (-u)));
+  if (near_q) best = std::fmin(best, length(n - u));
+  // A cylinder thinner than `near` has no meaningful radial direction at
+  // this tolerance (its hit point's offset from the axis is noise).
+  if (rho2 > 0 && c.r > qnear) {
+    const Vec3 radial = unit_of(perp);
+    if (near_s) best = std::fmin(best, length(n - radial));
+    if (near_s && near_p) best = std::fmin(best, cone_distance(n, -u, radial));
+    if (near_s && near_q) best = std::fmin(best, cone_distance(n, u, radial));
+  } else if (near_s) {
+    // On a cylinder thinner than `near` (r = 0: a segment):
+    // every perpendicular is a side normal, and next to a cap the cone is
+    // the whole hemisphere around the cap normal.
+    best = std::fmin(best, std::fabs(dot(n, u)));
+    if (near_p) best = std::fmin(best, std::fmax(0.0, dot(n, u)));
+    if (near_q) best = std::fmin(best, std::fmax(0.0, -dot(n, u)));
+  }
+  return best;  // INFINITY when x is near no feature (then t_err reports it)
 }
 
 const char* move_name(int move) {

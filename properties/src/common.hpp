@@ -23,6 +23,11 @@ oracle::Q times_scale(double k, double scale);
 /// max |x - v| over the enclosure x, divided by scale, rounded up.
 double rel_error(const oracle::QInterval& x, double v, double scale);
 
+/// Error of an outward normal n of the cylinder at a point x on (or near) its
+/// surface: its distance from the normal cone of the features (caps, side,
+/// rims) within qnear of x; INFINITY when x is near no feature.
+double cylinder_normal_error(const oracle::QCylinder& c, const oracle::QVec& x, Vec3 n, const oracle::Q& qnear);
+
 /// Every check of a query, in order, stopping at the first failure: the
 /// body of each query's check_all (the overloads are the query's own).
 template <class Case, class Impl>

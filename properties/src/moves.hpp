@@ -79,5 +79,9 @@ bool applicable(const Case& c, int move) {
 inline Sphere apply(const Move& m, const Sphere& s) { return {m.pt(s.c), m.len(s.r)}; }
 inline Cylinder apply(const Move& m, const Cylinder& c) { return {m.pt(c.p), m.pt(c.q), m.len(c.r)}; }
 inline Segment apply(const Move& m, const Segment& s) { return {m.pt(s.a), m.pt(s.b)}; }
+inline Capsule apply(const Move& m, const Capsule& c) { return {m.pt(c.p), m.pt(c.q), m.len(c.r)}; }
+/// A displacement scales with the scene (unlike a normal).
+inline Vec3 displacement(const Move& m, Vec3 d) { return m.id == 5 ? m.pt(d) - m.pt(Vec3{0, 0, 0}) : m.pt(d); }
+inline MovingSphere apply(const Move& m, const MovingSphere& s) { return {m.pt(s.c), m.len(s.r), displacement(m, s.delta)}; }
 
 }  // namespace geomcheck::moves

@@ -22,7 +22,11 @@
   X(collide_cylinder_sphere, Collide, Cylinder, Sphere,                                  \
     "overlap/collide(Cylinder, Sphere): true penetration depth, minimal translation")   \
   X(cast_segment_cylinder, Cast, Segment, Cylinder,                                      \
-    "cast(Segment, Cylinder): first hit from the segment start")
+    "cast(Segment, Cylinder): first hit from the segment start")                         \
+  X(collide_cylinder_capsule, Collide, Cylinder, Capsule,                                \
+    "overlap/collide(Cylinder, Capsule): exact verdict; true depth while the capsule's segment stays outside") \
+  X(sweep_sphere_cylinder, Sweep, MovingSphere, Cylinder,                                \
+    "sweep(Sphere, delta, Cylinder): first time of contact of a moving sphere")
 
 namespace geomcheck {
 

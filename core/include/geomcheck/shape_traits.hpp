@@ -86,4 +86,16 @@ template <> struct ShapeTraits<Triangle> {
   }
 };
 
+template <> struct ShapeTraits<MovingSphere> {
+  static constexpr const char* kind = "moving_sphere";
+  static constexpr std::array<ShapeField, 3> fields{{{"c", 3}, {"r", 1}, {"delta", 3}}};
+  static constexpr std::size_t size = 7;
+  static void to(const MovingSphere& s, double* v) {
+    ShapeTraits<Segment>::put(s.c, v); v[3] = s.r; ShapeTraits<Segment>::put(s.delta, v + 4);
+  }
+  static MovingSphere from(const double* v) {
+    return {ShapeTraits<Segment>::get(v), v[3], ShapeTraits<Segment>::get(v + 4)};
+  }
+};
+
 }  // namespace geomcheck

@@ -16,6 +16,9 @@
 //                      may assume them orthonormal).
 //   Triangle{a, b, c}  the closed triangle; a degenerate one is its segment
 //                      or point.
+//   MovingSphere{c, r, delta}  the first argument of a sweep: the ball
+//                      Sphere{c, r} moving to c + delta (positions
+//                      c + t delta, t in [0, 1], computed exactly).
 //
 // `is_valid` is the single gate: non-finite values, negative radii or
 // extents and a zero-length cylinder axis are invalid, and every query
@@ -42,6 +45,8 @@ struct Cylinder { Vec3 p, q; double r = 0; };
 struct Obb { Vec3 c; std::array<Vec3, 3> axes{{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}}; Vec3 e; };
 /// Closed triangle.
 struct Triangle { Vec3 a, b, c; };
+/// A ball of centre `c` and radius `r` moving by `delta` (sweep queries).
+struct MovingSphere { Vec3 c; double r = 0; Vec3 delta; };
 
 namespace detail {
 /// Pairwise sum of z[lo, hi): dependency depth log2(n), not n.
@@ -81,5 +86,10 @@ inline bool is_valid(const Obb& s) {
 }
 /// Valid: finite vertices.
 inline bool is_valid(const Triangle& s) { return all_finite(s.a) && all_finite(s.b) && all_finite(s.c); }
+/// Valid: finite centre, radius >= 0 and displacement, and a finite end
+/// position c + delta (so that every position of the sweep is finite).
+inline bool is_valid(const MovingSphere& s) {
+  return all_finite(s.c.x, s.c.y, s.c.z, s.r, s.delta.x, s.delta.y, s.delta.z) && s.r >= 0 && all_finite(s.c + s.delta);
+}
 
 }  // namespace geomcheck

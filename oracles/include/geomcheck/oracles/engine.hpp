@@ -72,6 +72,10 @@ ConvexShape make_shape(const Capsule& c);
 ConvexShape make_shape(const Cylinder& c);
 ConvexShape make_shape(const Obb& b);
 ConvexShape make_shape(const Triangle& t);
+/// The capsule (segment when r == 0) of exact rational end points p, q and
+/// radius r >= 0: for shapes the harness constructs (a sweep's path, its
+/// prefix up to a time t), which doubles cannot hold.
+ConvexShape make_capsule(const QVec& p, const QVec& q, const Q& r);
 /// The shape translated by an exact vector (same kind).
 ConvexShape translated(const ConvexShape& s, const QVec& t);
 /// The shape swept along [0, delta]: s (+) segment(0, delta). Kind Hull:

@@ -35,11 +35,27 @@ struct CastSegmentCylinderImpl {
   CastHit (*cast)(const Segment&, const Cylinder&);
 };
 
+/// The implementation under test of collide_cylinder_capsule.
+struct CylinderCapsuleImpl {
+  const char* name;
+  bool (*overlap)(const Cylinder&, const Capsule&);
+  Contact (*collide)(const Cylinder&, const Capsule&);
+};
+/// The implementation under test of sweep_sphere_cylinder.
+struct SweepSphereCylinderImpl {
+  const char* name;
+  CastHit (*sweep)(const MovingSphere&, const Cylinder&);
+};
+
 extern const CylinderSphereImpl kProductionCylinderSphere;
 extern const CastSegmentCylinderImpl kProductionCastSegmentCylinder;
+extern const CylinderCapsuleImpl kProductionCylinderCapsule;
+extern const SweepSphereCylinderImpl kProductionSweepSphereCylinder;
 
 using CylinderSphereCase = QueryTraits<QueryId::collide_cylinder_sphere>::Case;
 using SegmentCylinderCase = QueryTraits<QueryId::cast_segment_cylinder>::Case;
+using CylinderCapsuleCase = QueryTraits<QueryId::collide_cylinder_capsule>::Case;
+using SweepCylinderCase = QueryTraits<QueryId::sweep_sphere_cylinder>::Case;
 
 /// Production held against the oracle on one case: everything a report or a
 /// check needs. Errors are multiples of `scale`; NaN where not applicable.
@@ -68,6 +84,8 @@ struct Evaluation {
 
 Evaluation evaluate(const CylinderSphereCase& c, const CylinderSphereImpl& impl = kProductionCylinderSphere);
 Evaluation evaluate(const SegmentCylinderCase& c, const CastSegmentCylinderImpl& impl = kProductionCastSegmentCylinder);
+Evaluation evaluate(const CylinderCapsuleCase& c, const CylinderCapsuleImpl& impl = kProductionCylinderCapsule);
+Evaluation evaluate(const SweepCylinderCase& c, const SweepSphereCylinderImpl& impl = kProductionSweepSphereCylinder);
 
 /// Compares an evaluation with the query's tolerances (tolerances.hpp).
 CheckResult judge(QueryId id, const Evaluation& e);
@@ -100,6 +118,39 @@ CheckResult check_metamorphic(const SegmentCylinderCase& c, int move, const Cast
 CheckResult check_monotone(const SegmentCylinderCase& c, const CastSegmentCylinderImpl& impl = kProductionCastSegmentCylinder);
 CheckResult check_robust(const SegmentCylinderCase& c, const CastSegmentCylinderImpl& impl = kProductionCastSegmentCylinder);
 CheckResult check_all(const SegmentCylinderCase& c, const CastSegmentCylinderImpl& impl = kProductionCastSegmentCylinder);
+
+// --- collide_cylinder_capsule --------------------------------------------------
+/// Agreement with the engine outside the band; the depth claim (shallow
+/// contacts: true depth and minimal-translation normal), point in both.
+CheckResult check_oracle(const CylinderCapsuleCase& c, const CylinderCapsuleImpl& impl = kProductionCylinderCapsule);
+/// overlap == collide.hit; unit normal; depth >= 0 equals the overlap along the normal; no NaN.
+CheckResult check_consistency(const CylinderCapsuleCase& c, const CylinderCapsuleImpl& impl = kProductionCylinderCapsule);
+/// (A,B) and (B,A) agree, normal flips; caps swapped, capsule reversed: same verdict (band), same depth.
+CheckResult check_symmetry(const CylinderCapsuleCase& c, const CylinderCapsuleImpl& impl = kProductionCylinderCapsule);
+CheckResult check_metamorphic(const CylinderCapsuleCase& c, int move, const CylinderCapsuleImpl& impl = kProductionCylinderCapsule);
+/// Growing either radius never turns overlap into separation.
+CheckResult check_monotone(const CylinderCapsuleCase& c, const CylinderCapsuleImpl& impl = kProductionCylinderCapsule);
+CheckResult check_robust(const CylinderCapsuleCase& c, const CylinderCapsuleImpl& impl = kProductionCylinderCapsule);
+CheckResult check_all(const CylinderCapsuleCase& c, const CylinderCapsuleImpl& impl = kProductionCylinderCapsule);
+
+// --- sweep_sphere_cylinder -----------------------------------------------------
+/// Hit/miss agrees with the engine (the swept capsule against the cylinder)
+/// outside the band; t: the ball at t touches (to the bound) and the sweep up
+/// to t stays out (bracketing, certified by the engine); point on the
+/// cylinder at the ball; normal in the normal cone there.
+CheckResult check_oracle(const SweepCylinderCase& c, const SweepSphereCylinderImpl& impl = kProductionSweepSphereCylinder);
+/// t in [0,1]; starts_inside iff the ball meets the cylinder at t = 0
+/// (overlap(Cylinder, Sphere)); the ball at t meets the cylinder and just
+/// before t does not (collide(Cylinder, Sphere)); the swept capsule up to 1
+/// agrees with overlap(Cylinder, Capsule) outside the band.
+CheckResult check_consistency(const SweepCylinderCase& c, const SweepSphereCylinderImpl& impl = kProductionSweepSphereCylinder);
+/// Caps swapped: same answer to the bounds.
+CheckResult check_symmetry(const SweepCylinderCase& c, const SweepSphereCylinderImpl& impl = kProductionSweepSphereCylinder);
+CheckResult check_metamorphic(const SweepCylinderCase& c, int move, const SweepSphereCylinderImpl& impl = kProductionSweepSphereCylinder);
+/// A bigger ball, a wider cylinder or a longer sweep never turns a hit into a miss (outside the band).
+CheckResult check_monotone(const SweepCylinderCase& c, const SweepSphereCylinderImpl& impl = kProductionSweepSphereCylinder);
+CheckResult check_robust(const SweepCylinderCase& c, const SweepSphereCylinderImpl& impl = kProductionSweepSphereCylinder);
+CheckResult check_all(const SweepCylinderCase& c, const SweepSphereCylinderImpl& impl = kProductionSweepSphereCylinder);
 
 /// Number of metamorphic moves understood by check_metamorphic (0..kNumMoves-1).
 inline constexpr int kNumMoves = 6;

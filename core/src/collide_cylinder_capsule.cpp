@@ -1,0 +1,222 @@
+#include "geomcheck/collide_cylinder_capsule.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <utility>
+
+#include "geomcheck/detail/frame.hpp"
+#include "geomcheck/detail/segment_tube.hpp"
+
+namespace geomcheck {
+
+namespace {
+
+// The capsule's segment S(l) = a + l e, l in [0, 1], measured in the
+// cylinder's frame: axial coordinate z(l) = za + l ze from the mid point,
+// radial vector w(l) = wa + l we (perpendicular to the axis).
+struct SegmentInFrame {
+  detail::AxisFrame f;
+  double r;
+  Vec3 a, e;        // world: start and direction of S
+  double za, ze;
+  Vec3 wa, we;
+  SegmentInFrame(const Cylinder& cyl, const Capsule& cap) : f(cyl), r(cyl.r), a(cap.p), e(cap.q - cap.p) {
+    const Vec3 va = a - f.mid;
+    za = dot(va, f.u);
+    ze = dot(e, f.u);
+    wa = va - za * f.u;
+    we = e - ze * f.u;
+  }
+  Vec3 point(double l) const { return a + l * e; }
+  // Distance from S(l) to the solid cylinder, from the offsets beyond the
+  // cap plane and beyond the side.
+  double dist(double l) const {
+    const double z = za + l * ze;
+    const double rho = detail::safe_length(wa + l * we);
+    const double ea = std::max(std::fabs(z) - f.half, 0.0);
+    const double er = std::max(rho - r, 0.0);
+    if (ea == 0) return er;
+    if (er == 0) return ea;
+    return detail::safe_length(Vec3{ea, er, 0});
+  }
+  // Beyond a cap plane and outside the radius at l: the rim piece.
+  bool at_rim(double l) const {
+    return std::fabs(za + l * ze) > f.half && detail::safe_length(wa + l * we) > r;
+  }
+};
+
+// On a rim piece the squared distance F(l) = (|z| - h)^2 + (rho - r)^2 is
+// smooth and convex: its minimum on [lo, hi] by Newton on F' = 0, kept
+// inside a shrinking bracket (bisection when a step leaves it).
+double minimize_rim(const SegmentInFrame& s, double lo, double hi) {
+  const double sz = s.za + 0.5 * (lo + hi) * s.ze >= 0 ? 1.0 : -1.0;
+  const double we2 = dot(s.we, s.we);
+  auto deriv = [&](double l, double& d1, double& d2) {
+    const double ea = sz * (s.za + l * s.ze) - s.f.half;
+    const Vec3 w = s.wa + l * s.we;
+    const double rho = detail::safe_length(w);
+    const double er = rho - s.r;
+    const double rp = rho > 0 ? dot(w, s.we) / rho : 0.0;
+    d1 = ea * sz * s.ze + er * rp;
+    d2 = s.ze * s.ze + rp * rp + (rho > 0 ? er * (we2 - rp * rp) / rho : 0.0);
+  };
+  double d1, d2;
+  deriv(lo, d1, d2);
+  if (d1 >= 0) return lo;
+  deriv(hi, d1, d2);
+  if (d1 <= 0) return hi;
+  double l = 0.5 * (lo + hi);
+  for (int it = 0; it < 80 && hi - lo > 0x1p-60; ++it) {
+    deriv(l, d1, d2);
+    if (d1 == 0) return l;
+    (d1 < 0 ? lo : hi) = l;
+    double next = d2 > 0 ? l - d1 / d2 : 0.5 * (lo + hi);
+    if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
+    if (next == l) break;
+    l = next;
+  }
+  return l;
+}
+
+// Where S comes closest to the cylinder: l* and D = dist(S(l*), C). D == 0
+// when S meets the cylinder (then l* is inside it).
+struct Closest {
+  double l = 0, d = 0;
+};
+
+Closest closest(const SegmentInFrame& s, const Cylinder& cyl) {
+  // S inside the cylinder somewhere: the robust segment/cylinder interval.
+  const detail::UnitAndLength axis(cyl.q - cyl.p);
+  const detail::TubeInterval iv = detail::tube_interval(s.a - cyl.p, s.e, axis.u, axis.len, 0.0, cyl.r);
+  if (!iv.empty && iv.entry <= 1 && iv.exit >= 0) {
+    return {0.5 * (std::max(iv.entry, 0.0) + std::min(iv.exit, 1.0)), 0.0};
+  }
+  // dist(S(l), C) is convex in l: its minimum over [0, 1] is at an end, at
+  // a kink (a cap plane or the radius crossed) or at a stationary point of
+  // a smooth piece (closest approach to the axis line; on a rim piece, to
+  // the rim circle).
+  double cand[10];
+  int n = 0;
+  cand[n++] = 0;
+  cand[n++] = 1;
+  auto add = [&](double l) {
+    if (l > 0 && l < 1) cand[n++] = l;
+  };
+  if (s.ze != 0) {
+    add((-s.f.half - s.za) / s.ze);
+    add((s.f.half - s.za) / s.ze);
+  }
+  const double we2 = dot(s.we, s.we);
+  if (we2 > 0) add(-dot(s.wa, s.we) / we2);  // closest approach to the axis line
+  // The radius crossings (roots of rho(l) = r) where the line meets the
+  // infinite cylinder: that interval's ends (NaN or infinite otherwise).
+  add(iv.cyl_lo);
+  add(iv.cyl_hi);
+  for (int i = 1; i < n; ++i)  // insertion sort of at most 7 values
+    for (int j = i; j > 0 && cand[j] < cand[j - 1]; --j) std::swap(cand[j], cand[j - 1]);
+  int best = 0;
+  double bd = s.dist(cand[0]);
+  for (int i = 1; i < n; ++i) {
+    const double d = s.dist(cand[i]);
+    if (d < bd) bd = d, best = i;
+  }
+  Closest out{cand[best], bd};
+  // The minimum lies between the best candidate's neighbours; a rim piece
+  // there has its stationary point inside.
+  for (int side = -1; side <= 1; side += 2) {
+    const int j = best + side;
+    if (j < 0 || j >= n) continue;
+    const double lo = std::min(cand[best], cand[j]), hi = std::max(cand[best], cand[j]);
+    if (!(hi > lo) || !s.at_rim(0.5 * (lo + hi))) continue;
+    const double l = minimize_rim(s, lo, hi);
+    const double d = s.dist(l);
+    if (d < out.d) out = {l, d};
+  }
+  return out;
+}
+
+// Overlap of the shapes along unit n (from the cylinder towards the
+// capsule): h_cyl(n) + h_cap(-n), by the support functions.
+double overlap_along(const Cylinder& cyl, const detail::AxisFrame& f, const Capsule& cap, Vec3 n) {
+  const double nu = dot(n, f.u);
+  const double h_cyl = dot(n, f.mid) + std::fabs(nu) * f.half + cyl.r * detail::safe_length(n - nu * f.u);
+  const double low_cap = std::min(dot(n, cap.p), dot(n, cap.q)) - cap.r;
+  return h_cyl - low_cap;
+}
+
+bool overlap_scaled(const Cylinder& cyl, const Capsule& cap) {
+  if (!is_valid(cyl)) return false;
+  const SegmentInFrame s(cyl, cap);
+  return closest(s, cyl).d <= cap.r;
+}
+
+Contact collide_scaled(const Cylinder& cyl, const Capsule& cap) {
+  Contact out;
+  if (!is_valid(cyl)) return out;
+  const SegmentInFrame s(cyl, cap);
+  const Closest k = closest(s, cyl);
+  if (!(k.d <= cap.r)) return out;
+  const double scene = std::max(detail::largest(cyl), detail::largest(cap));
+  const double noise = 16 * 0x1p-52 * std::max(scene, s.f.half);
+  out.hit = true;
+  const Vec3 x = s.point(k.l);
+  if (k.d > 0) {
+    // Shallow: the sphere contact at S's closest point (true depth).
+    const detail::ClosestOnCylinder c = detail::closest_on_cylinder(cyl, s.f, x, noise);
+    if (!c.inside) {
+      out.point = c.point;
+      out.normal = c.normal;
+      out.depth = std::max(cap.r - k.d, 0.0);
+      return out;
+    }
+  }
+  // Deep: S enters the cylinder. The least overlap over the candidate
+  // directions: the axis both ways, the radial direction of S's closest
+  // approach to the axis line (both ways), the common perpendicular of S and
+  // the axis (both ways).
+  out.point = x;
+  Vec3 cands[6];
+  int n = 0;
+  cands[n++] = s.f.u;
+  cands[n++] = -s.f.u;
+  const double we2 = dot(s.we, s.we);
+  const double lc = we2 > 0 ? std::clamp(-dot(s.wa, s.we) / we2, 0.0, 1.0) : 0.5;
+  const Vec3 wc = s.wa + lc * s.we;
+  if (detail::safe_length(wc) > noise) {
+    const Vec3 rd = detail::unit_perpendicular_part(wc, s.f.u);
+    cands[n++] = rd;
+    cands[n++] = -rd;
+  }
+  if (detail::safe_length(s.we) > noise) {
+    const Vec3 cp = detail::normalized(cross(s.f.u, detail::normalized(s.we)));
+    cands[n++] = cp;
+    cands[n++] = -cp;
+  }
+  double best = std::numeric_limits<double>::infinity();
+  for (int i = 0; i < n; ++i) {
+    const double o = overlap_along(cyl, s.f, cap, cands[i]);
+    if (o < best) best = o, out.normal = cands[i];
+  }
+  out.depth = std::min(std::max(best, 0.0), std::numeric_limits<double>::max());
+  return out;
+}
+
+}  // namespace
+
+bool overlap(const Cylinder& cyl_in, const Capsule& cap_in) {
+  if (!is_valid(cyl_in) || !is_valid(cap_in)) return false;
+  const detail::SceneScale sc(std::max(detail::largest(cyl_in), detail::largest(cap_in)));
+  return overlap_scaled(sc.in(cyl_in), sc.in(cap_in));
+}
+
+Contact collide(const Cylinder& cyl_in, const Capsule& cap_in) {
+  if (!is_valid(cyl_in) || !is_valid(cap_in)) return {};
+  const detail::SceneScale sc(std::max(detail::largest(cyl_in), detail::largest(cap_in)));
+  Contact out = collide_scaled(sc.in(cyl_in), sc.in(cap_in));
+  out.point = sc.out(out.point);
+  out.depth = std::min(sc.out(out.depth), std::numeric_limits<double>::max());
+  return out;
+}
+
+}  // namespace geomcheck

@@ -1,0 +1,39 @@
+// geomcheck — the exact answer for a capsule (or a swept ball: the capsule
+// of its path) against a cylinder, through the certified engine (internal
+// to properties/).
+#pragma once
+
+#include <string>
+
+#include "geomcheck/oracles/engine.hpp"
+
+namespace geomcheck {
+
+/// The truth of Capsule{p, q, r} (exact rational end points) against a cylinder.
+struct CapsuleTruth {
+  oracle::Verdict verdict = oracle::Verdict::Undecided;
+  /// Certified signed distance of the capsule from the cylinder (> 0 gap,
+  /// < 0 minus the penetration depth). Narrow while the segment pq stays
+  /// outside; when pq enters the cylinder only hi <= -r is sharp.
+  oracle::QInterval signed_distance;
+  /// The segment pq certified outside the cylinder: then signed_distance is
+  /// D - r with D = dist(pq, cylinder), enclosed to 1e-20 * scale.
+  bool core_outside = false;
+  oracle::QInterval core_distance;  ///< D (when core_outside)
+  std::string text;                 ///< human readable
+};
+
+/// Engine answers for the capsule: the segment pq against the cylinder
+/// (distance refined to 1e-20 * scale), then, only when the capsule's
+/// verdict is not decided by that distance, the capsule itself.
+CapsuleTruth capsule_truth(const oracle::ConvexShape& cylinder, const oracle::QVec& p, const oracle::QVec& q,
+                           const oracle::Q& r);
+
+/// Overlap of A and B measured along unit(n): (h_A(n) + h_B(-n)) / |n|, certified.
+oracle::QInterval overlap_along(const oracle::ConvexShape& a, const oracle::ConvexShape& b, const oracle::QVec& n);
+
+/// Certified signed distance of a point from the capsule pq, r (< 0 inside).
+oracle::QInterval capsule_signed_distance(const oracle::QVec& p, const oracle::QVec& q, const oracle::Q& r,
+                                          const oracle::QVec& x);
+
+}  // namespace geomcheck

@@ -1,0 +1,222 @@
+#include <cmath>
+#include <sstream>
+
+#include "capsule_truth.hpp"
+#include "common.hpp"
+#include "geomcheck/collide_cylinder_capsule.hpp"
+#include "geomcheck/oracles/cylinder_sphere.hpp"
+#include "geomcheck/properties/checks.hpp"
+#include "geomcheck/properties/tolerances.hpp"
+#include "moves.hpp"
+
+namespace geomcheck {
+
+namespace {
+
+constexpr QueryId kId = QueryId::collide_cylinder_capsule;
+using oracle::Q;
+using oracle::QInterval;
+using oracle::QVec;
+
+std::string describe(const Contact& c, bool ov) {
+  std::ostringstream o;
+  o << "overlap=" << (ov ? "yes" : "no") << " collide.hit=" << (c.hit ? "yes" : "no");
+  if (c.hit) o << " depth=" << fmt("%.17g", c.depth) << " normal=" << vec(c.normal) << " point=" << vec(c.point);
+  return o.str();
+}
+
+bool finite_contact(const Contact& c) { return is_finite(c.point) && is_finite(c.normal) && std::isfinite(c.depth); }
+bool valid_case(const CylinderCapsuleCase& c) { return is_valid(c.a) && is_valid(c.b); }
+
+double scale_of(const CylinderCapsuleCase& c) {
+  const double m = std::max({max_abs(c.a.p), max_abs(c.a.q), c.a.r, oracle::extent(c.a.p, c.a.q), max_abs(c.b.p),
+                             max_abs(c.b.q), c.b.r, oracle::extent(c.b.p, c.b.q)});
+  return m > 0 ? m : 1.0;
+}
+
+}  // namespace
+
+const CylinderCapsuleImpl kProductionCylinderCapsule = {
+    "production",
+    [](const Cylinder& a, const Capsule& b) { return overlap(a, b); },
+    [](const Cylinder& a, const Capsule& b) { return collide(a, b); },
+};
+
+Evaluation evaluate(const CylinderCapsuleCase& c, const CylinderCapsuleImpl& impl) {
+  Evaluation e;
+  const bool ov = impl.overlap(c.a, c.b);
+  const Contact ct = impl.collide(c.a, c.b);
+  e.prod_hit = ov;
+  e.prod_text = describe(ct, ov);
+  e.valid = valid_case(c);
+  if (!e.valid) {
+    e.truth_text = "invalid input: no overlap";
+    e.disagree = ov || ct.hit;
+    return e;
+  }
+  const Tolerances tol = tolerances(kId);
+  e.scale = scale_of(c);
+  const oracle::ConvexShape cyl = oracle::make_shape(c.a);
+  const QVec p = oracle::to_q(c.b.p), q = oracle::to_q(c.b.q);
+  const Q r = oracle::to_q(c.b.r);
+  const CapsuleTruth truth = capsule_truth(cyl, p, q, r);
+  e.verdict = truth.verdict;
+  e.truth_hit = truth.verdict != oracle::Verdict::Separated;
+  e.signed_distance = truth.signed_distance.mid();
+  e.truth_text = truth.text;
+  e.disagree = e.prod_hit != e.truth_hit;
+  const Q band = times_scale(tol.verdict, e.scale);
+  e.near_boundary = !(truth.signed_distance.lo > band || truth.signed_distance.hi < -band);
+  if (e.disagree) {
+    e.margin = std::fabs(e.signed_distance) / e.scale;
+    e.excused = e.near_boundary;
+  }
+  if (ct.hit && finite_contact(ct)) {
+    e.unit_err = std::fabs(length(ct.normal) - 1);
+    if (e.truth_hit) {
+      // The depth claim holds for shallow contacts: the segment certainly
+      // outside the cylinder by more than the band (production may take
+      // either branch within it).
+      if (truth.core_outside && truth.core_distance.lo > band) {
+        const QInterval depth = -truth.signed_distance;
+        if (std::isfinite(oracle::to_double(depth.hi))) e.depth_err = rel_error(depth, ct.depth, e.scale);
+        if (max_abs(ct.normal) > 0) {
+          const QInterval along = overlap_along(cyl, oracle::make_capsule(p, q, r), oracle::to_q(ct.normal));
+          e.normal_err = rel_up(along.hi - depth.lo, e.scale);
+        }
+      }
+      const QVec x = oracle::to_q(ct.point);
+      const QInterval da = oracle::signed_distance(oracle::to_q(c.a), x);
+      const QInterval db = capsule_signed_distance(p, q, r, x);
+      const Q out = da.hi > db.hi ? da.hi : db.hi;
+      e.point_err = out > 0 ? rel_up(out, e.scale) : 0.0;
+    }
+  }
+  return e;
+}
+
+CheckResult check_oracle(const CylinderCapsuleCase& c, const CylinderCapsuleImpl& impl) {
+  return judge(kId, evaluate(c, impl));
+}
+
+CheckResult check_consistency(const CylinderCapsuleCase& c, const CylinderCapsuleImpl& impl) {
+  const bool ov = impl.overlap(c.a, c.b);
+  const Contact ct = impl.collide(c.a, c.b);
+  if (ov != ct.hit) return Failure{"consistency-overlap-vs-collide", describe(ct, ov)};
+  if (!ct.hit) return std::nullopt;
+  if (!finite_contact(ct)) return Failure{"consistency-finite", describe(ct, ov)};
+  const Tolerances tol = tolerances(kId);
+  if (std::fabs(length(ct.normal) - 1) > tol.unit) return Failure{"consistency-unit-normal", describe(ct, ov)};
+  if (!(ct.depth >= 0)) return Failure{"consistency-depth-nonnegative", describe(ct, ov)};
+  if (!valid_case(c)) return std::nullopt;
+  // depth equals the overlap of the shapes along the returned normal, in
+  // both the shallow and the deep branch.
+  const double scale = scale_of(c);
+  const QInterval along = overlap_along(oracle::make_shape(c.a), oracle::make_shape(c.b), oracle::to_q(ct.normal));
+  if (!std::isfinite(oracle::to_double(along.hi))) return std::nullopt;  // beyond the doubles: saturated depth
+  const double err = rel_error(along, ct.depth, scale);
+  if (err > tol.depth)
+    return Failure{"consistency-depth-along-normal",
+                   fmt("|depth - overlap along normal| = %.3g * scale > %.3g; ", err, tol.depth) + describe(ct, ov)};
+  return std::nullopt;
+}
+
+namespace {
+// Same solid, other representation: the verdicts must agree unless one case
+// is within the band; depths within twice the depth bound when both hit.
+CheckResult same_answer(const char* what, const CylinderCapsuleCase& c0, const CylinderCapsuleCase& c1,
+                        const CylinderCapsuleImpl& impl) {
+  const bool o0 = impl.overlap(c0.a, c0.b), o1 = impl.overlap(c1.a, c1.b);
+  if (o0 != o1) {
+    const Evaluation e0 = evaluate(c0, impl), e1 = evaluate(c1, impl);
+    if (e0.near_boundary || e1.near_boundary) return std::nullopt;
+    return Failure{what, std::string("overlap ") + (o0 ? "yes" : "no") + " becomes " + (o1 ? "yes" : "no") +
+                             "; oracle: " + e0.truth_text};
+  }
+  if (!o0) return std::nullopt;
+  const Contact k0 = impl.collide(c0.a, c0.b), k1 = impl.collide(c1.a, c1.b);
+  const double d = std::fabs(k0.depth - k1.depth) / scale_of(c0);
+  if (d > 2 * tolerances(kId).depth)
+    return Failure{std::string(what) + "-depth", fmt("depth differs by %.3g * scale; ", d) + describe(k0, o0) + " vs " + describe(k1, o1)};
+  return std::nullopt;
+}
+}  // namespace
+
+CheckResult check_symmetry(const CylinderCapsuleCase& c, const CylinderCapsuleImpl& impl) {
+  const bool ov = impl.overlap(c.a, c.b);
+  const Contact ct = impl.collide(c.a, c.b);
+  if (impl.overlap == kProductionCylinderCapsule.overlap) {
+    const Contact sw = collide(c.b, c.a);
+    const bool sov = overlap(c.b, c.a);
+    if (sov != ov || sw.hit != ct.hit || (ct.hit && !(sw.normal == -ct.normal)))
+      return Failure{"symmetry-argument-order", describe(ct, ov) + " vs swapped " + describe(sw, sov)};
+  }
+  if (!valid_case(c)) return std::nullopt;
+  if (auto f = same_answer("symmetry-caps-swapped", c, {{c.a.q, c.a.p, c.a.r}, c.b}, impl)) return f;
+  return same_answer("symmetry-capsule-reversed", c, {c.a, {c.b.q, c.b.p, c.b.r}}, impl);
+}
+
+CheckResult check_metamorphic(const CylinderCapsuleCase& c, int move, const CylinderCapsuleImpl& impl) {
+  if (!valid_case(c)) return std::nullopt;
+  const moves::Move m{move};
+  if (!moves::applicable(c, move)) return std::nullopt;
+  const CylinderCapsuleCase t{moves::apply(m, c.a), moves::apply(m, c.b)};
+  if (!valid_case(t)) return std::nullopt;
+  const bool ov = impl.overlap(c.a, c.b), ov2 = impl.overlap(t.a, t.b);
+  const Contact ct = impl.collide(c.a, c.b), ct2 = impl.collide(t.a, t.b);
+  const std::string what = std::string("metamorphic-") + move_name(move);
+  if (m.exact()) {
+    if (ov != ov2 || ct.hit != ct2.hit) return Failure{what, "verdict changed: " + describe(ct, ov) + " vs " + describe(ct2, ov2)};
+    // The normal is a free choice where the contact's radial offset is at
+    // the rounding level (then any perpendicular serves): production's
+    // contact point on the axis line.
+    const Vec3 d = c.a.q - c.a.p;
+    const double rho = length(cross(ct.point - c.a.p, d)) / length(d);
+    const bool free_normal = !(rho > 64 * 0x1p-52 * scale_of(c));
+    if (ct.hit && !(m.pt(ct.point) == ct2.point && (free_normal || m.vec(ct.normal) == ct2.normal) &&
+                    m.len(ct.depth) == ct2.depth))
+      return Failure{what, "answer not bit-identical: " + describe(ct, ov) + " vs " + describe(ct2, ov2)};
+    return std::nullopt;
+  }
+  if (ov != ov2) {
+    const Evaluation e0 = evaluate(c, impl), e1 = evaluate(t, impl);
+    const double slack = move == 5 ? moves::rigid_slack(c.a) * std::max(e0.scale, e1.scale) : 0.0;
+    auto near = [&](const Evaluation& e) {
+      return e.near_boundary || std::fabs(e.signed_distance) <= tolerances(kId).verdict * e.scale + slack;
+    };
+    if (!near(e0) && !near(e1))
+      return Failure{what, "verdict changed outside the band: " + describe(ct, ov) + " vs " + describe(ct2, ov2)};
+  }
+  return std::nullopt;
+}
+
+CheckResult check_monotone(const CylinderCapsuleCase& c, const CylinderCapsuleImpl& impl) {
+  if (!valid_case(c) || !impl.overlap(c.a, c.b)) return std::nullopt;
+  const double grow[] = {std::nextafter(c.b.r, INFINITY), c.b.r * 2 + 1e-300, c.b.r + 0.5 * c.a.r};
+  for (double r : grow) {
+    if (!std::isfinite(r)) continue;
+    if (!impl.overlap(c.a, Capsule{c.b.p, c.b.q, r}))
+      return Failure{"monotone-capsule-radius", fmt("overlap with capsule radius %.17g but not with %.17g", c.b.r, r)};
+  }
+  const double rc = std::nextafter(c.a.r, INFINITY);
+  if (std::isfinite(rc) && !impl.overlap(Cylinder{c.a.p, c.a.q, rc}, c.b))
+    return Failure{"monotone-cylinder-radius", fmt("overlap with cylinder radius %.17g but not with %.17g", c.a.r, rc)};
+  return std::nullopt;
+}
+
+CheckResult check_robust(const CylinderCapsuleCase& c, const CylinderCapsuleImpl& impl) {
+  const bool ov = impl.overlap(c.a, c.b);
+  const Contact ct = impl.collide(c.a, c.b);
+  if (!valid_case(c)) {
+    if (ov || ct.hit) return Failure{"robust-invalid-input", "invalid input reported a hit: " + describe(ct, ov)};
+    return std::nullopt;
+  }
+  if (ct.hit && !finite_contact(ct)) return Failure{"robust-finite-output", describe(ct, ov)};
+  if (ct.hit && !(std::fabs(length(ct.normal) - 1) <= 1e-12)) return Failure{"robust-unit-normal", describe(ct, ov)};
+  if (ov != ct.hit) return Failure{"robust-overlap-vs-collide", describe(ct, ov)};
+  return std::nullopt;
+}
+
+CheckResult check_all(const CylinderCapsuleCase& c, const CylinderCapsuleImpl& impl) { return all_checks(c, impl); }
+
+}  // namespace geomcheck

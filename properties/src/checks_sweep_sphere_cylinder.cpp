@@ -1,0 +1,254 @@
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <sstream>
+
+#include "capsule_truth.hpp"
+#include "common.hpp"
+#include "geomcheck/collide_cylinder_capsule.hpp"
+#include "geomcheck/collide_cylinder_sphere.hpp"
+#include "geomcheck/oracles/cast_segment_cylinder.hpp"
+#include "geomcheck/oracles/cylinder_sphere.hpp"
+#include "geomcheck/properties/checks.hpp"
+#include "geomcheck/properties/tolerances.hpp"
+#include "geomcheck/sweep_sphere_cylinder.hpp"
+#include "moves.hpp"
+
+namespace geomcheck {
+
+namespace {
+
+constexpr QueryId kId = QueryId::sweep_sphere_cylinder;
+using oracle::Q;
+using oracle::QInterval;
+using oracle::QVec;
+
+std::string describe(const CastHit& h) {
+  std::ostringstream o;
+  o << "hit=" << (h.hit ? "yes" : "no");
+  if (h.hit)
+    o << " t=" << fmt("%.17g", h.t) << " starts_inside=" << (h.starts_inside ? "yes" : "no")
+      << " point=" << vec(h.point) << " normal=" << vec(h.normal);
+  return o.str();
+}
+
+bool valid_case(const SweepCylinderCase& c) { return is_valid(c.a) && is_valid(c.b); }
+bool finite_hit(const CastHit& h) { return std::isfinite(h.t) && is_finite(h.point) && is_finite(h.normal); }
+
+double scale_of(const SweepCylinderCase& c) {
+  const Vec3 end = c.a.c + c.a.delta;
+  const double m = std::max({max_abs(c.a.c), is_finite(end) ? max_abs(end) : 0.0, c.a.r, max_abs(c.b.p),
+                             max_abs(c.b.q), c.b.r, oracle::extent(c.b.p, c.b.q)});
+  return m > 0 ? m : 1.0;
+}
+
+// The ball's centre at parameter t, exactly.
+QVec centre_at(const SweepCylinderCase& c, double t) {
+  return oracle::to_q(c.a.c) + oracle::to_q(t) * oracle::to_q(c.a.delta);
+}
+
+// The path of the ball from 0 to t (a capsule), its radius changed by dr,
+// certainly meets the cylinder? (dr < 0 shrinks; a radius below zero is the
+// segment against the cylinder shrunk by the rest, by the closed form.)
+bool path_meets(const SweepCylinderCase& c, double t, const Q& dr) {
+  const QVec a = oracle::to_q(c.a.c), b = centre_at(c, t);
+  const Q r = oracle::to_q(c.a.r) + dr;
+  if (r >= 0) {
+    const oracle::DistanceResult d = oracle::classify(oracle::make_shape(c.b), oracle::make_capsule(a, b, r));
+    return d.verdict != oracle::Verdict::Separated;
+  }
+  const auto sh = oracle::shrunk(oracle::to_q(c.b), -r);
+  return sh && oracle::solve_cast(oracle::QSegment{a, b}, *sh).hit;
+}
+
+}  // namespace
+
+const SweepSphereCylinderImpl kProductionSweepSphereCylinder = {
+    "production", [](const MovingSphere& s, const Cylinder& c) { return sweep(s, c); }};
+
+Evaluation evaluate(const SweepCylinderCase& c, const SweepSphereCylinderImpl& impl) {
+  Evaluation e;
+  const CastHit h = impl.sweep(c.a, c.b);
+  e.prod_hit = h.hit;
+  e.prod_text = describe(h);
+  e.valid = valid_case(c);
+  if (!e.valid) {
+    e.truth_text = "invalid input: no hit";
+    e.disagree = h.hit;
+    return e;
+  }
+  const Tolerances tol = tolerances(kId);
+  e.scale = scale_of(c);
+  const oracle::ConvexShape cyl = oracle::make_shape(c.b);
+  const QVec a = oracle::to_q(c.a.c), b = centre_at(c, 1.0);
+  const Q r = oracle::to_q(c.a.r);
+  // Hit iff the ball's path (the capsule from c to c + delta) meets the cylinder.
+  const CapsuleTruth truth = capsule_truth(cyl, a, b, r);
+  e.truth_hit = truth.verdict != oracle::Verdict::Separated;
+  e.verdict = truth.verdict;
+  e.signed_distance = truth.signed_distance.mid();
+  e.truth_text = std::string(e.truth_hit ? "hit" : "miss") + " (path " + truth.text + ")";
+  e.disagree = e.prod_hit != e.truth_hit;
+  const Q band = times_scale(tol.verdict, e.scale);
+  e.near_boundary = !(truth.signed_distance.lo > band || truth.signed_distance.hi < -band);
+  if (e.disagree) {
+    e.margin = std::fabs(e.signed_distance) / e.scale;
+    e.excused = e.near_boundary;
+    return e;
+  }
+  if (!h.hit || !e.truth_hit) return e;
+  if (!finite_hit(h) || !(h.t >= 0 && h.t <= 1)) {
+    e.extra_failure = "t outside [0, 1] or non-finite output";
+    return e;
+  }
+  const oracle::QCylinder qc = oracle::to_q(c.b);
+  const QVec x = centre_at(c, h.t);
+  // The ball at production's t: its signed distance from the cylinder.
+  const QInterval gap = oracle::signed_distance(qc, x) - oracle::point(r);
+  if (h.starts_inside) {
+    e.t_err = gap.hi > 0 ? rel_up(gap.hi, e.scale) : 0.0;
+  } else {
+    const Q lo = gap.lo < 0 ? -gap.lo : gap.lo, hi = gap.hi < 0 ? -gap.hi : gap.hi;
+    e.t_err = rel_up(lo > hi ? lo : hi, e.scale);
+    // Bracketing: the ball's path up to t never gets the t bound deep.
+    if (path_meets(c, h.t, -times_scale(tol.t, e.scale)))
+      e.extra_failure = "the ball's path up to t reaches deeper than the t bound into the cylinder (hit reported too late)";
+    e.unit_err = std::fabs(length(h.normal) - 1);
+    const QVec px = oracle::to_q(h.point);
+    const Q near = times_scale(4 * tol.t, e.scale) + oracle::to_q(16 * std::numeric_limits<double>::denorm_min());
+    e.normal_err = cylinder_normal_error(qc, px, h.normal, near);
+  }
+  // point: on the cylinder's surface (in it when starting inside) and on the ball at t.
+  const QVec px = oracle::to_q(h.point);
+  const QInterval on_cyl = oracle::signed_distance(qc, px);
+  const QVec off = px - x;
+  const QInterval on_ball = oracle::sqrt_interval(oracle::dot(off, off)) - oracle::point(r);
+  auto abs_hi = [](const QInterval& v) { const Q a = v.lo < 0 ? -v.lo : v.lo, b = v.hi < 0 ? -v.hi : v.hi; return a > b ? a : b; };
+  const Q pe = h.starts_inside ? std::max(on_cyl.hi, on_ball.hi) : std::max(abs_hi(on_cyl), abs_hi(on_ball));
+  e.point_err = pe > 0 ? rel_up(pe, e.scale) : 0.0;
+  return e;
+}
+
+CheckResult check_oracle(const SweepCylinderCase& c, const SweepSphereCylinderImpl& impl) { return judge(kId, evaluate(c, impl)); }
+
+CheckResult check_consistency(const SweepCylinderCase& c, const SweepSphereCylinderImpl& impl) {
+  const CastHit h = impl.sweep(c.a, c.b);
+  if (h.hit) {
+    if (!finite_hit(h)) return Failure{"consistency-finite", describe(h)};
+    if (!(h.t >= 0 && h.t <= 1)) return Failure{"consistency-t-range", describe(h)};
+    if (h.starts_inside && (h.t != 0 || !(h.normal == Vec3{})))
+      return Failure{"consistency-starts-inside", "starts_inside needs t == 0 and a zero normal: " + describe(h)};
+    if (!h.starts_inside && std::fabs(length(h.normal) - 1) > tolerances(kId).unit)
+      return Failure{"consistency-unit-normal", describe(h)};
+  }
+  if (!valid_case(c)) return std::nullopt;
+  const Tolerances tol = tolerances(kId);
+  const double scale = scale_of(c);
+  // starts_inside is the sphere query's verdict at t = 0.
+  const bool at0 = overlap(c.b, Sphere{c.a.c, c.a.r});
+  if (at0 != (h.hit && h.starts_inside))
+    return Failure{"consistency-starts-inside-vs-overlap", describe(h) + std::string("; overlap(Cylinder, Sphere) at t = 0: ") + (at0 ? "yes" : "no")};
+  // The swept capsule: the same hit/miss outside the band.
+  const Vec3 end = c.a.c + c.a.delta;
+  const bool cap = overlap(c.b, Capsule{c.a.c, end, c.a.r});
+  if (cap != h.hit) {
+    const SweepCylinderCase rounded{{c.a.c, c.a.r, end - c.a.c}, c.b};
+    const Evaluation e = evaluate(c, impl);
+    if (!e.near_boundary && !evaluate(rounded, impl).near_boundary)
+      return Failure{"consistency-sweep-vs-capsule", describe(h) + std::string("; overlap(Cylinder, Capsule) of the path: ") + (cap ? "yes" : "no")};
+  }
+  if (!h.hit || h.starts_inside) return std::nullopt;
+  // Repeated collide(Cylinder, Sphere): the ball at t, grown by the t bound,
+  // meets the cylinder; just before t, shrunk by it, it does not.
+  const double slack = tol.t * scale;
+  const Vec3 xt = c.a.c + h.t * c.a.delta;
+  if (!collide(c.b, Sphere{xt, c.a.r + 4 * slack}).hit)
+    return Failure{"consistency-collide-at-t", describe(h) + ": the ball at t (grown by the t bound) does not meet the cylinder"};
+  const double tb = h.t * (1 - 0x1p-20);
+  if (c.a.r > 4 * slack && collide(c.b, Sphere{c.a.c + tb * c.a.delta, c.a.r - 4 * slack}).hit)
+    return Failure{"consistency-collide-before-t", describe(h) + fmt(": the ball at t = %.17g (shrunk by the t bound) already meets the cylinder", tb)};
+  return std::nullopt;
+}
+
+namespace {
+CheckResult same_verdict(const char* what, const SweepCylinderCase& c0, const SweepCylinderCase& c1,
+                         const SweepSphereCylinderImpl& impl) {
+  const CastHit h0 = impl.sweep(c0.a, c0.b), h1 = impl.sweep(c1.a, c1.b);
+  if (h0.hit == h1.hit) return std::nullopt;
+  const Evaluation e0 = evaluate(c0, impl), e1 = evaluate(c1, impl);
+  if (e0.near_boundary || e1.near_boundary) return std::nullopt;
+  return Failure{what, describe(h0) + " vs " + describe(h1) + "; oracle: " + e0.truth_text + " / " + e1.truth_text};
+}
+}  // namespace
+
+CheckResult check_symmetry(const SweepCylinderCase& c, const SweepSphereCylinderImpl& impl) {
+  if (!valid_case(c)) return std::nullopt;
+  const SweepCylinderCase sw{c.a, {c.b.q, c.b.p, c.b.r}};
+  if (auto f = same_verdict("symmetry-caps-swapped", c, sw, impl)) return f;
+  const CastHit h0 = impl.sweep(c.a, c.b), h1 = impl.sweep(sw.a, sw.b);
+  if (h0.hit && h1.hit && h0.starts_inside != h1.starts_inside) {
+    const Evaluation e = evaluate(c, impl);
+    if (!e.near_boundary && !(e.t_err <= tolerances(kId).t))
+      return Failure{"symmetry-caps-swapped-start", describe(h0) + " vs " + describe(h1)};
+  }
+  return std::nullopt;
+}
+
+CheckResult check_metamorphic(const SweepCylinderCase& c, int move, const SweepSphereCylinderImpl& impl) {
+  if (!valid_case(c)) return std::nullopt;
+  const moves::Move m{move};
+  if (!moves::applicable(c, move)) return std::nullopt;
+  const SweepCylinderCase t{moves::apply(m, c.a), moves::apply(m, c.b)};
+  if (!valid_case(t)) return std::nullopt;
+  const std::string what = std::string("metamorphic-") + move_name(move);
+  if (m.exact()) {
+    const CastHit h0 = impl.sweep(c.a, c.b), h1 = impl.sweep(t.a, t.b);
+    if (h0.hit != h1.hit) return Failure{what, "verdict changed: " + describe(h0) + " vs " + describe(h1)};
+    const bool free_normal = !(c.b.r > 64 * 0x1p-52 * scale_of(c));
+    if (h0.hit && !(h0.t == h1.t && h0.starts_inside == h1.starts_inside && m.pt(h0.point) == h1.point &&
+                    (free_normal || m.vec(h0.normal) == h1.normal)))
+      return Failure{what, "answer not bit-identical: " + describe(h0) + " vs " + describe(h1)};
+    return std::nullopt;
+  }
+  if (move != 5) return same_verdict(what.c_str(), c, t, impl);
+  const CastHit h0 = impl.sweep(c.a, c.b), h1 = impl.sweep(t.a, t.b);
+  if (h0.hit == h1.hit) return std::nullopt;
+  const Evaluation e0 = evaluate(c, impl);
+  const double moved_scale = std::max(e0.scale, scale_of(t));
+  const double slack = tolerances(kId).verdict * e0.scale + moves::rigid_slack(c.b) * moved_scale;
+  if (std::fabs(e0.signed_distance) <= slack || e0.near_boundary) return std::nullopt;
+  return Failure{what, "verdict changed beyond the band and the motion's rounding: " + describe(h0) + " vs " + describe(h1)};
+}
+
+CheckResult check_monotone(const SweepCylinderCase& c, const SweepSphereCylinderImpl& impl) {
+  if (!valid_case(c) || !impl.sweep(c.a, c.b).hit) return std::nullopt;
+  auto lost = [&](const SweepCylinderCase& bigger) {
+    return !impl.sweep(bigger.a, bigger.b).hit && !evaluate(c, impl).near_boundary && !evaluate(bigger, impl).near_boundary;
+  };
+  const double big = c.a.r * 2 + 0x1p-20 * scale_of(c);
+  if (std::isfinite(big) && lost({{c.a.c, big, c.a.delta}, c.b}))
+    return Failure{"monotone-ball-radius", "hit with radius " + fmt("%.17g", c.a.r) + " but not with " + fmt("%.17g", big)};
+  const double wider = c.b.r * 2 + 0x1p-20 * length(c.b.q - c.b.p);
+  if (std::isfinite(wider) && lost({c.a, {c.b.p, c.b.q, wider}}))
+    return Failure{"monotone-cylinder-radius", "hit with radius " + fmt("%.17g", c.b.r) + " but not with " + fmt("%.17g", wider)};
+  const MovingSphere longer{c.a.c, c.a.r, 2.0 * c.a.delta};
+  if (is_valid(longer) && lost({longer, c.b}))
+    return Failure{"monotone-sweep-length", "hit, but the sweep extended to twice its length misses"};
+  return std::nullopt;
+}
+
+CheckResult check_robust(const SweepCylinderCase& c, const SweepSphereCylinderImpl& impl) {
+  const CastHit h = impl.sweep(c.a, c.b);
+  if (!valid_case(c)) {
+    if (h.hit) return Failure{"robust-invalid-input", "invalid input reported a hit: " + describe(h)};
+    return std::nullopt;
+  }
+  if (!h.hit) return std::nullopt;
+  if (!finite_hit(h) || !(h.t >= 0 && h.t <= 1)) return Failure{"robust-finite-output", describe(h)};
+  if (!h.starts_inside && !(std::fabs(length(h.normal) - 1) <= 1e-12)) return Failure{"robust-unit-normal", describe(h)};
+  return std::nullopt;
+}
+
+CheckResult check_all(const SweepCylinderCase& c, const SweepSphereCylinderImpl& impl) { return all_checks(c, impl); }
+
+}  // namespace geomcheck
