@@ -12,48 +12,49 @@ namespace geomcheck {
 
 namespace {
 
-// The capsule's segment S(l) = a + l e, l in [0, 1], measured in the
-// cylinder's frame: axial coordinate z(l) = za + l ze from the mid point,
-// radial vector w(l) = wa + l we (perpendicular to the axis).
+// The capsule's segment S(l) = a + l e, l in [0, 1], measured from the
+// cylinder's cap centre p (so that a scene far from the origin adds no
+// rounding of its own): axial coordinate z(l) = za + l ze along the unit
+// axis u (the cylinder is 0 <= z <= len), radial vector w(l) = wa + l we.
 struct SegmentInFrame {
-  detail::AxisFrame f;
-  double r;
-  Vec3 a, e;        // world: start and direction of S
+  Vec3 u;
+  double len, r;
+  Vec3 a, e;        // S's start (from p) and direction
   double za, ze;
   Vec3 wa, we;
-  SegmentInFrame(const Cylinder& cyl, const Capsule& cap) : f(cyl), r(cyl.r), a(cap.p), e(cap.q - cap.p) {
-    const Vec3 va = a - f.mid;
-    za = dot(va, f.u);
-    ze = dot(e, f.u);
-    wa = va - za * f.u;
-    we = e - ze * f.u;
+  SegmentInFrame(const Cylinder& cyl, const Capsule& cap) : r(cyl.r), a(cap.p - cyl.p), e(cap.q - cap.p) {
+    const detail::UnitAndLength ul(cyl.q - cyl.p);
+    u = ul.u;
+    len = ul.len;
+    za = dot(a, u);
+    ze = dot(e, u);
+    wa = a - za * u;
+    we = e - ze * u;
   }
-  Vec3 point(double l) const { return a + l * e; }
+  Vec3 point(double l) const { return a + l * e; }  // from p
+  double beyond(double z) const { return z < 0 ? -z : (z > len ? z - len : 0.0); }
   // Distance from S(l) to the solid cylinder, from the offsets beyond the
   // cap plane and beyond the side.
   double dist(double l) const {
-    const double z = za + l * ze;
-    const double rho = detail::safe_length(wa + l * we);
-    const double ea = std::max(std::fabs(z) - f.half, 0.0);
-    const double er = std::max(rho - r, 0.0);
+    const double ea = beyond(za + l * ze);
+    const double er = std::max(detail::safe_length(wa + l * we) - r, 0.0);
     if (ea == 0) return er;
     if (er == 0) return ea;
     return detail::safe_length(Vec3{ea, er, 0});
   }
   // Beyond a cap plane and outside the radius at l: the rim piece.
-  bool at_rim(double l) const {
-    return std::fabs(za + l * ze) > f.half && detail::safe_length(wa + l * we) > r;
-  }
+  bool at_rim(double l) const { return beyond(za + l * ze) > 0 && detail::safe_length(wa + l * we) > r; }
 };
 
-// On a rim piece the squared distance F(l) = (|z| - h)^2 + (rho - r)^2 is
+// On a rim piece the squared distance F(l) = (z - cap)^2 + (rho - r)^2 is
 // smooth and convex: its minimum on [lo, hi] by Newton on F' = 0, kept
 // inside a shrinking bracket (bisection when a step leaves it).
 double minimize_rim(const SegmentInFrame& s, double lo, double hi) {
-  const double sz = s.za + 0.5 * (lo + hi) * s.ze >= 0 ? 1.0 : -1.0;
+  const bool at_q = s.za + 0.5 * (lo + hi) * s.ze > s.len;
+  const double sz = at_q ? 1.0 : -1.0, cap = at_q ? s.len : 0.0;
   const double we2 = dot(s.we, s.we);
   auto deriv = [&](double l, double& d1, double& d2) {
-    const double ea = sz * (s.za + l * s.ze) - s.f.half;
+    const double ea = sz * (s.za + l * s.ze - cap);
     const Vec3 w = s.wa + l * s.we;
     const double rho = detail::safe_length(w);
     const double er = rho - s.r;
@@ -87,8 +88,7 @@ struct Closest {
 
 Closest closest(const SegmentInFrame& s, const Cylinder& cyl) {
   // S inside the cylinder somewhere: the robust segment/cylinder interval.
-  const detail::UnitAndLength axis(cyl.q - cyl.p);
-  const detail::TubeInterval iv = detail::tube_interval(s.a - cyl.p, s.e, axis.u, axis.len, 0.0, cyl.r);
+  const detail::TubeInterval iv = detail::tube_interval(s.a, s.e, s.u, s.len, 0.0, cyl.r);
   if (!iv.empty && iv.entry <= 1 && iv.exit >= 0) {
     return {0.5 * (std::max(iv.entry, 0.0) + std::min(iv.exit, 1.0)), 0.0};
   }
@@ -104,8 +104,8 @@ Closest closest(const SegmentInFrame& s, const Cylinder& cyl) {
     if (l > 0 && l < 1) cand[n++] = l;
   };
   if (s.ze != 0) {
-    add((-s.f.half - s.za) / s.ze);
-    add((s.f.half - s.za) / s.ze);
+    add(-s.za / s.ze);
+    add((s.len - s.za) / s.ze);
   }
   const double we2 = dot(s.we, s.we);
   if (we2 > 0) add(-dot(s.wa, s.we) / we2);  // closest approach to the axis line
@@ -130,18 +130,23 @@ Closest closest(const SegmentInFrame& s, const Cylinder& cyl) {
     const double lo = std::min(cand[best], cand[j]), hi = std::max(cand[best], cand[j]);
     if (!(hi > lo) || !s.at_rim(0.5 * (lo + hi))) continue;
     const double l = minimize_rim(s, lo, hi);
+    if (!(l > lo && l < hi)) continue;
+    // An interior stationary point of the piece next to the best candidate
+    // is the minimiser (convexity), even where rounding puts its distance an
+    // ulp above the candidate's: its normal is the minimal-translation
+    // direction, the candidate's is off by up to the twist of the segment.
     const double d = s.dist(l);
-    if (d < out.d) out = {l, d};
+    if (d <= out.d * (1 + 0x1p-44)) out = {l, d};
   }
   return out;
 }
 
 // Overlap of the shapes along unit n (from the cylinder towards the
-// capsule): h_cyl(n) + h_cap(-n), by the support functions.
-double overlap_along(const Cylinder& cyl, const detail::AxisFrame& f, const Capsule& cap, Vec3 n) {
-  const double nu = dot(n, f.u);
-  const double h_cyl = dot(n, f.mid) + std::fabs(nu) * f.half + cyl.r * detail::safe_length(n - nu * f.u);
-  const double low_cap = std::min(dot(n, cap.p), dot(n, cap.q)) - cap.r;
+// capsule): h_cyl(n) + h_cap(-n) by the support functions, measured from p.
+double overlap_along(const SegmentInFrame& s, const Capsule& cap, Vec3 n) {
+  const double nu = dot(n, s.u);
+  const double h_cyl = std::max(0.0, s.len * nu) + s.r * detail::safe_length(n - nu * s.u);
+  const double low_cap = std::min(dot(n, s.a), dot(n, s.a + s.e)) - cap.r;
   return h_cyl - low_cap;
 }
 
@@ -158,12 +163,12 @@ Contact collide_scaled(const Cylinder& cyl, const Capsule& cap) {
   const Closest k = closest(s, cyl);
   if (!(k.d <= cap.r)) return out;
   const double scene = std::max(detail::largest(cyl), detail::largest(cap));
-  const double noise = 16 * 0x1p-52 * std::max(scene, s.f.half);
+  const double noise = 16 * 0x1p-52 * std::max(scene, s.len);
   out.hit = true;
   const Vec3 x = s.point(k.l);
   if (k.d > 0) {
     // Shallow: the sphere contact at S's closest point (true depth).
-    const detail::ClosestOnCylinder c = detail::closest_on_cylinder(cyl, s.f, x, noise);
+    const detail::ClosestOnCylinder c = detail::closest_on_cylinder(cyl, s.u, s.len, x, noise);
     if (!c.inside) {
       out.point = c.point;
       out.normal = c.normal;
@@ -175,27 +180,27 @@ Contact collide_scaled(const Cylinder& cyl, const Capsule& cap) {
   // directions: the axis both ways, the radial direction of S's closest
   // approach to the axis line (both ways), the common perpendicular of S and
   // the axis (both ways).
-  out.point = x;
+  out.point = cyl.p + x;
   Vec3 cands[6];
   int n = 0;
-  cands[n++] = s.f.u;
-  cands[n++] = -s.f.u;
+  cands[n++] = s.u;
+  cands[n++] = -s.u;
   const double we2 = dot(s.we, s.we);
   const double lc = we2 > 0 ? std::clamp(-dot(s.wa, s.we) / we2, 0.0, 1.0) : 0.5;
   const Vec3 wc = s.wa + lc * s.we;
   if (detail::safe_length(wc) > noise) {
-    const Vec3 rd = detail::unit_perpendicular_part(wc, s.f.u);
+    const Vec3 rd = detail::unit_perpendicular_part(wc, s.u);
     cands[n++] = rd;
     cands[n++] = -rd;
   }
   if (detail::safe_length(s.we) > noise) {
-    const Vec3 cp = detail::normalized(cross(s.f.u, detail::normalized(s.we)));
+    const Vec3 cp = detail::normalized(cross(s.u, detail::normalized(s.we)));
     cands[n++] = cp;
     cands[n++] = -cp;
   }
   double best = std::numeric_limits<double>::infinity();
   for (int i = 0; i < n; ++i) {
-    const double o = overlap_along(cyl, s.f, cap, cands[i]);
+    const double o = overlap_along(s, cap, cands[i]);
     if (o < best) best = o, out.normal = cands[i];
   }
   out.depth = std::min(std::max(best, 0.0), std::numeric_limits<double>::max());

@@ -200,6 +200,7 @@ std::string describe_shape(const Capsule& s) { return describe_typed(s); }
 std::string describe_shape(const Cylinder& s) { return describe_typed(s); }
 std::string describe_shape(const Obb& s) { return describe_typed(s); }
 std::string describe_shape(const Triangle& s) { return describe_typed(s); }
+std::string describe_shape(const MovingSphere& s) { return describe_typed(s); }
 
 std::vector<double> decode_raw_doubles(const std::uint8_t* data, std::size_t size, std::size_t count) {
   std::vector<double> out(count, 0.0);

@@ -114,9 +114,17 @@ Evaluation evaluate(const SweepCylinderCase& c, const SweepSphereCylinderImpl& i
     if (path_meets(c, h.t, -times_scale(tol.t, e.scale)))
       e.extra_failure = "the ball's path up to t reaches deeper than the t bound into the cylinder (hit reported too late)";
     e.unit_err = std::fabs(length(h.normal) - 1);
-    const QVec px = oracle::to_q(h.point);
-    const Q near = times_scale(4 * tol.t, e.scale) + oracle::to_q(16 * std::numeric_limits<double>::denorm_min());
-    e.normal_err = cylinder_normal_error(qc, px, h.normal, near);
+    // Normal: as for collide, conditioning-free. The ball's centre x is
+    // dist(x, C) from the cylinder; along a unit n the cylinder reaches
+    // h_C(n) - n.x short of it, which is -dist exactly for the true normal
+    // (the direction from the closest point), more for any other:
+    // error = h_C(n) - n.x + dist(x, C) >= 0.
+    if (max_abs(h.normal) > 0) {
+      const QVec n = oracle::to_q(h.normal);
+      const QInterval len = oracle::sqrt_interval(oracle::dot(n, n));
+      const QInterval excess = (oracle::support(qc, n) - oracle::point(oracle::dot(n, x))) / len + oracle::signed_distance(qc, x);
+      e.normal_err = excess.hi > 0 ? rel_up(excess.hi, e.scale) : 0.0;
+    }
   }
   // point: on the cylinder's surface (in it when starting inside) and on the ball at t.
   const QVec px = oracle::to_q(h.point);

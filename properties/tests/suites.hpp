@@ -4,6 +4,7 @@
 
 #include "generators.hpp"
 #include "geomcheck/cast_segment_cylinder.hpp"
+#include "geomcheck/collide_cylinder_capsule.hpp"
 #include "geomcheck/collide_cylinder_sphere.hpp"
 #include "support.hpp"
 
@@ -25,6 +26,22 @@ template <> struct Suite<QueryId::cast_segment_cylinder> {
   static rc::Gen<std::pair<Case, std::string>> targeted() { return gen::segment_cylinder_case(); }
   static rc::Gen<Case> wild() { return gen::wild_segment_cylinder(); }
   static bool hit(const Case& c, const Impl& impl = kProductionCastSegmentCylinder) { return impl.cast(c.a, c.b).hit; }
+};
+
+template <> struct Suite<QueryId::collide_cylinder_capsule> {
+  using Case = CylinderCapsuleCase;
+  using Impl = CylinderCapsuleImpl;
+  static rc::Gen<std::pair<Case, std::string>> targeted() { return gen::cylinder_capsule_case(); }
+  static rc::Gen<Case> wild() { return gen::wild_cylinder_capsule(); }
+  static bool hit(const Case& c, const Impl& impl = kProductionCylinderCapsule) { return impl.overlap(c.a, c.b); }
+};
+
+template <> struct Suite<QueryId::sweep_sphere_cylinder> {
+  using Case = SweepCylinderCase;
+  using Impl = SweepSphereCylinderImpl;
+  static rc::Gen<std::pair<Case, std::string>> targeted() { return gen::sweep_cylinder_case(); }
+  static rc::Gen<Case> wild() { return gen::wild_sweep_cylinder(); }
+  static bool hit(const Case& c, const Impl& impl = kProductionSweepSphereCylinder) { return impl.sweep(c.a, c.b).hit; }
 };
 
 /// Half wild raw doubles (NaN, inf, subnormal, huge), half targeted cases.

@@ -10,6 +10,8 @@ namespace geomcheck {
 void showValue(const Cylinder& s, std::ostream& os) { os << describe_shape(s); }
 void showValue(const Sphere& s, std::ostream& os) { os << describe_shape(s); }
 void showValue(const Segment& s, std::ostream& os) { os << describe_shape(s); }
+void showValue(const Capsule& s, std::ostream& os) { os << describe_shape(s); }
+void showValue(const MovingSphere& s, std::ostream& os) { os << describe_shape(s); }
 
 rc::detail::TestListener& listener() {
   static rc::detail::TestListenerAdapter quiet;

@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "geomcheck/detail/sweep_stages.hpp"
+
 namespace geomcheck::teeth {
 
 namespace {
@@ -127,5 +129,62 @@ CastHit ericson_printed_cast(const Segment& seg, const Cylinder& cyl) {
 const CylinderSphereImpl kCapsuleForCylinder = {"sphere-vs-capsule", capsule_overlap, capsule_collide};
 const CastSegmentCylinderImpl kInfiniteCylinder = {"infinite-cylinder-no-caps", infinite_cylinder_cast};
 const CastSegmentCylinderImpl kEricsonPrinted = {"ericson-as-printed", ericson_printed_cast};
+
+namespace {
+// Closest points of segments p1q1 and p2q2 (Ericson, ClosestPtSegmentSegment).
+void closest_segments(Vec3 p1, Vec3 q1, Vec3 p2, Vec3 q2, Vec3& c1, Vec3& c2) {
+  const Vec3 d1 = q1 - p1, d2 = q2 - p2, r = p1 - p2;
+  const double a = dot(d1, d1), e = dot(d2, d2), f = dot(d2, r);
+  double s = 0, t = 0;
+  if (a == 0 && e == 0) {
+  } else if (a == 0) {
+    t = std::clamp(f / e, 0.0, 1.0);
+  } else {
+    const double c = dot(d1, r);
+    if (e == 0) {
+      s = std::clamp(-c / a, 0.0, 1.0);
+    } else {
+      const double b = dot(d1, d2), denom = a * e - b * b;
+      s = denom != 0 ? std::clamp((b * f - c * e) / denom, 0.0, 1.0) : 0.0;
+      t = (b * s + f) / e;
+      if (t < 0) t = 0, s = std::clamp(-c / a, 0.0, 1.0);
+      else if (t > 1) t = 1, s = std::clamp((b - c) / a, 0.0, 1.0);
+    }
+  }
+  c1 = p1 + s * d1;
+  c2 = p2 + t * d2;
+}
+
+bool capsule_capsule_overlap(const Cylinder& c, const Capsule& k) {
+  if (!is_valid(c) || !is_valid(k)) return false;
+  Vec3 a, b;
+  closest_segments(c.p, c.q, k.p, k.q, a, b);
+  const double r = c.r + k.r;
+  return length2(b - a) <= r * r;
+}
+Contact capsule_capsule_collide(const Cylinder& c, const Capsule& k) {
+  Contact out;
+  if (!capsule_capsule_overlap(c, k)) return out;
+  Vec3 a, b;
+  closest_segments(c.p, c.q, k.p, k.q, a, b);
+  const Vec3 v = b - a;
+  const double l = length(v);
+  out.hit = true;
+  out.normal = l > 0 ? (1.0 / l) * v : any_perpendicular(c.q - c.p);
+  out.depth = c.r + k.r - l;
+  out.point = a + c.r * out.normal;
+  return out;
+}
+}  // namespace
+
+const CylinderCapsuleImpl kCapsuleCapsule = {"capsule-capsule", capsule_capsule_overlap, capsule_capsule_collide};
+const SweepSphereCylinderImpl kSweepNoCornerStage = {
+    "sweep-without-corner-stage", [](const MovingSphere& m, const Cylinder& c) {
+      return detail::sweep_with(Sphere{m.c, m.r}, m.delta, c, detail::SweepStage2::None);
+    }};
+const SweepSphereCylinderImpl kSweepTalkRimPoint = {
+    "sweep-talk-one-rim-point", [](const MovingSphere& m, const Cylinder& c) {
+      return detail::sweep_with(Sphere{m.c, m.r}, m.delta, c, detail::SweepStage2::TalkRimPoint);
+    }};
 
 }  // namespace geomcheck::teeth

@@ -12,4 +12,14 @@ extern const CastSegmentCylinderImpl kInfiniteCylinder;
 /// cast_segment_cylinder as printed in the book (known errata).
 extern const CastSegmentCylinderImpl kEricsonPrinted;
 
+/// collide_cylinder_capsule computed as capsule vs capsule (the cylinder's
+/// caps rounded): closest points of the two segments against r + r'.
+extern const CylinderCapsuleImpl kCapsuleCapsule;
+/// sweep_sphere_cylinder without its corner stage: stage 1 (the augmented
+/// cylinder) accepted as it is.
+extern const SweepSphereCylinderImpl kSweepNoCornerStage;
+/// sweep_sphere_cylinder with the talk's stage 2 as stated: one sphere test
+/// at the stage-1 point clamped to the rim.
+extern const SweepSphereCylinderImpl kSweepTalkRimPoint;
+
 }  // namespace geomcheck::teeth

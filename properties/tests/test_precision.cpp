@@ -67,6 +67,8 @@ void check_table() {
 
 TEST(precision, collide_cylinder_sphere) { check_table<QueryId::collide_cylinder_sphere>(); }
 TEST(precision, cast_segment_cylinder) { check_table<QueryId::cast_segment_cylinder>(); }
+TEST(precision, collide_cylinder_capsule) { check_table<QueryId::collide_cylinder_capsule>(); }
+TEST(precision, sweep_sphere_cylinder) { check_table<QueryId::sweep_sphere_cylinder>(); }
 
 }  // namespace
 }  // namespace geomcheck

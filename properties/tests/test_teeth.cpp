@@ -34,6 +34,9 @@ void expect_caught(const typename Suite<Q>::Impl& wrong) {
 TEST(teeth, sphere_cylinder_as_capsule) { expect_caught<QueryId::collide_cylinder_sphere>(teeth::kCapsuleForCylinder); }
 TEST(teeth, cast_infinite_cylinder_no_caps) { expect_caught<QueryId::cast_segment_cylinder>(teeth::kInfiniteCylinder); }
 TEST(teeth, cast_ericson_as_printed) { expect_caught<QueryId::cast_segment_cylinder>(teeth::kEricsonPrinted); }
+TEST(teeth, capsule_cylinder_as_capsule_capsule) { expect_caught<QueryId::collide_cylinder_capsule>(teeth::kCapsuleCapsule); }
+TEST(teeth, sweep_without_corner_stage) { expect_caught<QueryId::sweep_sphere_cylinder>(teeth::kSweepNoCornerStage); }
+TEST(teeth, sweep_talk_one_rim_point) { expect_caught<QueryId::sweep_sphere_cylinder>(teeth::kSweepTalkRimPoint); }
 
 }  // namespace
 }  // namespace geomcheck

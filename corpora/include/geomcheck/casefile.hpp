@@ -219,6 +219,7 @@ std::string describe_shape(const Capsule& s);
 std::string describe_shape(const Cylinder& s);
 std::string describe_shape(const Obb& s);
 std::string describe_shape(const Triangle& s);
+std::string describe_shape(const MovingSphere& s);
 /// The same form from a layout and its raw doubles (layout.size of them).
 std::string describe_shape(const ShapeLayout& layout, const double* values);
 

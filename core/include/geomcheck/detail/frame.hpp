@@ -109,39 +109,40 @@ inline double largest(const Sphere& s) { return std::max(max_abs(s.c), s.r); }
 inline double largest(const Segment& s) { return std::max(max_abs(s.a), max_abs(s.b)); }
 inline double largest(const Capsule& s) { return std::max(std::max(max_abs(s.p), max_abs(s.q)), s.r); }
 
-/// A point x relative to a cylinder: its offsets in the cylinder's frame,
-/// the closest point of the solid cylinder, the distance to it, and (when
-/// x is outside) the unit normal from the cylinder towards x.
+/// A point relative to a cylinder: the closest point of the solid cylinder,
+/// the distance to it, and (when outside) the unit normal from the cylinder
+/// towards the point.
 struct ClosestOnCylinder {
-  Vec3 point;       ///< closest point of the solid cylinder (x itself inside)
-  Vec3 normal;      ///< outward unit normal towards x (zero inside)
-  double dist = 0;  ///< distance from x to the solid cylinder
+  Vec3 point;       ///< closest point of the solid cylinder (the point itself inside)
+  Vec3 normal;      ///< outward unit normal towards the point (zero inside)
+  double dist = 0;  ///< distance from the point to the solid cylinder
   bool inside = false;
 };
 
-/// Offsets at or below `noise` carry no direction (they are rounding): a
-/// radial offset below it gives any perpendicular, and of two offsets the one
-/// below it is dropped, so that a tiny gap does not lose the normal to
+/// The point p + v, given by its offset v from the cap centre p (computed by
+/// the caller from nearby values, so that a scene far from the origin adds
+/// no rounding of its own), against the cylinder of unit axis u and length
+/// len. Offsets at or below `noise` carry no direction (they are rounding):
+/// a radial offset below it gives any perpendicular, and of two offsets the
+/// one below it is dropped, so that a tiny gap does not lose the normal to
 /// cancellation (collide_cylinder_sphere regression 0002).
-inline ClosestOnCylinder closest_on_cylinder(const Cylinder& cyl, const AxisFrame& f, Vec3 x, double noise) {
+inline ClosestOnCylinder closest_on_cylinder(const Cylinder& cyl, Vec3 u, double len, Vec3 v, double noise) {
   ClosestOnCylinder out;
-  const Vec3 v = x - f.mid;
-  const double ax = dot(v, f.u);
-  const Vec3 w = v - ax * f.u;
+  const double ax = dot(v, u);
+  const Vec3 w = v - ax * u;
   const double rho = safe_length(w);
-  const double ea = std::max(std::fabs(ax) - f.half, 0.0);
+  const double ea = ax < 0 ? -ax : (ax > len ? ax - len : 0.0);
   const double er = std::max(rho - cyl.r, 0.0);
   if (ea == 0 && er == 0) {
-    out.point = x;
+    out.point = cyl.p + v;
     out.inside = true;
     return out;
   }
-  const double cax = std::clamp(ax, -f.half, f.half);
-  out.point = f.mid + cax * f.u + (rho > cyl.r ? (cyl.r / rho) * w : w);
+  out.point = cyl.p + (std::clamp(ax, 0.0, len) * u + (rho > cyl.r ? (cyl.r / rho) * w : w));
   out.dist = safe_length(Vec3{ea, er, 0});
-  auto radial_dir = [&] { return rho > noise ? unit_perpendicular_part(w, f.u) : any_perpendicular(f.u); };
+  auto radial_dir = [&] { return rho > noise ? unit_perpendicular_part(w, u) : any_perpendicular(u); };
   const double ean = ea > noise ? ea : 0.0, ern = er > noise ? er : 0.0;
-  const Vec3 cap = ax >= 0 ? f.u : -f.u;
+  const Vec3 cap = 2 * ax >= len ? u : -u;
   if (ern == 0) out.normal = ean > 0 || ea >= er ? cap : radial_dir();
   else if (ean == 0) out.normal = radial_dir();
   else {

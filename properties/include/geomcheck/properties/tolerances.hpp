@@ -14,10 +14,20 @@
 //   normal   overlap measured along production's normal minus the true
 //            penetration depth (>= 0; 0 for a minimal-translation normal);
 //            casts: distance of the normal from the exact outward normal
-//            (normal cone at a rim) at production's hit point.
+//            (normal cone at a rim) at production's hit point; sweeps: the
+//            reach of the cylinder along production's normal short of the
+//            ball's centre at t, compared with the centre's true distance
+//            (h_C(n) - n.x + dist(x, C) >= 0, zero for the true normal).
 //   point    how far production's point lies outside A or B (max of both)
+//            collide_cylinder_capsule: depth and normal are held to the
+//            true penetration only where the header claims it (the
+//            capsule's segment outside the cylinder by more than the band).
+//   point    sweeps: distance from the cylinder's surface and from the
+//            ball at t (max of both)
 //   t        casts: distance of S(t) from the cylinder surface, and no point
-//            of S([0, t]) deeper than this inside (bracketing)
+//            of S([0, t]) deeper than this inside (bracketing); sweeps: the
+//            same for the ball (its gap from the cylinder at t, and its path
+//            up to t certified never that deep inside, by the engine)
 //   unit     | |normal| - 1 | (absolute, not scaled)
 // Errors below the resolution of a double output (4 x the smallest
 // subnormal) are not counted: in a subnormal scene no answer is finer.
