@@ -10,12 +10,11 @@ std::string v3(Vec3 v) {
   std::snprintf(b, sizeof b, "(%.17g, %.17g, %.17g)", v.x, v.y, v.z);
   return b;
 }
-}  // namespace
 
-PeerAnswer peer(const CylinderSphereCase& c) {
+/// A collide answer (cylinder/sphere, cylinder/capsule); `note` follows the depth.
+PeerAnswer contact_answer(const oracles::PeerContact& r, const char* note = "") {
   PeerAnswer p;
   p.supported = true;
-  const oracles::PeerContact r = oracles::fcl_collide(c.a, c.b);
   p.ok = r.ok;
   if (!r.ok) {
     p.text = "FCL failed: " + r.error;
@@ -26,16 +25,16 @@ PeerAnswer peer(const CylinderSphereCase& c) {
     p.depth = r.depth;
     char b[64];
     std::snprintf(b, sizeof b, "%.17g", r.depth);
-    p.text = std::string("hit depth=") + b + " normal=" + v3(r.normal) + " point=" + v3(r.point);
+    p.text = std::string("hit depth=") + b + note + " normal=" + v3(r.normal) + " point=" + v3(r.point);
   } else {
     p.text = "no hit";
   }
   return p;
 }
 
-PeerAnswer peer(const SegmentCylinderCase& c) {
+/// A cast or sweep answer; `how` says what FCL was asked.
+PeerAnswer cast_answer(const oracles::PeerCast& r, const char* how) {
   PeerAnswer p;
-  const oracles::PeerCast r = oracles::fcl_cast(c.a, c.b);
   p.supported = r.supported;
   p.ok = r.ok;
   if (!r.ok) {
@@ -47,11 +46,27 @@ PeerAnswer peer(const SegmentCylinderCase& c) {
     p.t = r.t;
     char b[64];
     std::snprintf(b, sizeof b, "%.17g", r.t);
-    p.text = std::string("hit t=") + b + " (FCL continuous collision of a radius-0 sphere)";
+    p.text = std::string("hit t=") + b + " (" + how + ")";
   } else {
     p.text = "no hit";
   }
   return p;
+}
+
+}  // namespace
+
+PeerAnswer peer(const CylinderSphereCase& c) { return contact_answer(oracles::fcl_collide(c.a, c.b)); }
+
+PeerAnswer peer(const SegmentCylinderCase& c) {
+  return cast_answer(oracles::fcl_cast(c.a, c.b), "FCL continuous collision of a radius-0 sphere");
+}
+
+PeerAnswer peer(const CylinderCapsuleCase& c) {
+  return contact_answer(oracles::fcl_collide(c.a, c.b), " (libccd MPR estimate, not the minimum)");
+}
+
+PeerAnswer peer(const SweepCylinderCase& c) {
+  return cast_answer(oracles::fcl_sweep(c.a, c.b), "FCL continuous collision of the ball; no point or normal");
 }
 
 }  // namespace geomcheck

@@ -14,11 +14,15 @@ struct PeerAnswer {
   bool ok = false;         ///< FCL answered (no exception, no garbage)
   bool hit = false;
   double depth = NAN;      ///< collide: penetration depth
-  double t = NAN;          ///< cast: first-touch parameter
+  double t = NAN;          ///< cast, sweep: first-touch parameter
   std::string text;        ///< human readable
 };
 
 PeerAnswer peer(const CylinderSphereCase& c);
 PeerAnswer peer(const SegmentCylinderCase& c);
+/// fcl_collide(Cylinder, Capsule): libccd's MPR, depth not the minimum (see fcl_adapter.hpp).
+PeerAnswer peer(const CylinderCapsuleCase& c);
+/// fcl_sweep: continuous collision of the ball, hit and t only (see fcl_adapter.hpp).
+PeerAnswer peer(const SweepCylinderCase& c);
 
 }  // namespace geomcheck

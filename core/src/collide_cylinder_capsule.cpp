@@ -124,6 +124,8 @@ Closest closest(const SegmentInFrame& s, const Cylinder& cyl) {
   Closest out{cand[best], bd};
   // The minimum lies between the best candidate's neighbours; a rim piece
   // there has its stationary point inside.
+  const Closest cand_best = out;
+  bool interior = false;
   for (int side = -1; side <= 1; side += 2) {
     const int j = best + side;
     if (j < 0 || j >= n) continue;
@@ -136,7 +138,7 @@ Closest closest(const SegmentInFrame& s, const Cylinder& cyl) {
     // ulp above the candidate's: its normal is the minimal-translation
     // direction, the candidate's is off by up to the twist of the segment.
     const double d = s.dist(l);
-    if (d <= out.d * (1 + 0x1p-44)) out = {l, d};
+    if (interior ? d < out.d : d <= cand_best.d * (1 + 0x1p-44)) out = {l, d}, interior = true;
   }
   return out;
 }
@@ -166,8 +168,10 @@ Contact collide_scaled(const Cylinder& cyl, const Capsule& cap) {
   const double noise = 16 * 0x1p-52 * std::max(scene, s.len);
   out.hit = true;
   const Vec3 x = s.point(k.l);
-  if (k.d > 0) {
-    // Shallow: the sphere contact at S's closest point (true depth).
+  if (k.d > noise) {
+    // Shallow: the sphere contact at S's closest point (true depth). A
+    // distance at the rounding level is a touching core: the deep branch,
+    // whose depth is the overlap along its normal whatever the normal.
     const detail::ClosestOnCylinder c = detail::closest_on_cylinder(cyl, s.u, s.len, x, noise);
     if (!c.inside) {
       out.point = c.point;
@@ -194,9 +198,18 @@ Contact collide_scaled(const Cylinder& cyl, const Capsule& cap) {
     cands[n++] = -rd;
   }
   if (detail::safe_length(s.we) > noise) {
-    const Vec3 cp = detail::normalized(cross(s.u, detail::normalized(s.we)));
+    // Oriented towards the segment's side of the axis (a reflection of the
+    // scene reflects the choice; cross products alone would flip it).
+    Vec3 cp = detail::normalized(cross(s.u, detail::normalized(s.we)));
+    if (dot(cp, s.wa + 0.5 * s.we) < 0) cp = -cp;
     cands[n++] = cp;
     cands[n++] = -cp;
+  }
+  if (n == 2) {
+    // S along the axis line: any perpendicular.
+    const Vec3 pp = any_perpendicular(s.u);
+    cands[n++] = pp;
+    cands[n++] = -pp;
   }
   double best = std::numeric_limits<double>::infinity();
   for (int i = 0; i < n; ++i) {

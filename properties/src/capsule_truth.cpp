@@ -25,47 +25,54 @@ QInterval capsule_signed_distance(const QVec& p, const QVec& q, const Q& r, cons
   return oracle::sqrt_interval(oracle::dot(off, off)) - oracle::point(r);
 }
 
-CapsuleTruth capsule_truth(const oracle::ConvexShape& cyl, const QVec& p, const QVec& q, const Q& r) {
+CapsuleTruth capsule_truth(const oracle::ConvexShape& cyl, const QVec& p, const QVec& q, const Q& r, const Q& band) {
   CapsuleTruth t;
   std::ostringstream o;
+  // The capsule is pq (+) r Ball, so its signed distance from the cylinder
+  // is the segment's minus r, on both sides of zero: outside, D - r; when
+  // pq meets the cylinder, the depth of the origin in C (-) pq grows by
+  // exactly r when the ball is added (h(n) + r for every n), so -PD - r.
   oracle::EngineOptions opt;
-  opt.rel_width = 1e-20;
   opt.certificates = false;
   const oracle::ConvexShape seg = oracle::make_capsule(p, q, Q(0));
-  const oracle::DistanceResult s = oracle::classify(cyl, seg, opt);
-  bool decided = false;
-  if (s.verdict == Verdict::Separated) {
-    t.core_outside = true;
-    t.core_distance = s.distance;
-    t.signed_distance = s.distance - oracle::point(r);
-    if (t.signed_distance.lo > 0) t.verdict = Verdict::Separated, decided = true;
-    else if (t.signed_distance.hi < 0) t.verdict = Verdict::Overlapping, decided = true;
-  } else if (s.verdict == Verdict::Overlapping || s.verdict == Verdict::Touching) {
-    if (r > 0) {
-      // pq meets the cylinder: every separating translation is at least r
-      // long; the overlap along the axis bounds the depth from above.
-      t.verdict = Verdict::Overlapping;
-      const QInterval along = overlap_along(cyl, oracle::make_capsule(p, q, r), cyl.axis);
-      t.signed_distance = {-along.hi, -r};
-      decided = true;
-    } else {
-      t.verdict = s.verdict;
-      t.signed_distance = s.distance;
-      decided = true;
-    }
+  oracle::DistanceResult s = oracle::classify(cyl, seg, opt);
+  // The distance to 1e-20 * scale where it matters: always outside (GJK to
+  // convergence is cheap); inside only when the depth can still be within
+  // the band (r <= 2 band), since that refinement runs EPA.
+  if (s.verdict == Verdict::Separated || ((s.verdict == Verdict::Overlapping) && r <= 2 * band)) {
+    opt.rel_width = 1e-20;
+    s = oracle::classify(cyl, seg, opt);
   }
-  if (!decided) {
+  t.core_outside = s.verdict == Verdict::Separated;
+  if (t.core_outside) t.core_distance = s.distance;
+  t.signed_distance = s.distance - oracle::point(r);
+  if (s.verdict == Verdict::Touching) t.signed_distance = oracle::point(-r);
+  if (s.verdict != Verdict::Undecided && t.signed_distance.lo > 0) {
+    t.verdict = Verdict::Separated;
+  } else if (s.verdict != Verdict::Undecided && t.signed_distance.hi < 0) {
+    t.verdict = Verdict::Overlapping;
+  } else {
     // The capsule within reach of touching (or the segment undecided): the
     // capsule itself, exactly (touching is certified there).
     const oracle::DistanceResult c = oracle::classify(cyl, oracle::make_capsule(p, q, r), opt);
     t.verdict = c.verdict;
-    if (!t.core_outside) t.signed_distance = c.distance;
-    else if (c.verdict == Verdict::Touching) t.signed_distance = oracle::point(Q(0));
+    if (c.verdict == Verdict::Touching) t.signed_distance = oracle::point(Q(0));
+    else if (s.verdict == Verdict::Undecided) t.signed_distance = c.distance;
   }
   o << oracle::to_string(t.verdict) << " signed_distance=" << oracle::to_string(t.signed_distance)
     << (t.core_outside ? " (segment outside)" : " (segment meets the cylinder)");
   t.text = o.str();
   return t;
+}
+
+double nearest_to_zero(const QInterval& x, double scale) {
+  // A wide enclosure (deep contacts are not refined) is reported by its end
+  // nearest to zero: a certified bound, where the midpoint would be a guess.
+  const Q width = x.hi - x.lo;
+  if (width <= oracle::to_q(1e-6 * scale)) return x.mid();
+  if (x.lo > 0) return oracle::to_double(x.lo);
+  if (x.hi < 0) return oracle::to_double(x.hi);
+  return 0.0;
 }
 
 }  // namespace geomcheck

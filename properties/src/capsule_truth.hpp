@@ -13,8 +13,8 @@ namespace geomcheck {
 struct CapsuleTruth {
   oracle::Verdict verdict = oracle::Verdict::Undecided;
   /// Certified signed distance of the capsule from the cylinder (> 0 gap,
-  /// < 0 minus the penetration depth). Narrow while the segment pq stays
-  /// outside; when pq enters the cylinder only hi <= -r is sharp.
+  /// < 0 minus the penetration depth). Narrow where it decides the band;
+  /// when pq enters the cylinder deeper than that, only hi <= -r is sharp.
   oracle::QInterval signed_distance;
   /// The segment pq certified outside the cylinder: then signed_distance is
   /// D - r with D = dist(pq, cylinder), enclosed to 1e-20 * scale.
@@ -24,10 +24,15 @@ struct CapsuleTruth {
 };
 
 /// Engine answers for the capsule: the segment pq against the cylinder
-/// (distance refined to 1e-20 * scale), then, only when the capsule's
+/// (distance refined to 1e-20 * scale wherever it can decide whether the
+/// capsule is within `band` of touching), then, only when the capsule's
 /// verdict is not decided by that distance, the capsule itself.
 CapsuleTruth capsule_truth(const oracle::ConvexShape& cylinder, const oracle::QVec& p, const oracle::QVec& q,
-                           const oracle::Q& r);
+                           const oracle::Q& r, const oracle::Q& band);
+
+/// The double reported for a signed-distance enclosure: its midpoint when
+/// narrow (<= 1e-6 * scale), else its end nearest to zero (a certified bound).
+double nearest_to_zero(const oracle::QInterval& x, double scale);
 
 /// Overlap of A and B measured along unit(n): (h_A(n) + h_B(-n)) / |n|, certified.
 oracle::QInterval overlap_along(const oracle::ConvexShape& a, const oracle::ConvexShape& b, const oracle::QVec& n);

@@ -59,13 +59,13 @@ Evaluation evaluate(const CylinderCapsuleCase& c, const CylinderCapsuleImpl& imp
   const oracle::ConvexShape cyl = oracle::make_shape(c.a);
   const QVec p = oracle::to_q(c.b.p), q = oracle::to_q(c.b.q);
   const Q r = oracle::to_q(c.b.r);
-  const CapsuleTruth truth = capsule_truth(cyl, p, q, r);
+  const Q band = times_scale(tol.verdict, e.scale);
+  const CapsuleTruth truth = capsule_truth(cyl, p, q, r, band);
   e.verdict = truth.verdict;
   e.truth_hit = truth.verdict != oracle::Verdict::Separated;
-  e.signed_distance = truth.signed_distance.mid();
+  e.signed_distance = nearest_to_zero(truth.signed_distance, e.scale);
   e.truth_text = truth.text;
   e.disagree = e.prod_hit != e.truth_hit;
-  const Q band = times_scale(tol.verdict, e.scale);
   e.near_boundary = !(truth.signed_distance.lo > band || truth.signed_distance.hi < -band);
   if (e.disagree) {
     e.margin = std::fabs(e.signed_distance) / e.scale;
@@ -80,7 +80,11 @@ Evaluation evaluate(const CylinderCapsuleCase& c, const CylinderCapsuleImpl& imp
       if (truth.core_outside && truth.core_distance.lo > band) {
         const QInterval depth = -truth.signed_distance;
         if (std::isfinite(oracle::to_double(depth.hi))) e.depth_err = rel_error(depth, ct.depth, e.scale);
-        if (max_abs(ct.normal) > 0) {
+        // The normal is the direction between the closest points: its angle
+        // is only as good as eps * scale / D, and the capsule's extent turns
+        // an angle into excess overlap. It is held to the claim where the
+        // segment is at least 1e-6 * scale outside (see the header).
+        if (max_abs(ct.normal) > 0 && truth.core_distance.lo > times_scale(1e-6, e.scale)) {
           const QInterval along = overlap_along(cyl, oracle::make_capsule(p, q, r), oracle::to_q(ct.normal));
           e.normal_err = rel_up(along.hi - depth.lo, e.scale);
         }
@@ -177,8 +181,14 @@ CheckResult check_metamorphic(const CylinderCapsuleCase& c, int move, const Cyli
     const double rho = length(cross(ct.point - c.a.p, d)) / length(d);
     const bool free_normal = !(rho > 64 * 0x1p-52 * scale_of(c));
     if (ct.hit && !(m.pt(ct.point) == ct2.point && (free_normal || m.vec(ct.normal) == ct2.normal) &&
-                    m.len(ct.depth) == ct2.depth))
-      return Failure{what, "answer not bit-identical: " + describe(ct, ov) + " vs " + describe(ct2, ov2)};
+                    m.len(ct.depth) == ct2.depth)) {
+      // A deep contact's normal is the best of a few candidate directions:
+      // on a tie (a symmetric scene) either is right, and consistency holds
+      // each to depth = overlap along it. Point and depth stay bit-identical.
+      const bool same_but_normal = m.pt(ct.point) == ct2.point && m.len(ct.depth) == ct2.depth;
+      if (!(same_but_normal && std::isnan(evaluate(c, impl).depth_err)))
+        return Failure{what, "answer not bit-identical: " + describe(ct, ov) + " vs " + describe(ct2, ov2)};
+    }
     return std::nullopt;
   }
   if (ov != ov2) {
@@ -195,14 +205,20 @@ CheckResult check_metamorphic(const CylinderCapsuleCase& c, int move, const Cyli
 
 CheckResult check_monotone(const CylinderCapsuleCase& c, const CylinderCapsuleImpl& impl) {
   if (!valid_case(c) || !impl.overlap(c.a, c.b)) return std::nullopt;
+  // The distance of the capsule's segment is a minimum over candidates that
+  // move with the radii, so production is monotone only outside the band:
+  // an overlap lost by a bigger radius is a failure unless one of the two
+  // cases is within the band of touching.
+  auto lost = [&](const CylinderCapsuleCase& bigger) {
+    return !impl.overlap(bigger.a, bigger.b) && !evaluate(c, impl).near_boundary && !evaluate(bigger, impl).near_boundary;
+  };
   const double grow[] = {std::nextafter(c.b.r, INFINITY), c.b.r * 2 + 1e-300, c.b.r + 0.5 * c.a.r};
   for (double r : grow) {
-    if (!std::isfinite(r)) continue;
-    if (!impl.overlap(c.a, Capsule{c.b.p, c.b.q, r}))
+    if (std::isfinite(r) && lost({c.a, Capsule{c.b.p, c.b.q, r}}))
       return Failure{"monotone-capsule-radius", fmt("overlap with capsule radius %.17g but not with %.17g", c.b.r, r)};
   }
   const double rc = std::nextafter(c.a.r, INFINITY);
-  if (std::isfinite(rc) && !impl.overlap(Cylinder{c.a.p, c.a.q, rc}, c.b))
+  if (std::isfinite(rc) && lost({Cylinder{c.a.p, c.a.q, rc}, c.b}))
     return Failure{"monotone-cylinder-radius", fmt("overlap with cylinder radius %.17g but not with %.17g", c.a.r, rc)};
   return std::nullopt;
 }

@@ -83,13 +83,13 @@ Evaluation evaluate(const SweepCylinderCase& c, const SweepSphereCylinderImpl& i
   const QVec a = oracle::to_q(c.a.c), b = centre_at(c, 1.0);
   const Q r = oracle::to_q(c.a.r);
   // Hit iff the ball's path (the capsule from c to c + delta) meets the cylinder.
-  const CapsuleTruth truth = capsule_truth(cyl, a, b, r);
+  const Q band = times_scale(tol.verdict, e.scale);
+  const CapsuleTruth truth = capsule_truth(cyl, a, b, r, band);
   e.truth_hit = truth.verdict != oracle::Verdict::Separated;
   e.verdict = truth.verdict;
-  e.signed_distance = truth.signed_distance.mid();
+  e.signed_distance = nearest_to_zero(truth.signed_distance, e.scale);
   e.truth_text = std::string(e.truth_hit ? "hit" : "miss") + " (path " + truth.text + ")";
   e.disagree = e.prod_hit != e.truth_hit;
-  const Q band = times_scale(tol.verdict, e.scale);
   e.near_boundary = !(truth.signed_distance.lo > band || truth.signed_distance.hi < -band);
   if (e.disagree) {
     e.margin = std::fabs(e.signed_distance) / e.scale;

@@ -10,6 +10,11 @@
 // the capsule) is the direction from the cylinder's closest point to S's
 // closest point, a minimal-translation direction, and `point` is that
 // closest cylinder point.
+// That direction is as well conditioned as the gap D allows: computed from
+// offsets of size D with rounding eps * scale, its angle is good to about
+// eps * scale / D, and the capsule's length turns an angle into excess
+// overlap along it. The harness holds the normal to the claim where
+// D >= 1e-6 * scale, and the depth wherever D exceeds the verdict band.
 // When S enters the cylinder (D == 0, "deep"), depth is NOT claimed
 // minimal: `normal` is the best of a few candidate directions (the two axis
 // directions, the radial direction of S's closest approach to the axis, the

@@ -4,8 +4,11 @@
 #include <exception>
 #include <string>
 
+#include <ccd/vec3.h>
 #include <fcl/narrowphase/collision.h>
 #include <fcl/narrowphase/continuous_collision.h>
+#include <fcl/narrowphase/detail/convexity_based_algorithm/gjk_libccd.h>
+#include <fcl/narrowphase/detail/gjk_solver_libccd.h>
 #include <fcl/narrowphase/distance.h>
 
 #include "geomcheck/oracles/fcl_convert.hpp"
@@ -31,30 +34,30 @@ Vec3 unit(const Vec3& v) {
 }
 
 constexpr const char* kInvalidInput = "invalid input";
+/// libccd's absolute zero (CCD_EPS, DBL_EPSILON in a double build).
+constexpr double kCcdEps = 2.220446049250313e-16;
 std::string describe(const std::exception& e) { return std::string("FCL threw: ") + e.what(); }
 const char* kUnknownThrow = "FCL threw a non-standard exception";
 
-/// FCL's contact, checked for garbage. `res` holds at most one contact.
-PeerContact contact_from(const fcl::CollisionResultd& res) {
+/// FCL's contact (a hit), checked for garbage. `zero_normal_touch`: accept
+/// libccd MPR's touching contact (see below).
+PeerContact contact_from(const fcl::Vector3d& pos, const fcl::Vector3d& normal, double depth,
+                         bool zero_normal_touch = false) {
   PeerContact out;
   out.ok = true;
-  out.hit = res.isCollision();
-  if (!out.hit) return out;
-  if (res.numContacts() == 0) {
-    out.ok = false;
-    out.error = "FCL reported a collision without a contact";
-    return out;
-  }
-  const fcl::Contactd& c = res.getContact(0);
-  // FCL's normal points from o1 (the cylinder) to o2 (the sphere): this is
-  // geomcheck's convention already, no flip.
-  out.point = from_fcl(c.pos);
-  out.normal = from_fcl(c.normal);
-  out.depth = c.penetration_depth;
+  out.hit = true;
+  // FCL's normal points from o1 (the cylinder) to o2 (the sphere or the
+  // capsule): this is geomcheck's convention already, no flip.
+  out.point = from_fcl(pos);
+  out.normal = from_fcl(normal);
+  out.depth = depth;
+  // libccd's MPR sets no direction for a touching contact (depth below its
+  // absolute zero, CCD_EPS): accepted, the normal stays zero.
+  const bool touch = zero_normal_touch && out.normal == Vec3{} && out.depth >= 0 && out.depth < kCcdEps;
   if (!is_finite(out.point) || !is_finite(out.normal) || !std::isfinite(out.depth)) {
     out.ok = false;
     out.error = "FCL returned a non-finite contact";
-  } else if (std::fabs(length(out.normal) - 1.0) > 1e-6) {
+  } else if (!touch && std::fabs(length(out.normal) - 1.0) > 1e-6) {
     out.ok = false;
     out.error = "FCL returned a non-unit normal";
   } else if (out.depth < 0) {
@@ -64,16 +67,206 @@ PeerContact contact_from(const fcl::CollisionResultd& res) {
   return out;
 }
 
-/// One fcl::continuousCollide call: a radius-0 sphere moving from s.a to s.b
-/// against the resting cylinder.
-PeerCast continuous_collide_once(const Segment& s, const Cylinder& c) {
+/// FCL's contact, checked for garbage. `res` holds at most one contact.
+PeerContact contact_from(const fcl::CollisionResultd& res) {
+  if (!res.isCollision()) {
+    PeerContact out;
+    out.ok = true;
+    return out;
+  }
+  if (res.numContacts() == 0) {
+    PeerContact out;
+    out.hit = true;
+    out.error = "FCL reported a collision without a contact";
+    return out;
+  }
+  const fcl::Contactd& c = res.getContact(0);
+  return contact_from(c.pos, c.normal, c.penetration_depth);
+}
+
+// --- libccd's MPR and GJK with guarded support functions ----------------------
+//
+// For cylinder/capsule FCL runs libccd's MPR (collide) and GJK (distance)
+// on support functions. Two defects of FCL 0.7 / libccd 2.1 make the raw
+// calls unsafe for a harness (see the header): MPR's portal loops have no
+// iteration cap and can cycle for ever, and a support function that returns
+// a non-finite point (FCL's capsule support normalises a zero or underflowing
+// direction) makes FCL's GJK fail an assert and abort the process. The same
+// calls are made here as FCL makes them (GJKSolver_libccd's
+// ShapeIntersectLibccdImpl / ShapeDistanceLibccdImpl: the same libccd
+// objects, centre functions, iteration caps and tolerances), with FCL's
+// support functions wrapped:
+//   - a budget of evaluations; once spent, every further support point lies
+//     far behind the search direction, on which every MPR loop exits;
+//   - a non-finite support point is replaced by the origin (any finite point
+//     keeps GJK's "A is not in region 1" assert true, see the header).
+// Either event makes the answer "not ok". Otherwise it is bit for bit
+// FCL's.
+
+/// Support evaluations (one per shape, two per Minkowski point) allowed in
+/// one call: about twenty times the most seen in a returning MPR call (about
+/// 1,040: FCL caps the penetration phase at 500 Minkowski points); GJK's
+/// distance, capped at 1,000 + 1,000 iterations, needs at most about 4,000.
+constexpr long kSupportBudget = 20000;
+
+struct SupportGuard {
+  const void* obj1 = nullptr;
+  fcl::detail::GJKSupportFunction support1 = nullptr, support2 = nullptr;
+  long left = kSupportBudget;
+  bool spent = false;       ///< the budget ran out
+  bool non_finite = false;  ///< a support point was not finite
+};
+thread_local SupportGuard* t_support_guard = nullptr;
+
+bool finite3(const ccd_vec3_t* v) {
+  return std::isfinite(v->v[0]) && std::isfinite(v->v[1]) && std::isfinite(v->v[2]);
+}
+
+void guarded_support(const void* obj, const ccd_vec3_t* dir, ccd_vec3_t* v) {
+  SupportGuard& g = *t_support_guard;
+  if (g.left <= 0) {
+    // Shape 1 is asked along dir, shape 2 along -dir: the Minkowski point is
+    // then -2e300 dir, behind every portal and beyond every tolerance.
+    g.spent = true;
+    ccdVec3Copy(v, dir);
+    ccdVec3Scale(v, -1e300);
+    return;
+  }
+  --g.left;
+  (obj == g.obj1 ? g.support1 : g.support2)(obj, dir, v);
+  if (!finite3(v)) {
+    g.non_finite = true;
+    ccdVec3Set(v, 0, 0, 0);
+  }
+}
+
+/// Installs a guard around FCL's support functions of two libccd objects
+/// for the lifetime of the scope.
+template <class Shape1, class Shape2>
+class GuardedObjects {
+ public:
+  using Init1 = fcl::detail::GJKInitializer<double, Shape1>;
+  using Init2 = fcl::detail::GJKInitializer<double, Shape2>;
+  GuardedObjects(const Shape1& s1, const fcl::Transform3d& tf1, const Shape2& s2, const fcl::Transform3d& tf2)
+      : o1_(Init1::createGJKObject(s1, tf1)), o2_(Init2::createGJKObject(s2, tf2)), outer_(t_support_guard) {
+    guard_.obj1 = o1_;
+    guard_.support1 = Init1::getSupportFunction();
+    guard_.support2 = Init2::getSupportFunction();
+    t_support_guard = &guard_;
+  }
+  ~GuardedObjects() {
+    t_support_guard = outer_;
+    Init1::deleteGJKObject(o1_);
+    Init2::deleteGJKObject(o2_);
+  }
+  GuardedObjects(const GuardedObjects&) = delete;
+  GuardedObjects& operator=(const GuardedObjects&) = delete;
+
+  void* o1() const { return o1_; }
+  void* o2() const { return o2_; }
+  const SupportGuard& guard() const { return guard_; }
+
+ private:
+  void* o1_;
+  void* o2_;
+  SupportGuard guard_;
+  SupportGuard* outer_;
+};
+
+/// Largest relative size given to FCL's GJK distance: its simplex tests
+/// multiply squared lengths of Minkowski points (fourth powers of the
+/// scene's offsets and sizes); beyond 2^250 the products overflow, a dot
+/// product turns NaN and FCL's "A is not in region 1" assert aborts.
+const double kGjkMaxExtent = std::ldexp(1.0, 250);
+
+bool within_gjk_range(const Cylinder& c, const Capsule& k) {
+  const double offsets = std::fmax(max_abs(c.q - c.p), std::fmax(max_abs(k.p - c.p), max_abs(k.q - c.p)));
+  const double extent = std::fmax(offsets, std::fmax(c.r, k.r));
+  return extent <= kGjkMaxExtent;  // false for NaN too
+}
+
+constexpr const char* kSupportSpent = "FCL did not terminate (libccd MPR exceeded its support budget)";
+constexpr const char* kSupportNonFinite =
+    "FCL's support function returned a non-finite point (FCL as shipped aborts or answers garbage here)";
+
+struct MprAnswer {
+  bool hit = false;
+  const char* error = nullptr;  ///< kSupportSpent or kSupportNonFinite: no answer
+  fcl::Vector3d point = fcl::Vector3d::Zero(), normal = fcl::Vector3d::Zero();
+  double depth = 0;
+};
+
+/// FCL's libccd intersection test (MPR) of two converted shapes, with the
+/// penetration phase when `contact`, under the guard.
+template <class Shape1, class Shape2>
+MprAnswer guarded_mpr(const Shape1& s1, const fcl::Transform3d& tf1, const Shape2& s2, const fcl::Transform3d& tf2,
+                      bool contact) {
+  using Objects = GuardedObjects<Shape1, Shape2>;
+  // FCL's parameters: GJKSolver_libccd's iteration cap, the request's
+  // tolerance (fcl::collide copies request.gjk_tolerance into the solver).
+  const fcl::detail::GJKSolver_libccdd solver;
+  const fcl::CollisionRequestd request;
+  const Objects objs(s1, tf1, s2, tf2);
+  MprAnswer out;
+  out.hit = fcl::detail::GJKCollide<double>(objs.o1(), &guarded_support, Objects::Init1::getCenterFunction(),
+                                            objs.o2(), &guarded_support, Objects::Init2::getCenterFunction(),
+                                            solver.max_collision_iterations, request.gjk_tolerance,
+                                            contact ? &out.point : nullptr, contact ? &out.depth : nullptr,
+                                            contact ? &out.normal : nullptr);
+  if (objs.guard().spent) out.error = kSupportSpent;
+  else if (objs.guard().non_finite) out.error = kSupportNonFinite;
+  return out;
+}
+
+/// FCL's libccd distance (GJK, unsigned) of two converted shapes, under the
+/// guard, as fcl::distance with enable_nearest_points reports it.
+template <class Shape1, class Shape2>
+PeerDistance guarded_gjk_distance(const Shape1& s1, const fcl::Transform3d& tf1, const Shape2& s2,
+                                  const fcl::Transform3d& tf2) {
+  using Objects = GuardedObjects<Shape1, Shape2>;
+  // FCL's parameters: GJKSolver_libccd's iteration cap, the request's
+  // tolerance (fcl::distance copies request.distance_tolerance).
+  const fcl::detail::GJKSolver_libccdd solver;
+  const fcl::DistanceRequestd request(true);
+  const Objects objs(s1, tf1, s2, tf2);
+  double dist = 0;
+  fcl::Vector3d p1 = fcl::Vector3d::Zero(), p2 = fcl::Vector3d::Zero();
+  fcl::detail::GJKDistance<double>(objs.o1(), &guarded_support, objs.o2(), &guarded_support,
+                                   solver.max_distance_iterations, request.distance_tolerance, &dist, &p1, &p2);
+  PeerDistance out;
+  if (objs.guard().spent || objs.guard().non_finite) {
+    out.error = objs.guard().spent ? kSupportSpent : kSupportNonFinite;
+    return out;
+  }
+  out.ok = true;
+  out.distance = dist;
+  out.p_a = from_fcl(p1);
+  out.p_b = from_fcl(p2);
+  if (!std::isfinite(out.distance) || !is_finite(out.p_a) || !is_finite(out.p_b)) {
+    out.ok = false;
+    out.error = "FCL returned a non-finite distance or point";
+  }
+  return out;
+}
+
+/// A sphere of radius r translated from `from` to `to` (a segment cast: r = 0).
+struct Motion {
+  Vec3 from, to;
+  double r = 0;
+};
+Motion motion_of(const Segment& s) { return {s.a, s.b, 0.0}; }
+Motion motion_of(const MovingSphere& m) { return {m.c, m.c + m.delta, m.r}; }
+
+/// One fcl::continuousCollide call: the sphere of the motion against the
+/// resting cylinder.
+PeerCast continuous_collide_once(const Motion& m, const Cylinder& c) {
   PeerCast out;
   out.supported = true;
   const FclCylinder cyl(c);
-  const fcl::Sphered point(0.0);
+  const fcl::Sphered point(m.r);
   fcl::Transform3d begin = fcl::Transform3d::Identity(), end = fcl::Transform3d::Identity();
-  begin.translation() = to_fcl(s.a);
-  end.translation() = to_fcl(s.b);
+  begin.translation() = to_fcl(m.from);
+  end.translation() = to_fcl(m.to);
   const fcl::ContinuousCollisionRequestd req(10, 1e-4, fcl::CCDM_TRANS, fcl::GST_LIBCCD,
                                              fcl::CCDC_CONSERVATIVE_ADVANCEMENT);
   fcl::ContinuousCollisionResultd res;
@@ -94,7 +287,7 @@ Vec3 in_frame(const Vec3& v, int k) {
   const Vec3 w = (k & 1) ? -v : v;
   return (k & 2) ? Vec3{w.y, w.z, w.x} : w;
 }
-Segment in_frame(const Segment& s, int k) { return {in_frame(s.a, k), in_frame(s.b, k)}; }
+Motion in_frame(const Motion& m, int k) { return {in_frame(m.from, k), in_frame(m.to, k), m.r}; }
 Cylinder in_frame(const Cylinder& c, int k) { return {in_frame(c.p, k), in_frame(c.q, k), c.r}; }
 
 /// Largest size FCL's continuous collision is given: its bounding-volume
@@ -102,28 +295,48 @@ Cylinder in_frame(const Cylinder& c, int k) { return {in_frame(c.p, k), in_frame
 /// "eigen: too many iterations in Jacobi transform." and answers garbage).
 const double kCastMaxExtent = std::ldexp(1.0, 500);
 
-bool within_cast_range(const Segment& s, const Cylinder& c) {
-  const double extent = std::fmax(std::fmax(max_abs(c.q - c.p), c.r),
-                                  std::fmax(max_abs(s.a - c.p), max_abs(s.b - c.p)));
+bool within_cast_range(const Motion& m, const Cylinder& c) {
+  const double extent = std::fmax(std::fmax(std::fmax(max_abs(c.q - c.p), c.r), m.r),
+                                  std::fmax(max_abs(m.from - c.p), max_abs(m.to - c.p)));
   return extent <= kCastMaxExtent;  // false for NaN too
 }
 
-PeerCast cast_conservative_advancement(const Segment& s, const Cylinder& c, bool more_frames) {
-  if (!within_cast_range(s, c)) {
+PeerCast cast_conservative_advancement(const Motion& m, const Cylinder& c, bool more_frames) {
+  if (!within_cast_range(m, c)) {
     PeerCast out;
     out.supported = true;
     out.error = "outside FCL's range";
     return out;
   }
-  const PeerCast first = continuous_collide_once(s, c);
+  const PeerCast first = continuous_collide_once(m, c);
   if (!more_frames || !first.ok || first.hit) return first;
   // FCL misses some hits (see the header): ask again in exactly equivalent
   // frames, where the rounding of the advancement steps differs.
   for (int k = 1; k < 4; ++k) {
-    const PeerCast again = continuous_collide_once(in_frame(s, k), in_frame(c, k));
+    const PeerCast again = continuous_collide_once(in_frame(m, k), in_frame(c, k));
     if (again.ok && again.hit) return again;
   }
   return first;
+}
+
+/// fcl_cast and fcl_sweep: validation, range, exceptions.
+template <class Moving>
+PeerCast continuous_collide(const Moving& moving, const Cylinder& c, FclCastMethod method) {
+  PeerCast out;
+  out.supported = true;
+  if (!is_valid(moving) || !is_valid(c)) {
+    out.error = kInvalidInput;
+    return out;
+  }
+  try {
+    return cast_conservative_advancement(motion_of(moving), c,
+                                         method != FclCastMethod::kConservativeAdvancementOnce);
+  } catch (const std::exception& e) {
+    out.error = describe(e);
+  } catch (...) {
+    out.error = kUnknownThrow;
+  }
+  return out;
 }
 
 }  // namespace
@@ -146,6 +359,12 @@ FclCylinder::FclCylinder(const Cylinder& c)
 
 FclSphere::FclSphere(const Sphere& s) : shape(s.r), pose(fcl::Transform3d::Identity()) {
   pose.translation() = to_fcl(s.c);
+}
+
+FclCapsule::FclCapsule(const Capsule& c)
+    : shape(c.r, norm(c.q - c.p)), pose(fcl::Transform3d::Identity()) {
+  if (c.p != c.q) pose.linear() = fcl_rotation_z_to(unit(c.q - c.p));
+  pose.translation() = to_fcl(0.5 * c.p + 0.5 * c.q);
 }
 
 namespace {
@@ -212,6 +431,9 @@ PeerDistance fcl_distance_prepared(const FclCylinderSphere& pair) { return dista
 bool fcl_overlap_prepared(const FclCylinderCylinder& pair) { return overlap_on(pair); }
 PeerContact fcl_collide_prepared(const FclCylinderCylinder& pair) { return collide_on(pair); }
 PeerDistance fcl_distance_prepared(const FclCylinderCylinder& pair) { return distance_on(pair); }
+bool fcl_overlap_prepared(const FclCylinderCapsule& pair) { return overlap_on(pair); }
+PeerContact fcl_collide_prepared(const FclCylinderCapsule& pair) { return collide_on(pair); }
+PeerDistance fcl_distance_prepared(const FclCylinderCapsule& pair) { return distance_on(pair); }
 
 PeerContact fcl_collide(const Cylinder& a, const Sphere& b) {
   if (!is_valid(a) || !is_valid(b)) {
@@ -268,22 +490,78 @@ PeerDistance fcl_distance(const Cylinder& a, const Sphere& b) {
 }
 
 PeerCast fcl_cast(const Segment& s, const Cylinder& c, FclCastMethod method) {
-  if (!is_valid(s) || !is_valid(c)) {
-    PeerCast out;
-    out.supported = true;
+  return continuous_collide(s, c, method);
+}
+
+PeerCast fcl_sweep(const MovingSphere& m, const Cylinder& c, FclCastMethod method) {
+  return continuous_collide(m, c, method);
+}
+
+PeerContact fcl_collide(const Cylinder& a, const Capsule& b) {
+  PeerContact out;
+  if (!is_valid(a) || !is_valid(b)) {
     out.error = kInvalidInput;
     return out;
   }
   try {
-    return cast_conservative_advancement(s, c, method != FclCastMethod::kConservativeAdvancementOnce);
+    const FclCylinderCapsule pair(a, b);
+    const MprAnswer r = guarded_mpr(pair.a.shape, pair.a.pose, pair.b.shape, pair.b.pose, true);
+    if (r.error) {
+      out.error = r.error;
+      return out;
+    }
+    if (!r.hit) {
+      out.ok = true;
+      return out;
+    }
+    return contact_from(r.point, r.normal, r.depth, true);
   } catch (const std::exception& e) {
-    PeerCast out;
-    out.supported = true;
+    out.error = describe(e);
+  } catch (...) {
+    out.error = kUnknownThrow;
+  }
+  return out;
+}
+
+bool fcl_overlap(const Cylinder& a, const Capsule& b, std::string* error) {
+  if (error) error->clear();
+  if (!is_valid(a) || !is_valid(b)) {
+    if (error) *error = kInvalidInput;
+    return false;
+  }
+  try {
+    const FclCylinderCapsule pair(a, b);
+    const MprAnswer r = guarded_mpr(pair.a.shape, pair.a.pose, pair.b.shape, pair.b.pose, false);
+    if (!r.error) return r.hit;
+    if (error) *error = r.error;
+  } catch (const std::exception& e) {
+    if (error) *error = describe(e);
+  } catch (...) {
+    if (error) *error = kUnknownThrow;
+  }
+  return false;
+}
+
+PeerDistance fcl_distance(const Cylinder& a, const Capsule& b) {
+  if (!is_valid(a) || !is_valid(b)) {
+    PeerDistance out;
+    out.error = kInvalidInput;
+    return out;
+  }
+  if (!within_gjk_range(a, b)) {
+    PeerDistance out;
+    out.error = "outside FCL's range";
+    return out;
+  }
+  try {
+    const FclCylinderCapsule pair(a, b);
+    return guarded_gjk_distance(pair.a.shape, pair.a.pose, pair.b.shape, pair.b.pose);
+  } catch (const std::exception& e) {
+    PeerDistance out;
     out.error = describe(e);
     return out;
   } catch (...) {
-    PeerCast out;
-    out.supported = true;
+    PeerDistance out;
     out.error = kUnknownThrow;
     return out;
   }

@@ -128,7 +128,7 @@ CheckResult check_consistency(const CylinderCapsuleCase& c, const CylinderCapsul
 /// (A,B) and (B,A) agree, normal flips; caps swapped, capsule reversed: same verdict (band), same depth.
 CheckResult check_symmetry(const CylinderCapsuleCase& c, const CylinderCapsuleImpl& impl = kProductionCylinderCapsule);
 CheckResult check_metamorphic(const CylinderCapsuleCase& c, int move, const CylinderCapsuleImpl& impl = kProductionCylinderCapsule);
-/// Growing either radius never turns overlap into separation.
+/// Growing either radius never turns overlap into separation (outside the band).
 CheckResult check_monotone(const CylinderCapsuleCase& c, const CylinderCapsuleImpl& impl = kProductionCylinderCapsule);
 CheckResult check_robust(const CylinderCapsuleCase& c, const CylinderCapsuleImpl& impl = kProductionCylinderCapsule);
 CheckResult check_all(const CylinderCapsuleCase& c, const CylinderCapsuleImpl& impl = kProductionCylinderCapsule);

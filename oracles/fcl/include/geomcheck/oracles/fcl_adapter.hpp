@@ -13,13 +13,23 @@
 //   taking +z to (q - p)/|q - p|, built from an orthonormal frame around the
 //   axis (no special case: anti-parallel axes are as accurate as any other).
 //   Sphere{c, r} -> fcl::Sphered(r) translated to c.
+//   Capsule{p, q, r} -> fcl::Capsuled(radius r, lz = |q - p|) (FCL's capsule
+//   is centred, axis +z, lz the length of its segment), placed and rotated
+//   as the cylinder. p == q (a ball) -> fcl::Capsuled(r, 0) at p with the
+//   identity rotation: still a capsule, so that one FCL algorithm answers
+//   the whole cylinder/capsule query (an fcl::Sphered would switch FCL to
+//   its closed-form sphere/cylinder code, measured under
+//   collide_cylinder_sphere). fcl::Capsuled accepts lz = 0 and r = 0.
 //   The conversion rounds (|q - p|, the unit axis, the frame, the midpoint):
 //   FCL answers for a shape within a few ulps of ours, never exactly ours.
 //
 // Solver: every call uses GST_LIBCCD. (GST_INDEP returns negative depths and
 // can abort on FCL's asserts.) For cylinder/sphere FCL 0.7 does not run GJK
 // at all: with GST_LIBCCD it dispatches to its closed-form
-// sphereCylinderIntersect / sphereCylinderDistance.
+// sphereCylinderIntersect / sphereCylinderDistance. For cylinder/capsule it
+// has no closed form: collide runs libccd's MPR (ccdMPRIntersect without
+// contact, ccdMPRPenetration with), distance runs libccd's GJK
+// (ccdGJKDist2), both with FCL's absolute tolerance 1e-6.
 //
 // ---------------------------------------------------------------------------
 // Normal convention (checked empirically, see tests/test_fcl_adapter.cpp):
@@ -37,6 +47,42 @@
 //   side, gets the cylinder frame's +x axis (column 0 of
 //   fcl_rotation_z_to, i.e. any_perpendicular of the axis).
 //
+//   fcl::collide(cylinder, capsule): libccd documents MPR's direction as
+//   pointing from object 1 to object 2, and so it is: from the cylinder
+//   towards the capsule (a capsule over the top cap gives (0, 0, +1), under
+//   the bottom cap (0, 0, -1), beside the side the outward radial), no flip.
+//   With the arguments swapped the shallow normals flip; deep ones need not
+//   (MPR searches from the difference of the centres, which changes too).
+//   What the contact means (MPR, not a minimal translation):
+//     - depth: the distance from the origin to the face of the Minkowski
+//       difference that MPR's ray (from the difference of the centres
+//       through the origin) reaches, refined to the tolerance. In
+//       symmetric hand cases it is the true depth within 1e-6 (from below);
+//       in general it is NOT the penetration depth: on 20 000 random
+//       cylinder/capsule pairs (the benchmark's generator: 3 037
+//       overlapping), against the certified engine (oracles/engine.hpp):
+//       FCL depth - true depth in [-9e-7, 1.59], median 4.9e-3 for the
+//       shallow contacts (the capsule's segment outside the cylinder) and
+//       0.11 for the deep ones. It is not the overlap along FCL's normal
+//       either: always less, by up to 0.60 (median 0.022), so translating
+//       the capsule by depth * normal does NOT separate the shapes.
+//       Deep and centred it can be far off: a capsule of radius 0.2 through
+//       the cylinder z in [-1, 1], r = 1 along x gets 4.2 (along x; true
+//       1.2), because coinciding centres make libccd nudge its ray to +x.
+//     - normal: the direction of that closest portal point; |normal -
+//       true minimal-translation direction| median 0.24 on the shallow
+//       random contacts, about 3e-4 off radial in the side hand case.
+//     - point: libccd's barycentric point of the final portal (world
+//       frame), roughly inside the overlap; not production's point.
+//     - touching: exact touching is "no hit" (an overlap must exceed about
+//       1e-7..1e-9 absolute to be seen); verdicts otherwise agreed with the
+//       certified engine on all 20 000 random pairs. When MPR's depth is
+//       below CCD_EPS (2.2e-16, absolute) libccd sets no direction: the
+//       adapter reports hit with that depth and a ZERO normal (ok).
+//   About 2-2.5 us per collide on random poses, 3.3-4.5 us on pairs in
+//   contact, 0.6-1 us per overlap (enable_contact = false)
+//   (bench_collide_cylinder_capsule, Release, shared two-core machine).
+//
 // ---------------------------------------------------------------------------
 // Distance:
 //   fcl::distance with enable_nearest_points and GST_LIBCCD. When the shapes
@@ -46,6 +92,63 @@
 //   and leaves the nearest points zero. The adapter passes that through
 //   unchanged (ok = true, distance = -1): read `distance < 0` as "FCL says
 //   overlapping or touching", never as a penetration depth.
+//   Cylinder/capsule: the same convention (libccd's GJK: exactly -1 and
+//   zero points as soon as its GJK finds the origin in the difference;
+//   enable_signed_distance is not set). Separated: GJK stops on a 1e-6
+//   improvement, from above: on the 16 963 separated random pairs FCL
+//   distance - true distance in [1.6e-12, 0.138], median 4.7e-7, 99th
+//   percentile 3.2e-5. A touching pair can get a rounding-sized positive
+//   distance (while collide says no hit), or no answer at all (see
+//   "Guarded support functions": FCL as shipped aborts on some). -1 also
+//   comes back, undistinguishable, when GJK's distance phase runs out of
+//   its 1 000 iterations. The verdicts (distance < 0 versus overlapping)
+//   agreed with the engine on all 20 000 random pairs.
+//
+// ---------------------------------------------------------------------------
+// Guarded support functions (cylinder/capsule): what keeps the harness from
+// hanging or aborting. Two defects of FCL 0.7 / libccd 2.1, both found here:
+//   1. HANG. libccd's MPR portal discovery and refinement loops have no
+//      iteration cap (only the penetration phase stops after
+//      max_collision_iterations = 500), and in floating point the refinement
+//      can cycle for ever: it does on elongated scenes (3 of 2 000 random
+//      scenes with a cylinder 2^0..2^20 long, e.g. 2^18 long and 1.2 wide;
+//      31 of 2 000 with lengths and offsets 2^20..2^50). fcl::collide, with
+//      or without contact, then never returns.
+//   2. ABORT. FCL's capsule support function normalises the search
+//      direction. GJK (distance) starts from minus its first Minkowski
+//      support point, which is exactly zero when the support points of the
+//      two shapes along +x coincide: a vertical capsule (1.5, 0, 0) ->
+//      (1.5, 0, 2) of radius 0.5 touching the side of the cylinder z in
+//      [-1, 1], r = 1, or a ball (p == q) touching it. The support point is
+//      then NaN and FCL's assert "A is not in region 1" (gjk_libccd-inl.h)
+//      aborts the process. The same happens when the Minkowski points round
+//      to zero far from the origin (offset 1e17, shapes of size 1), when
+//      directions underflow (subnormal scenes) and when GJK's products of
+//      squared lengths overflow (sizes beyond about 2^250).
+//   The adapter therefore makes FCL's own calls (GJKSolver_libccd's
+//   ShapeIntersectLibccdImpl / ShapeDistanceLibccdImpl: GJKCollide /
+//   GJKDistance on the libccd objects FCL builds, with FCL's centre
+//   functions, iteration caps and tolerances) with FCL's support functions
+//   wrapped:
+//     - a budget of 20 000 support evaluations (a returning MPR call uses at
+//       most about 1 040, GJK's distance at most about 4 000 by its
+//       iteration caps); past it every
+//       support point lies 2e300 behind the search direction, which ends
+//       every MPR loop: ok = false, "FCL did not terminate (libccd MPR
+//       exceeded its support budget)", after about 3 ms;
+//     - a non-finite support point is replaced by the origin (with finite
+//       points GJK's first step keeps the assert true: its test
+//       A.(-B) >= 0 and the assert A.B <= |B|^2 eps round alike): ok =
+//       false, "FCL's support function returned a non-finite point";
+//     - distance refuses a relative size (offsets from the cylinder's p,
+//       axis, radii) above 2^250: ok = false, "outside FCL's range".
+//   Otherwise the answer is bit for bit fcl::collide's / fcl::distance's
+//   (test GuardedCallsAreFcls). 1.8 million adversarial scenes (small
+//   integer and half coordinates, exact touching, p == q, r = 0, scales
+//   2^-400..2^200, offsets to 2^300) ran without a hang or an abort, where
+//   fcl::distance as shipped aborted in every batch of 2 000. The prepared
+//   calls (fcl_convert.hpp) are FCL as shipped, unguarded, for the
+//   benchmarks only.
 //
 // ---------------------------------------------------------------------------
 // Cast (segment against cylinder): what FCL can and cannot answer.
@@ -104,19 +207,50 @@
 //     - GST_INDEP: runs EPA, which can abort on FCL's asserts.
 //
 // ---------------------------------------------------------------------------
+// Sweep (sphere moving against a cylinder): what FCL can and cannot answer.
+//   fcl_sweep is fcl_cast with a radius: fcl::continuousCollide of an
+//   fcl::Sphered(r) translated from c to c + delta (the end rounded once,
+//   then FCL's own interpolation) against the resting cylinder, same
+//   request, same closed-form sphere/cylinder distance in every step, same
+//   range refusal (the radius counts), same re-asking in equivalent frames
+//   after a miss (FclCastMethod).
+//   It answers hit and t only. It cannot express:
+//     - the contact point and the cylinder's normal there (none come back);
+//     - "starts inside": a ball meeting the cylinder at t = 0, touching
+//       included, is a hit at t = 0 whatever the motion, so t = 0 cannot be
+//       told from a first touch exactly at the start;
+//     - an exact t: conservative advancement stops when a step falls under
+//       t_err = 1e-4, so t is early by up to 1e-4 and a sweep passing
+//       within about 1e-4 |delta| of the cylinder can be reported as a hit.
+//   Measured against the certified engine (time_of_impact of the ball),
+//   20 000 random sweeps (the cast benchmark's generator, radius 0.05 to
+//   1.5; 4 941 hits): never late (FCL t - true t <= 5.2e-15), early by at
+//   most 9.98e-5 (mean 1.1e-5); no false hit; missed hits 5 (0.1% of the
+//   hits) by default, 92 (1.9%) asked once (kConservativeAdvancementOnce),
+//   by the two mechanisms of the cast. Hand cases whose first step lands on
+//   the contact are exact: down onto a cap (t = 0.35), at a rim point along
+//   the diagonal (t = (2 sqrt 2 - 0.5) / (4 sqrt 2)).
+//   About 2-3.5 us per FCL call (bench_sweep_sphere_cylinder, Release,
+//   shared two-core machine); a miss asked again costs up to 4 calls.
+//
+// ---------------------------------------------------------------------------
 // Validity and safety:
 //   * Shapes failing is_valid (shapes.hpp) are never passed to FCL: the call
 //     returns ok = false, error = "invalid input" (fcl_overlap: false).
 //   * FCL's Debian build keeps its asserts. Every path used here is free of
 //     them and of unbounded loops for valid input: sphere/cylinder collide
-//     and distance are closed form, the cast is conservative advancement on
-//     that closed-form distance. No libccd GJK/MPR/EPA code runs.
-//   * Range. collide/overlap/distance accept every valid input; overflow
-//     inside FCL (relative offsets or radii beyond ~1e154, whose squares
-//     overflow) shows up as a non-finite output and is reported as
-//     ok = false. The cast refuses (ok = false, error = "outside FCL's
-//     range") a cylinder radius, axis or segment-to-cylinder offset above
-//     2^500 (~3e150) in any coordinate: FCL's bounding-volume fit for
+//     and distance are closed form, the cast and the sweep are conservative
+//     advancement on that closed-form distance; cylinder/capsule collide,
+//     overlap (libccd's MPR) and distance (libccd's GJK, iteration caps) run
+//     with guarded support functions (see above). No EPA runs.
+//   * Range. collide/overlap, and distance against a sphere, accept every
+//     valid input; overflow inside FCL (relative offsets or radii beyond
+//     ~1e154, whose squares overflow) shows up as a non-finite output and
+//     is reported as ok = false. Distance against a capsule refuses a
+//     relative size above 2^250 (see "Guarded support functions"). The cast
+//     and the sweep refuse (ok = false, error = "outside FCL's range") a
+//     cylinder radius, axis, ball radius or start/end-to-cylinder offset
+//     above 2^500 (~3e150) in any coordinate: FCL's bounding-volume fit for
 //     continuous collision squares them, overflows, prints "eigen: too many
 //     iterations in Jacobi transform." on stderr and answers garbage.
 //   * Every FCL exception is caught and reported in `error`.
@@ -133,36 +267,36 @@
 
 namespace geomcheck::oracles {
 
-/// FCL's contact for cylinder (A) against sphere (B), in geomcheck's
-/// convention (normal from A towards B).
+/// FCL's contact for cylinder (A) against sphere or capsule (B), in
+/// geomcheck's convention (normal from A towards B).
 struct PeerContact {
   bool ok = false;    ///< false if the input was invalid, FCL threw or returned garbage
   std::string error;  ///< why not ok; empty when ok
-  bool hit = false;   ///< FCL says the shapes intersect (touching included)
+  bool hit = false;   ///< FCL says the shapes intersect (sphere: touching included; capsule: not)
   Vec3 point;         ///< FCL's contact position (world frame)
-  Vec3 normal;        ///< unit, from the cylinder towards the sphere
+  Vec3 normal;        ///< unit, from the cylinder towards B (capsule: zero for MPR's touching contact)
   double depth = 0;   ///< FCL's penetration depth
 };
 
-/// FCL's separation distance for cylinder (A) against sphere (B).
+/// FCL's separation distance for cylinder (A) against sphere or capsule (B).
 struct PeerDistance {
   bool ok = false;    ///< false if the input was invalid, FCL threw or returned garbage
   std::string error;  ///< why not ok; empty when ok
   double distance = 0;  ///< > 0 separated; exactly -1 when FCL sees overlap/touching
   Vec3 p_a;           ///< nearest point on the cylinder (zero when distance < 0)
-  Vec3 p_b;           ///< nearest point on the sphere (zero when distance < 0)
+  Vec3 p_b;           ///< nearest point on B (zero when distance < 0)
 };
 
-/// FCL's answer to a segment cast.
+/// FCL's answer to a segment cast or a sphere sweep.
 struct PeerCast {
   bool ok = false;         ///< false if the input was invalid, FCL threw or returned garbage
   std::string error;       ///< why not ok; empty when ok
-  bool supported = false;  ///< FCL can express this query (true for segment/cylinder)
-  bool hit = false;        ///< FCL says the segment touches the cylinder
+  bool supported = false;  ///< FCL can express this query (true for segment/cylinder and sphere/cylinder)
+  bool hit = false;        ///< FCL says the segment (the ball) touches the cylinder
   double t = 0;            ///< first-touch parameter in [0, 1] when hit: FCL's time of contact
 };
 
-/// How fcl_cast asks FCL (see the header notes).
+/// How fcl_cast and fcl_sweep ask FCL (see the header notes).
 enum class FclCastMethod {
   kConservativeAdvancement,      ///< continuousCollide; after a miss, again in up to 3 equivalent frames
   kConservativeAdvancementOnce,  ///< one continuousCollide call on the scene as given (FCL as shipped)
@@ -182,5 +316,27 @@ PeerDistance fcl_distance(const Cylinder& a, const Sphere& b);
 /// far as FCL can tell: t within 1e-4, early (see the header notes).
 PeerCast fcl_cast(const Segment& s, const Cylinder& c,
                   FclCastMethod method = FclCastMethod::kConservativeAdvancement);
+
+/// fcl::collide(cylinder, capsule), num_max_contacts = 1, enable_contact,
+/// GST_LIBCCD (libccd's MPR with guarded support functions: never hangs;
+/// see the header notes). Normal from the cylinder towards the capsule;
+/// depth and normal are MPR's estimate, not the minimal translation.
+PeerContact fcl_collide(const Cylinder& a, const Capsule& b);
+
+/// fcl::collide(cylinder, capsule) with enable_contact = false, GST_LIBCCD,
+/// guarded the same way. false for invalid input, when FCL throws or the
+/// guard stopped it; then `*error` (if given) says why.
+bool fcl_overlap(const Cylinder& a, const Capsule& b, std::string* error = nullptr);
+
+/// fcl::distance(cylinder, capsule), enable_nearest_points, GST_LIBCCD
+/// (libccd's GJK with guarded support functions: never aborts): > 0
+/// separated, exactly -1 when FCL sees them meet.
+PeerDistance fcl_distance(const Cylinder& a, const Capsule& b);
+
+/// First touch of the moving ball `m` (centre m.c, radius m.r, moving by
+/// m.delta) with the resting cylinder, as far as FCL can tell: hit and t
+/// only, t within about 1e-4, early (see the header notes).
+PeerCast fcl_sweep(const MovingSphere& m, const Cylinder& c,
+                   FclCastMethod method = FclCastMethod::kConservativeAdvancement);
 
 }  // namespace geomcheck::oracles

@@ -8,6 +8,7 @@
 // Conventions and caveats are documented in fcl_adapter.hpp.
 #pragma once
 
+#include <fcl/geometry/shape/capsule.h>
 #include <fcl/geometry/shape/cylinder.h>
 #include <fcl/geometry/shape/sphere.h>
 #include <fcl/common/types.h>
@@ -37,6 +38,15 @@ struct FclSphere {
   explicit FclSphere(const Sphere& s);
 };
 
+/// A geomcheck capsule as FCL sees it: fcl::Capsuled(r, |q - p|) at
+/// (p + q)/2 with +z along q - p; p == q gives lz = 0 and the identity
+/// rotation (a sphere, still an fcl::Capsuled). Requires is_valid(c).
+struct FclCapsule {
+  fcl::Capsuled shape;
+  fcl::Transform3d pose;
+  explicit FclCapsule(const Capsule& c);
+};
+
 /// A cylinder/sphere pair converted once; the `*_prepared` calls run only
 /// FCL's query and the conversion of its result. Requires valid shapes.
 struct FclCylinderSphere {
@@ -52,14 +62,33 @@ struct FclCylinderCylinder {
   FclCylinderCylinder(const Cylinder& first, const Cylinder& second) : a(first), b(second) {}
 };
 
+/// A cylinder/capsule pair converted once (PeerContact's normal from the
+/// cylinder towards the capsule). Requires valid shapes.
+struct FclCylinderCapsule {
+  FclCylinder a;
+  FclCapsule b;
+  FclCylinderCapsule(const Cylinder& cyl, const Capsule& cap) : a(cyl), b(cap) {}
+};
+
 /// fcl_overlap on a converted pair (no validity check; exceptions propagate).
 bool fcl_overlap_prepared(const FclCylinderSphere& pair);
 bool fcl_overlap_prepared(const FclCylinderCylinder& pair);
+/// fcl::collide as shipped, enable_contact = false. Unlike the adapter's
+/// fcl_overlap(Cylinder, Capsule) its support functions are not guarded: on
+/// the inputs described in fcl_adapter.hpp ("Guarded support functions")
+/// this call does not return.
+bool fcl_overlap_prepared(const FclCylinderCapsule& pair);
 /// fcl_collide on a converted pair (no validity check; exceptions are caught).
 PeerContact fcl_collide_prepared(const FclCylinderSphere& pair);
 PeerContact fcl_collide_prepared(const FclCylinderCylinder& pair);
+/// fcl::collide as shipped (unguarded, see fcl_overlap_prepared); where
+/// fcl_collide is ok, the same answer bit for bit.
+PeerContact fcl_collide_prepared(const FclCylinderCapsule& pair);
 /// fcl_distance on a converted pair (no validity check; exceptions are caught).
 PeerDistance fcl_distance_prepared(const FclCylinderSphere& pair);
 PeerDistance fcl_distance_prepared(const FclCylinderCylinder& pair);
+/// fcl::distance as shipped (unguarded): ABORTS the process on the inputs
+/// described in fcl_adapter.hpp; where fcl_distance is ok, the same answer.
+PeerDistance fcl_distance_prepared(const FclCylinderCapsule& pair);
 
 }  // namespace geomcheck::oracles
