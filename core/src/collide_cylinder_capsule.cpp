@@ -74,6 +74,7 @@ double minimize_rim(const SegmentInFrame& s, double lo, double hi) {
     (d1 < 0 ? lo : hi) = l;
     double next = d2 > 0 ? l - d1 / d2 : 0.5 * (lo + hi);
     if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
+    else if (std::fabs(next - l) <= 0x1p-46) return next;  // quadratic convergence: the next step is below rounding
     if (next == l) break;
     l = next;
   }
@@ -168,24 +169,26 @@ Contact collide_scaled(const Cylinder& cyl, const Capsule& cap) {
   const double noise = 16 * 0x1p-52 * std::max(scene, s.len);
   out.hit = true;
   const Vec3 x = s.point(k.l);
-  if (k.d > noise) {
-    // Shallow: the sphere contact at S's closest point (true depth). A
-    // distance at the rounding level is a touching core: the deep branch,
-    // whose depth is the overlap along its normal whatever the normal.
-    const detail::ClosestOnCylinder c = detail::closest_on_cylinder(cyl, s.u, s.len, x, noise);
-    if (!c.inside) {
-      out.point = c.point;
-      out.normal = c.normal;
-      out.depth = std::max(cap.r - k.d, 0.0);
-      return out;
-    }
+  // Shallow: the sphere contact at S's closest point (true depth, the
+  // direction between the closest points). That direction is computed from
+  // offsets of size D with rounding eps * scene, so below D = 2^-20 * scene
+  // it is no longer trusted: such a core touches the cylinder to the
+  // precision that matters, and goes to the deep branch, whose depth is the
+  // overlap along its normal whatever the normal.
+  const detail::ClosestOnCylinder c = detail::closest_on_cylinder(cyl, s.u, s.len, x, noise);
+  if (k.d > 0x1p-20 * scene && !c.inside) {
+    out.point = c.point;
+    out.normal = c.normal;
+    out.depth = std::max(cap.r - k.d, 0.0);
+    return out;
   }
-  // Deep: S enters the cylinder. The least overlap over the candidate
-  // directions: the axis both ways, the radial direction of S's closest
+  // Deep: S meets the cylinder (or nearly). The least overlap over the
+  // candidate directions: the direction between the closest points (when S
+  // is outside), the axis both ways, the radial direction of S's closest
   // approach to the axis line (both ways), the common perpendicular of S and
   // the axis (both ways).
-  out.point = cyl.p + x;
-  Vec3 cands[6];
+  out.point = c.inside ? cyl.p + x : c.point;
+  Vec3 cands[9];
   int n = 0;
   cands[n++] = s.u;
   cands[n++] = -s.u;
@@ -205,6 +208,7 @@ Contact collide_scaled(const Cylinder& cyl, const Capsule& cap) {
     cands[n++] = cp;
     cands[n++] = -cp;
   }
+  if (!c.inside && k.d > noise) cands[n++] = c.normal;
   if (n == 2) {
     // S along the axis line: any perpendicular.
     const Vec3 pp = any_perpendicular(s.u);

@@ -4,25 +4,25 @@
 // overlapping. Write S for the capsule's segment pq and D = dist(S, C) for
 // its distance to the solid cylinder C; the shapes meet iff D <= capsule.r.
 //
-// `collide` CLAIMS THE TRUE PENETRATION DEPTH ONLY WHILE S STAYS OUTSIDE THE
-// CYLINDER (D > 0, the usual "shallow" contact): then depth = r - D is the
-// minimum translation distance, `normal` (unit, from the cylinder towards
-// the capsule) is the direction from the cylinder's closest point to S's
-// closest point, a minimal-translation direction, and `point` is that
-// closest cylinder point.
-// That direction is as well conditioned as the gap D allows: computed from
-// offsets of size D with rounding eps * scale, its angle is good to about
-// eps * scale / D, and the capsule's length turns an angle into excess
-// overlap along it. The harness holds the normal to the claim where
-// D >= 1e-6 * scale, and the depth wherever D exceeds the verdict band.
-// When S enters the cylinder (D == 0, "deep"), depth is NOT claimed
-// minimal: `normal` is the best of a few candidate directions (the two axis
-// directions, the radial direction of S's closest approach to the axis, the
-// common perpendicular of S and the axis) and `depth` the exact overlap of
+// `collide` CLAIMS THE TRUE PENETRATION DEPTH ONLY WHILE S STAYS CLEARLY
+// OUTSIDE THE CYLINDER (D > 2^-20 * scene, the usual "shallow" contact):
+// then depth = r - D is the minimum translation distance, `normal` (unit,
+// from the cylinder towards the capsule) is the direction from the
+// cylinder's closest point to S's closest point, a minimal-translation
+// direction, and `point` is that closest cylinder point. That direction is
+// computed from offsets of size D carrying rounding eps * scene, so its
+// angle is good to about eps * scene / D, and the capsule's length turns an
+// angle into excess overlap along it (first order, unlike a sphere): the
+// harness holds depth and normal to the claim where D >= 1e-6 * scale.
+// When S enters the cylinder or passes within 2^-20 * scene of it ("deep"),
+// depth is NOT claimed minimal: `normal` is the best of a few candidate
+// directions (the direction between the closest points, the two axis
+// directions, the radial direction of S's closest approach to the axis,
+// the common perpendicular of S and the axis) and `depth` the overlap of
 // the two shapes along it, an upper bound of the penetration depth; `point`
-// is a point of S inside the cylinder.
+// is a point of S inside the cylinder (or the closest cylinder point).
 // In both cases translating the capsule by depth * normal leaves the shapes
-// touching, and `point` lies in both.
+// touching (to the normal's precision), and `point` lies in both.
 //
 // Algorithm (engine talk "Cylinder Collision", capsule vs cylinder; not
 // reduced to an augmented cylinder): closest points between S and the

@@ -68,7 +68,10 @@ inline TubeInterval tube_interval(Vec3 m, Vec3 n, Vec3 u, double len, double ext
       sq = std::sqrt(disc);
     }
     // Roots without cancellation: k / qa and qc / k with k = -(qb + sign(qb) sq).
-    const double k = -(qb + std::copysign(sq, qb));
+    // qb == 0 takes +sq whatever the sign of the zero: a reflected scene
+    // gives -0 where the original gives +0, and must get the same roots
+    // (collide_cylinder_capsule regression 0001).
+    const double k = -(qb + (qb < 0 ? -sq : sq));
     if (k == 0) {
       cyl_lo = cyl_hi = 0;
     } else {
