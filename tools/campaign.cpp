@@ -113,7 +113,7 @@ QueryReport run_query(const CampaignOptions& opt, const std::filesystem::path& o
   std::vector<std::pair<Case, std::string>> cases;
   const auto gen = Suite<Q>::targeted();
   rc::Random random(opt.seed ^ (0x9e3779b97f4a7c15ull * (static_cast<std::uint64_t>(Q) + 1)));
-  for (int i = 0; i < opt.cases; ++i) cases.push_back(gen(random.split(), 50).value());
+  for (int i = 0, n = campaign_cases(opt, info(Q).name); i < n; ++i) cases.push_back(gen(random.split(), 50).value());
 
   // Production throughput on these cases.
   {
@@ -260,13 +260,21 @@ std::string hist_svg(const Series& s) {
 
 }  // namespace
 
+int campaign_cases(const CampaignOptions& opt, const char* id) {
+  if (opt.cases > 0) return opt.cases;
+  const std::string q(id);
+  return q == "collide_cylinder_capsule" || q == "sweep_sphere_cylinder" ? 10000 : 100000;
+}
+
 int run_campaign(const CampaignOptions& opt) {
   namespace fs = std::filesystem;
   const fs::path out_dir(opt.out);
   fs::create_directories(out_dir);
   const int threads = opt.threads > 0 ? opt.threads : std::max(1u, std::thread::hardware_concurrency());
-  std::fprintf(stderr, "[campaign] seed %llu, %d cases per query, %d threads, output %s\n",
-               static_cast<unsigned long long>(opt.seed), opt.cases, threads, out_dir.string().c_str());
+  const std::string per_query = opt.cases > 0 ? std::to_string(opt.cases) + " cases per query"
+                                              : std::string("100000 cases per query (10000 where the oracle is the certified engine)");
+  std::fprintf(stderr, "[campaign] seed %llu, %s, %d threads, output %s\n", static_cast<unsigned long long>(opt.seed),
+               per_query.c_str(), threads, out_dir.string().c_str());
   std::vector<QueryReport> reps;
   for_each_query([&](auto q) {
     constexpr QueryId Q = decltype(q)::value;
@@ -276,8 +284,10 @@ int run_campaign(const CampaignOptions& opt) {
 
   int beyond = 0;
   std::ofstream js(out_dir / "report.json");
-  js << "{\n  \"tool\": \"geomcheck\",\n  \"seed\": " << opt.seed << ",\n  \"cases_per_query\": " << opt.cases
-     << ",\n  \"replay\": " << jstr("geomcheck campaign --seed " + std::to_string(opt.seed) + " --cases " + std::to_string(opt.cases))
+  const std::string rerun = "geomcheck campaign --seed " + std::to_string(opt.seed) +
+                            (opt.cases > 0 ? " --cases " + std::to_string(opt.cases) : std::string());
+  js << "{\n  \"tool\": \"geomcheck\",\n  \"seed\": " << opt.seed << ",\n  \"cases_per_query\": " << jstr(per_query)
+     << ",\n  \"replay\": " << jstr(rerun)
      << ",\n  \"queries\": [\n";
   for (std::size_t i = 0; i < reps.size(); ++i) {
     QueryReport& r = reps[i];
@@ -322,9 +332,8 @@ int run_campaign(const CampaignOptions& opt) {
        "td,th{border:1px solid #bbb;padding:4px 8px;text-align:right}th{background:#eee}td.l,th.l{text-align:left}"
        ".bad{color:#b00;font-weight:bold}.ok{color:#070}</style></head><body>"
        "<h1>geomcheck campaign report</h1><p>seed <code>"
-    << opt.seed << "</code>, " << opt.cases << " cases per query. Errors are multiples of the case scale "
-       "(largest coordinate magnitude or extent). Rerun: <code>geomcheck campaign --seed " << opt.seed << " --cases "
-    << opt.cases << "</code></p>";
+    << opt.seed << "</code>, " << html(per_query) << ". Errors are multiples of the case scale "
+       "(largest coordinate magnitude or extent). Rerun: <code>" << html(rerun) << "</code></p>";
   for (QueryReport& r : reps) {
     const bool clean = r.beyond == 0 && r.check_failures == 0;
     h << "<h2 id='" << r.name << "'>" << r.name << "</h2><p>" << html(r.summary) << "</p><p class='"
