@@ -3,19 +3,20 @@
 # Installs the Debian dependencies, builds the default preset and runs every
 # ctest suite (properties with a fixed printed seed, oracle self-tests, case
 # files, regression and seed replays, campaign smoke, CLI), runs the same
-# suites again under ASan+UBSan (preset asan, fewer cases), then builds the
+# suites but the teeth again under ASan+UBSan (preset asan, fewer cases), then builds the
 # fuzz preset (clang, libFuzzer, ASan+UBSan) and runs the bounded fuzz smoke
 # test of every fuzz target over its seeds.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/install-deps.sh
 jobs=$(nproc)
-echo "== default build (g++)"
+phase() { echo "== $1 (at $((SECONDS / 60)) min $((SECONDS % 60)) s)"; }
+phase "default build (g++)"
 cmake --preset default >/dev/null
 cmake --build --preset default -j "$jobs"
 seed=$(sed -n 's/^GEOMCHECK_RC_SEED:STRING=//p' build/default/CMakeCache.txt)
 cases=$(sed -n 's/^GEOMCHECK_RC_CASES:STRING=//p' build/default/CMakeCache.txt)
-echo "== tests (RapidCheck seed $seed, $cases cases per property; a failure prints its replay command)"
+phase "tests (RapidCheck seed $seed, $cases cases per property; a failure prints its replay command)"
 summary=()
 run_ctest() {  # preset; keeps ctest's closing line for the summary
   local log; log=$(mktemp)
@@ -29,15 +30,15 @@ run_ctest() {  # preset; keeps ctest's closing line for the summary
 }
 status=0
 run_ctest default || status=1
-echo "== sanitizer build (g++, ASan+UBSan)"
+phase "sanitizer build (g++, ASan+UBSan)"
 cmake --preset asan >/dev/null
 cmake --build --preset asan -j "$jobs"
-echo "== tests under ASan+UBSan"
+phase "tests under ASan+UBSan"
 run_ctest asan || status=1
-echo "== fuzz build (clang, libFuzzer, ASan+UBSan)"
+phase "fuzz build (clang, libFuzzer, ASan+UBSan)"
 cmake --preset fuzz >/dev/null
 cmake --build --preset fuzz -j "$jobs"
-echo "== fuzz smoke"
+phase "fuzz smoke"
 run_ctest fuzz || status=1
 # One closing line over both runs: "N passed, N failed".
 passed=0; failed=0
@@ -46,5 +47,5 @@ for line in "${summary[@]}"; do
   [ -n "$t" ] && passed=$((passed + t - f)) && failed=$((failed + f))
 done
 echo
-echo "tests: $passed passed, $failed failed"
+echo "tests: $passed passed, $failed failed ($((SECONDS / 60)) min $((SECONDS % 60)) s in all)"
 exit "$status"

@@ -18,14 +18,6 @@ using oracle::Q;
 using oracle::QInterval;
 using oracle::QVec;
 
-std::string describe(const Contact& c, bool ov) {
-  std::ostringstream o;
-  o << "overlap=" << (ov ? "yes" : "no") << " collide.hit=" << (c.hit ? "yes" : "no");
-  if (c.hit) o << " depth=" << fmt("%.17g", c.depth) << " normal=" << vec(c.normal) << " point=" << vec(c.point);
-  return o.str();
-}
-
-bool finite_contact(const Contact& c) { return is_finite(c.point) && is_finite(c.normal) && std::isfinite(c.depth); }
 bool valid_case(const CylinderCapsuleCase& c) { return is_valid(c.a) && is_valid(c.b); }
 
 double scale_of(const CylinderCapsuleCase& c) {

@@ -16,19 +16,6 @@ namespace {
 
 constexpr QueryId kId = QueryId::collide_cylinder_sphere;
 
-
-std::string describe(const Contact& c, bool ov) {
-  std::ostringstream o;
-  o << "overlap=" << (ov ? "yes" : "no") << " collide.hit=" << (c.hit ? "yes" : "no");
-  if (c.hit)
-    o << " depth=" << fmt("%.17g", c.depth) << " normal=" << vec(c.normal) << " point=" << vec(c.point);
-  return o.str();
-}
-
-bool finite_contact(const Contact& c) {
-  return is_finite(c.point) && is_finite(c.normal) && std::isfinite(c.depth);
-}
-
 bool sphere_valid_case(const CylinderSphereCase& c) { return is_valid(c.a) && is_valid(c.b); }
 
 }  // namespace

@@ -23,17 +23,7 @@ using oracle::Q;
 using oracle::QInterval;
 using oracle::QVec;
 
-std::string describe(const CastHit& h) {
-  std::ostringstream o;
-  o << "hit=" << (h.hit ? "yes" : "no");
-  if (h.hit)
-    o << " t=" << fmt("%.17g", h.t) << " starts_inside=" << (h.starts_inside ? "yes" : "no")
-      << " point=" << vec(h.point) << " normal=" << vec(h.normal);
-  return o.str();
-}
-
 bool valid_case(const SweepCylinderCase& c) { return is_valid(c.a) && is_valid(c.b); }
-bool finite_hit(const CastHit& h) { return std::isfinite(h.t) && is_finite(h.point) && is_finite(h.normal); }
 
 double scale_of(const SweepCylinderCase& c) {
   const Vec3 end = c.a.c + c.a.delta;

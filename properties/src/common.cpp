@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <sstream>
 
 #include "geomcheck/oracles/cylinder_sphere.hpp"
 #include "geomcheck/properties/tolerances.hpp"
@@ -15,6 +16,25 @@ std::string fmt(const char* f, double a, double b, double c) {
   return buf;
 }
 std::string vec(Vec3 v) { return fmt("(%.17g, %.17g, %.17g)", v.x, v.y, v.z); }
+
+std::string describe(const Contact& c, bool overlap) {
+  std::ostringstream o;
+  o << "overlap=" << (overlap ? "yes" : "no") << " collide.hit=" << (c.hit ? "yes" : "no");
+  if (c.hit) o << " depth=" << fmt("%.17g", c.depth) << " normal=" << vec(c.normal) << " point=" << vec(c.point);
+  return o.str();
+}
+
+std::string describe(const CastHit& h) {
+  std::ostringstream o;
+  o << "hit=" << (h.hit ? "yes" : "no");
+  if (h.hit)
+    o << " t=" << fmt("%.17g", h.t) << " starts_inside=" << (h.starts_inside ? "yes" : "no")
+      << " point=" << vec(h.point) << " normal=" << vec(h.normal);
+  return o.str();
+}
+
+bool finite_contact(const Contact& c) { return is_finite(c.point) && is_finite(c.normal) && std::isfinite(c.depth); }
+bool finite_hit(const CastHit& h) { return std::isfinite(h.t) && is_finite(h.point) && is_finite(h.normal); }
 
 double rel_up(const oracle::Q& q, double scale) {
   // Outputs are doubles: in a subnormal scene they cannot be finer than a

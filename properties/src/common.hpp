@@ -11,6 +11,14 @@ namespace geomcheck {
 std::string fmt(const char* f, double a, double b = 0, double c = 0);
 /// "(x, y, z)" with round-trip precision.
 std::string vec(Vec3 v);
+/// One line for a failure message: the overlap verdict and the contact.
+std::string describe(const Contact& c, bool overlap);
+/// One line for a failure message: a cast or sweep hit.
+std::string describe(const CastHit& h);
+/// Every output number of a contact is finite.
+bool finite_contact(const Contact& c);
+/// Every output number of a hit is finite.
+bool finite_hit(const CastHit& h);
 
 /// q / scale rounded up to a double, after subtracting the resolution of a
 /// double output (4 x the smallest subnormal). The division happens in

@@ -16,13 +16,17 @@ namespace {
 constexpr std::uint64_t kSeed = 20261121;
 constexpr int kCases = 20000;
 
-// The table is calibrated on kCases cases. GEOMCHECK_PRECISION_CASES runs
-// fewer (the sanitizer build: same code, same numbers, 10x slower), and
-// then only the upper bounds are checked: a sample too small to reach the
-// worst cases cannot call a bound stale.
+// The table is calibrated on kCases cases. Fewer cases (the environment
+// variable GEOMCHECK_PRECISION_CASES, or the build's cache variable of that
+// name: the sanitizer build, same code, same numbers, 10x slower) check only
+// the upper bounds: a sample too small to reach the worst cases cannot call
+// a bound stale.
+#ifndef GEOMCHECK_PRECISION_CASES_BUILD
+#define GEOMCHECK_PRECISION_CASES_BUILD 20000
+#endif
 int cases() {
   const char* v = std::getenv("GEOMCHECK_PRECISION_CASES");
-  const int n = v ? std::atoi(v) : kCases;
+  const int n = v ? std::atoi(v) : GEOMCHECK_PRECISION_CASES_BUILD;
   return n > 0 && n < kCases ? n : kCases;
 }
 
