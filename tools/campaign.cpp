@@ -13,6 +13,8 @@
 #include <sstream>
 #include <thread>
 
+#include <unistd.h>
+
 #include "generators.hpp"
 #include "geomcheck/casefile.hpp"
 #include "geomcheck/properties/tolerances.hpp"
@@ -151,17 +153,24 @@ QueryReport run_query(const CampaignOptions& opt, const std::filesystem::path& o
   };
   std::vector<std::thread> pool;
   for (int k = 0; k < threads; ++k) pool.emplace_back(worker);
-  while (opt.progress) {
+  // On a terminal the progress line is redrawn every 0.5 s; into a log file
+  // (CI) a plain line every 10 s, so that the log stays readable.
+  const bool tty = isatty(fileno(stderr));
+  const int every = tty ? 1 : 20;
+  for (int tick = 1; opt.progress; ++tick) {
     std::this_thread::sleep_for(std::chrono::milliseconds(500));
     const int d = done;
-    const double el = std::chrono::duration<double>(Clock::now() - start).count();
-    std::fprintf(stderr, "\r[campaign] %-24s %7d / %zu cases  %6.0f cases/s  %5.1fs", rep.name.c_str(), d,
-                 cases.size(), d / std::max(el, 1e-9), el);
-    if (d >= static_cast<int>(cases.size()) || out_of_time) break;
+    const bool last = d >= static_cast<int>(cases.size()) || out_of_time;
+    if (tick % every == 0 || last) {
+      const double el = std::chrono::duration<double>(Clock::now() - start).count();
+      std::fprintf(stderr, "%s[campaign] %-24s %7d / %zu cases  %6.0f cases/s  %5.1fs%s", tty ? "\r" : "",
+                   rep.name.c_str(), d, cases.size(), d / std::max(el, 1e-9), el, tty ? "" : "\n");
+    }
+    if (last) break;
   }
   for (auto& th : pool) th.join();
   const double elapsed = std::chrono::duration<double>(Clock::now() - start).count();
-  if (opt.progress) std::fprintf(stderr, "\n");
+  if (opt.progress && tty) std::fprintf(stderr, "\n");
 
   const std::filesystem::path cx_dir = out_dir / "counterexamples" / rep.name;
   for (const Row& r : rows) {
