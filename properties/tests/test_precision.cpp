@@ -22,7 +22,7 @@ constexpr int kCases = 20000;
 // the upper bounds: a sample too small to reach the worst cases cannot call
 // a bound stale.
 #ifndef GEOMCHECK_PRECISION_CASES_BUILD
-#define GEOMCHECK_PRECISION_CASES_BUILD 20000
+#define GEOMCHECK_PRECISION_CASES_BUILD kCases
 #endif
 int cases() {
   const char* v = std::getenv("GEOMCHECK_PRECISION_CASES");
