@@ -65,6 +65,10 @@ PeerAnswer peer(const CylinderCapsuleCase& c) {
   return contact_answer(oracles::fcl_collide(c.a, c.b), " (libccd MPR estimate, not the minimum)");
 }
 
+PeerAnswer peer(const CylinderObbCase& c) {
+  return contact_answer(oracles::fcl_collide(c.a, c.b), " (libccd MPR estimate, not the minimum)");
+}
+
 PeerAnswer peer(const SweepCylinderCase& c) {
   return cast_answer(oracles::fcl_sweep(c.a, c.b), "FCL continuous collision of the ball; no point or normal");
 }

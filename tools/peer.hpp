@@ -24,5 +24,7 @@ PeerAnswer peer(const SegmentCylinderCase& c);
 PeerAnswer peer(const CylinderCapsuleCase& c);
 /// fcl_sweep: continuous collision of the ball, hit and t only (see fcl_adapter.hpp).
 PeerAnswer peer(const SweepCylinderCase& c);
+/// fcl_collide(Cylinder, Obb): libccd's MPR on FCL's box, depth not the minimum (see fcl_adapter.hpp).
+PeerAnswer peer(const CylinderObbCase& c);
 
 }  // namespace geomcheck

@@ -5,6 +5,7 @@
 #include "generators.hpp"
 #include "geomcheck/cast_segment_cylinder.hpp"
 #include "geomcheck/collide_cylinder_capsule.hpp"
+#include "geomcheck/collide_cylinder_obb.hpp"
 #include "geomcheck/collide_cylinder_sphere.hpp"
 #include "support.hpp"
 
@@ -42,6 +43,14 @@ template <> struct Suite<QueryId::sweep_sphere_cylinder> {
   static rc::Gen<std::pair<Case, std::string>> targeted() { return gen::sweep_cylinder_case(); }
   static rc::Gen<Case> wild() { return gen::wild_sweep_cylinder(); }
   static bool hit(const Case& c, const Impl& impl = kProductionSweepSphereCylinder) { return impl.sweep(c.a, c.b).hit; }
+};
+
+template <> struct Suite<QueryId::collide_cylinder_obb> {
+  using Case = CylinderObbCase;
+  using Impl = CylinderObbImpl;
+  static rc::Gen<std::pair<Case, std::string>> targeted() { return gen::cylinder_obb_case(); }
+  static rc::Gen<Case> wild() { return gen::wild_cylinder_obb(); }
+  static bool hit(const Case& c, const Impl& impl = kProductionCylinderObb) { return impl.overlap(c.a, c.b); }
 };
 
 /// Half wild raw doubles (NaN, inf, subnormal, huge), half targeted cases.

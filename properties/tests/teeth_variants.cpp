@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "geomcheck/detail/obb_stages.hpp"
 #include "geomcheck/detail/sweep_stages.hpp"
 
 namespace geomcheck::teeth {
@@ -186,5 +187,14 @@ const SweepSphereCylinderImpl kSweepTalkRimPoint = {
     "sweep-talk-one-rim-point", [](const MovingSphere& m, const Cylinder& c) {
       return detail::sweep_with(Sphere{m.c, m.r}, m.delta, c, detail::SweepStage2::TalkRimPoint);
     }};
+
+const CylinderObbImpl kBoxAsCapsule = {
+    "box-as-capsule",
+    [](const Cylinder& c, const Obb& b) { return detail::overlap_with_stage(c, b, detail::ObbCapStage::Capsule); },
+    [](const Cylinder& c, const Obb& b) { return detail::collide_with_stage(c, b, detail::ObbCapStage::Capsule); }};
+const CylinderObbImpl kBoxTalkRays = {
+    "box-talk-rays",
+    [](const Cylinder& c, const Obb& b) { return detail::overlap_with_stage(c, b, detail::ObbCapStage::TalkRays); },
+    [](const Cylinder& c, const Obb& b) { return detail::collide_with_stage(c, b, detail::ObbCapStage::TalkRays); }};
 
 }  // namespace geomcheck::teeth

@@ -21,5 +21,11 @@ extern const SweepSphereCylinderImpl kSweepNoCornerStage;
 /// sweep_sphere_cylinder with the talk's stage 2 as stated: one sphere test
 /// at the stage-1 point clamped to the rim.
 extern const SweepSphereCylinderImpl kSweepTalkRimPoint;
+/// collide_cylinder_obb computed as box vs capsule: the query without its
+/// cap stage (the bounding capsule's answer).
+extern const CylinderObbImpl kBoxAsCapsule;
+/// collide_cylinder_obb with the talk's step 3 as stated (direction
+/// corrected to Pbox's radial line): one ray per box plane through Pbox.
+extern const CylinderObbImpl kBoxTalkRays;
 
 }  // namespace geomcheck::teeth

@@ -86,6 +86,7 @@ TEST(precision, collide_cylinder_sphere) { check_table<QueryId::collide_cylinder
 TEST(precision, cast_segment_cylinder) { check_table<QueryId::cast_segment_cylinder>(); }
 TEST(precision, collide_cylinder_capsule) { check_table<QueryId::collide_cylinder_capsule>(); }
 TEST(precision, sweep_sphere_cylinder) { check_table<QueryId::sweep_sphere_cylinder>(); }
+TEST(precision, collide_cylinder_obb) { check_table<QueryId::collide_cylinder_obb>(); }
 
 }  // namespace
 }  // namespace geomcheck

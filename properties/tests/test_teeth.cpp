@@ -37,6 +37,8 @@ TEST(teeth, cast_ericson_as_printed) { expect_caught<QueryId::cast_segment_cylin
 TEST(teeth, capsule_cylinder_as_capsule_capsule) { expect_caught<QueryId::collide_cylinder_capsule>(teeth::kCapsuleCapsule); }
 TEST(teeth, sweep_without_corner_stage) { expect_caught<QueryId::sweep_sphere_cylinder>(teeth::kSweepNoCornerStage); }
 TEST(teeth, sweep_talk_one_rim_point) { expect_caught<QueryId::sweep_sphere_cylinder>(teeth::kSweepTalkRimPoint); }
+TEST(teeth, box_cylinder_as_box_capsule) { expect_caught<QueryId::collide_cylinder_obb>(teeth::kBoxAsCapsule); }
+TEST(teeth, box_talk_one_ray_per_plane) { expect_caught<QueryId::collide_cylinder_obb>(teeth::kBoxTalkRays); }
 
 }  // namespace
 }  // namespace geomcheck

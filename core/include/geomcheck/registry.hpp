@@ -26,7 +26,9 @@
   X(collide_cylinder_capsule, Collide, Cylinder, Capsule,                                \
     "overlap/collide(Cylinder, Capsule): exact verdict; true depth while the capsule's segment stays outside") \
   X(sweep_sphere_cylinder, Sweep, MovingSphere, Cylinder,                                \
-    "sweep(Sphere, delta, Cylinder): first time of contact of a moving sphere")
+    "sweep(Sphere, delta, Cylinder): first time of contact of a moving sphere")          \
+  X(collide_cylinder_obb, Collide, Cylinder, Obb,                                        \
+    "overlap/collide(Cylinder, Obb): exact verdict; penetration depth over the Minkowski patches")
 
 namespace geomcheck {
 

@@ -9,12 +9,17 @@
 //         rims and sides are common there), each coordinate nudged by a few
 //         ulps, then exact moves (axis permutation, sign flips, power-of-two
 //         scale). Used for the differential check against the oracle.
+//         A box's axes are never drawn as values: they come from a fixed
+//         table of orthonormal frames (table_frame), are permuted and
+//         flipped with the scene but never scaled; only its centre and
+//         extents are scaled.
 // The fuzz targets and `geomcheck from-fuzz` both decode with this header,
 // so a crash file always turns into the case the target saw.
 #pragma once
 
 #include <fuzzer/FuzzedDataProvider.h>
 
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <optional>
@@ -40,6 +45,8 @@ inline double structured_value(FuzzedDataProvider& p) {
   return v;
 }
 
+/// Any shape but a box (see the specialisation below): every value drawn,
+/// then exact moves applied field by field.
 template <class S>
 S structured_shape(FuzzedDataProvider& p, int perm, int flips, int e) {
   double v[ShapeTraits<S>::size];
@@ -56,6 +63,87 @@ S structured_shape(FuzzedDataProvider& p, int perm, int flips, int e) {
     i += f.arity;
   }
   return ShapeTraits<S>::from(v);
+}
+
+/// Number of rotations table_frame knows (index 0 is the identity).
+inline constexpr int kNumTableRotations = 25;
+
+/// An orthonormal box frame from a fixed table: the columns of P R1 R2, P
+/// the signed permutation (perm 0..5 of the coordinates, signs 0..7: either
+/// handedness), R1 and R2 rotations by index: 0 the identity, 1..24 about
+/// coordinate axis (i-1)/8 by a 3-4-5 (((i-1)/4)%2 == 0) or 5-12-13 angle
+/// with (cos, sin) = (a, b), (b, a), (a, -b), (b, -a) over c for (i-1)%4.
+/// Every entry is an integer over the product of the denominators, rounded
+/// once: signed permutations are exact, one rotation is exactly orthogonal
+/// with unit lengths to rounding, products of two are orthonormal to a few
+/// eps (inside production's 16 eps contract).
+inline std::array<Vec3, 3> table_frame(int perm, int signs, int r1, int r2) {
+  struct Rot {
+    long m[3][3];
+    long den;
+  };
+  const auto rotation = [](int index) {
+    Rot r{{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}, 1};
+    if (index <= 0 || index >= kNumTableRotations) return r;
+    static constexpr long kTriples[2][3] = {{3, 4, 5}, {5, 12, 13}};
+    const int axis = (index - 1) / 8, tr = ((index - 1) / 4) % 2, var = (index - 1) % 4;
+    const long a = kTriples[tr][0], b = kTriples[tr][1], c = kTriples[tr][2];
+    const long co = var % 2 == 0 ? a : b;
+    const long si = (var % 2 == 0 ? b : a) * (var >= 2 ? -1 : 1);
+    const int j = (axis + 1) % 3, k = (axis + 2) % 3;
+    r = Rot{{{0, 0, 0}, {0, 0, 0}, {0, 0, 0}}, c};
+    r.m[axis][axis] = c;
+    r.m[j][j] = co;
+    r.m[j][k] = -si;
+    r.m[k][j] = si;
+    r.m[k][k] = co;
+    return r;
+  };
+  const Rot x = rotation(r1), y = rotation(r2);
+  Rot r{{{0, 0, 0}, {0, 0, 0}, {0, 0, 0}}, x.den * y.den};
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j)
+      for (int k = 0; k < 3; ++k) r.m[i][j] += x.m[i][k] * y.m[k][j];
+  static constexpr int kPerms[6][3] = {{0, 1, 2}, {1, 2, 0}, {2, 0, 1}, {0, 2, 1}, {2, 1, 0}, {1, 0, 2}};
+  perm = ((perm % 6) + 6) % 6;
+  std::array<Vec3, 3> axes;
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) {
+      const double v = double(r.m[kPerms[perm][j]][i]) / double(r.den);
+      axes[i][j] = (signs >> j) & 1 ? -v : v;
+    }
+  return axes;
+}
+
+/// Boxes: centre and extents from structured values (extents >= 0), the
+/// axes from table_frame chosen by the input; then the scene's exact moves:
+/// the centre and every axis permuted and flipped alike (a signed
+/// permutation of an orthonormal frame stays orthonormal), the centre and
+/// the extents scaled by 2^e, the axes never scaled. The extents stay with
+/// their axes.
+template <>
+inline Obb structured_shape<Obb>(FuzzedDataProvider& p, int perm, int flips, int e) {
+  const auto move = [&](Vec3 v, bool scale) {
+    Vec3 w{v[perm % 3], v[(perm + 1) % 3], v[(perm + 2) % 3]};
+    for (int j = 0; j < 3; ++j) {
+      if ((flips >> j) & 1) w[j] = -w[j];
+      if (scale) w[j] = std::ldexp(w[j], e);
+    }
+    return w;
+  };
+  Obb b;
+  const Vec3 c{structured_value(p), structured_value(p), structured_value(p)};
+  const Vec3 ext{std::fabs(structured_value(p)), std::fabs(structured_value(p)), std::fabs(structured_value(p))};
+  const int kind = p.ConsumeIntegralInRange<int>(0, 2);  // a signed permutation, times one or two rotations
+  const int fperm = p.ConsumeIntegralInRange<int>(0, 5);
+  const int fsigns = p.ConsumeIntegralInRange<int>(0, 7);
+  const int r1 = kind >= 1 ? p.ConsumeIntegralInRange<int>(1, kNumTableRotations - 1) : 0;
+  const int r2 = kind == 2 ? p.ConsumeIntegralInRange<int>(1, kNumTableRotations - 1) : 0;
+  const std::array<Vec3, 3> frame = table_frame(fperm, fsigns, r1, r2);
+  b.c = move(c, true);
+  for (int i = 0; i < 3; ++i) b.axes[i] = move(frame[i], false);
+  b.e = {std::ldexp(ext.x, e), std::ldexp(ext.y, e), std::ldexp(ext.z, e)};
+  return b;
 }
 
 /// The case an input of query Q's fuzz target stands for.

@@ -2,7 +2,9 @@
 
 #include <cmath>
 #include <exception>
+#include <limits>
 #include <string>
+#include <type_traits>
 
 #include <ccd/vec3.h>
 #include <fcl/narrowphase/collision.h>
@@ -68,7 +70,7 @@ PeerContact contact_from(const fcl::Vector3d& pos, const fcl::Vector3d& normal, 
 }
 
 /// FCL's contact, checked for garbage. `res` holds at most one contact.
-PeerContact contact_from(const fcl::CollisionResultd& res) {
+PeerContact contact_from(const fcl::CollisionResultd& res, bool zero_normal_touch = false) {
   if (!res.isCollision()) {
     PeerContact out;
     out.ok = true;
@@ -81,25 +83,30 @@ PeerContact contact_from(const fcl::CollisionResultd& res) {
     return out;
   }
   const fcl::Contactd& c = res.getContact(0);
-  return contact_from(c.pos, c.normal, c.penetration_depth);
+  return contact_from(c.pos, c.normal, c.penetration_depth, zero_normal_touch);
 }
 
 // --- libccd's MPR and GJK with guarded support functions ----------------------
 //
-// For cylinder/capsule FCL runs libccd's MPR (collide) and GJK (distance)
-// on support functions. Two defects of FCL 0.7 / libccd 2.1 make the raw
+// For cylinder/capsule and cylinder/box FCL runs libccd's MPR (collide) and
+// GJK (distance) on support functions, and so does its per-triangle narrow
+// phase for cylinder/triangle. Two defects of FCL 0.7 / libccd 2.1 make the raw
 // calls unsafe for a harness (see the header): MPR's portal loops have no
 // iteration cap and can cycle for ever, and a support function that returns
 // a non-finite point (FCL's capsule support normalises a zero or underflowing
 // direction) makes FCL's GJK fail an assert and abort the process. The same
 // calls are made here as FCL makes them (GJKSolver_libccd's
 // ShapeIntersectLibccdImpl / ShapeDistanceLibccdImpl: the same libccd
-// objects, centre functions, iteration caps and tolerances), with FCL's
-// support functions wrapped:
+// objects, centre functions, iteration caps and tolerances; for a triangle
+// ShapeTriangleIntersectLibccdImpl / ShapeTriangleDistanceLibccdImpl), with
+// FCL's support functions wrapped:
 //   - a budget of evaluations; once spent, every further support point lies
 //     far behind the search direction, on which every MPR loop exits;
 //   - a non-finite support point is replaced by the origin (any finite point
-//     keeps GJK's "A is not in region 1" assert true, see the header).
+//     keeps GJK's "A is not in region 1" assert true, see the header);
+//   - so is the support along a non-finite direction, without asking FCL
+//     (the box's support turns NaN into a finite corner, the triangle's
+//     leaves its output unset).
 // Either event makes the answer "not ok". Otherwise it is bit for bit
 // FCL's.
 
@@ -133,6 +140,14 @@ void guarded_support(const void* obj, const ccd_vec3_t* dir, ccd_vec3_t* v) {
     return;
   }
   --g.left;
+  if (!finite3(dir)) {
+    g.non_finite = true;
+    ccdVec3Set(v, 0, 0, 0);
+    return;
+  }
+  // A support function that leaves its output unset is seen as non-finite.
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  ccdVec3Set(v, nan, nan, nan);
   (obj == g.obj1 ? g.support1 : g.support2)(obj, dir, v);
   if (!finite3(v)) {
     g.non_finite = true;
@@ -140,24 +155,53 @@ void guarded_support(const void* obj, const ccd_vec3_t* dir, ccd_vec3_t* v) {
   }
 }
 
+/// FCL's libccd object of a converted shape, as GJKSolver_libccd's
+/// ShapeIntersectLibccdImpl / ShapeDistanceLibccdImpl build it.
+template <class Shape>
+struct LibccdShape {
+  using Init = fcl::detail::GJKInitializer<double, Shape>;
+  const Shape& shape;
+  const fcl::Transform3d& pose;
+  void* create() const { return Init::createGJKObject(shape, pose); }
+  static void destroy(void* o) { Init::deleteGJKObject(o); }
+  static fcl::detail::GJKSupportFunction support() { return Init::getSupportFunction(); }
+  static fcl::detail::GJKCenterFunction center() { return Init::getCenterFunction(); }
+};
+
+/// FCL's libccd triangle, as ShapeTriangleIntersectLibccdImpl /
+/// ShapeTriangleDistanceLibccdImpl build it (world-frame vertices, no
+/// transform).
+struct LibccdTriangle {
+  const fcl::Vector3d &a, &b, &c;
+  void* create() const { return fcl::detail::triCreateGJKObject(a, b, c); }
+  static void destroy(void* o) { fcl::detail::triDeleteGJKObject(o); }
+  static fcl::detail::GJKSupportFunction support() { return fcl::detail::triGetSupportFunction(); }
+  static fcl::detail::GJKCenterFunction center() { return fcl::detail::triGetCenterFunction(); }
+};
+
+/// The libccd object description of a converted shape (members shape, pose)
+/// or of a triangle.
+template <class Converted>
+LibccdShape<std::decay_t<decltype(Converted::shape)>> libccd(const Converted& x) {
+  return {x.shape, x.pose};
+}
+LibccdTriangle libccd(const FclTriangle& t) { return {t.a, t.b, t.c}; }
+
 /// Installs a guard around FCL's support functions of two libccd objects
 /// for the lifetime of the scope.
-template <class Shape1, class Shape2>
+template <class Obj1, class Obj2>
 class GuardedObjects {
  public:
-  using Init1 = fcl::detail::GJKInitializer<double, Shape1>;
-  using Init2 = fcl::detail::GJKInitializer<double, Shape2>;
-  GuardedObjects(const Shape1& s1, const fcl::Transform3d& tf1, const Shape2& s2, const fcl::Transform3d& tf2)
-      : o1_(Init1::createGJKObject(s1, tf1)), o2_(Init2::createGJKObject(s2, tf2)), outer_(t_support_guard) {
+  GuardedObjects(const Obj1& d1, const Obj2& d2) : o1_(d1.create()), o2_(d2.create()), outer_(t_support_guard) {
     guard_.obj1 = o1_;
-    guard_.support1 = Init1::getSupportFunction();
-    guard_.support2 = Init2::getSupportFunction();
+    guard_.support1 = Obj1::support();
+    guard_.support2 = Obj2::support();
     t_support_guard = &guard_;
   }
   ~GuardedObjects() {
     t_support_guard = outer_;
-    Init1::deleteGJKObject(o1_);
-    Init2::deleteGJKObject(o2_);
+    Obj1::destroy(o1_);
+    Obj2::destroy(o2_);
   }
   GuardedObjects(const GuardedObjects&) = delete;
   GuardedObjects& operator=(const GuardedObjects&) = delete;
@@ -185,9 +229,25 @@ bool within_gjk_range(const Cylinder& c, const Capsule& k) {
   return extent <= kGjkMaxExtent;  // false for NaN too
 }
 
+/// The box: its centre's offset, its extents (FCL's corners are c +- e_i
+/// axes_i, within 3 max e of the centre).
+bool within_gjk_range(const Cylinder& c, const Obb& b) {
+  const double offsets = std::fmax(max_abs(c.q - c.p), max_abs(b.c - c.p));
+  const double extent = std::fmax(offsets, std::fmax(c.r, max_abs(b.e)));
+  return extent <= kGjkMaxExtent;  // false for NaN too
+}
+
+bool within_gjk_range(const Cylinder& c, const Triangle& t) {
+  const double offsets = std::fmax(std::fmax(max_abs(c.q - c.p), max_abs(t.a - c.p)),
+                                   std::fmax(max_abs(t.b - c.p), max_abs(t.c - c.p)));
+  const double extent = std::fmax(offsets, c.r);
+  return extent <= kGjkMaxExtent;  // false for NaN too
+}
+
 constexpr const char* kSupportSpent = "FCL did not terminate (libccd MPR exceeded its support budget)";
 constexpr const char* kSupportNonFinite =
-    "FCL's support function returned a non-finite point (FCL as shipped aborts or answers garbage here)";
+    "FCL's support function returned a non-finite point or was asked along a non-finite direction (FCL as "
+    "shipped aborts or answers garbage here)";
 
 struct MprAnswer {
   bool hit = false;
@@ -196,20 +256,21 @@ struct MprAnswer {
   double depth = 0;
 };
 
-/// FCL's libccd intersection test (MPR) of two converted shapes, with the
-/// penetration phase when `contact`, under the guard.
-template <class Shape1, class Shape2>
-MprAnswer guarded_mpr(const Shape1& s1, const fcl::Transform3d& tf1, const Shape2& s2, const fcl::Transform3d& tf2,
-                      bool contact) {
-  using Objects = GuardedObjects<Shape1, Shape2>;
+/// FCL's libccd intersection test (MPR) of two libccd objects (LibccdShape,
+/// LibccdTriangle), with the penetration phase when `contact`, under the
+/// guard.
+template <class Obj1, class Obj2>
+MprAnswer guarded_mpr(const Obj1& d1, const Obj2& d2, bool contact) {
+  using Objects = GuardedObjects<Obj1, Obj2>;
   // FCL's parameters: GJKSolver_libccd's iteration cap, the request's
-  // tolerance (fcl::collide copies request.gjk_tolerance into the solver).
+  // tolerance (fcl::collide copies request.gjk_tolerance into the solver,
+  // also before a mesh traversal's per-triangle calls).
   const fcl::detail::GJKSolver_libccdd solver;
   const fcl::CollisionRequestd request;
-  const Objects objs(s1, tf1, s2, tf2);
+  const Objects objs(d1, d2);
   MprAnswer out;
-  out.hit = fcl::detail::GJKCollide<double>(objs.o1(), &guarded_support, Objects::Init1::getCenterFunction(),
-                                            objs.o2(), &guarded_support, Objects::Init2::getCenterFunction(),
+  out.hit = fcl::detail::GJKCollide<double>(objs.o1(), &guarded_support, Obj1::center(),
+                                            objs.o2(), &guarded_support, Obj2::center(),
                                             solver.max_collision_iterations, request.gjk_tolerance,
                                             contact ? &out.point : nullptr, contact ? &out.depth : nullptr,
                                             contact ? &out.normal : nullptr);
@@ -218,17 +279,16 @@ MprAnswer guarded_mpr(const Shape1& s1, const fcl::Transform3d& tf1, const Shape
   return out;
 }
 
-/// FCL's libccd distance (GJK, unsigned) of two converted shapes, under the
+/// FCL's libccd distance (GJK, unsigned) of two libccd objects, under the
 /// guard, as fcl::distance with enable_nearest_points reports it.
-template <class Shape1, class Shape2>
-PeerDistance guarded_gjk_distance(const Shape1& s1, const fcl::Transform3d& tf1, const Shape2& s2,
-                                  const fcl::Transform3d& tf2) {
-  using Objects = GuardedObjects<Shape1, Shape2>;
+template <class Obj1, class Obj2>
+PeerDistance guarded_gjk_distance(const Obj1& d1, const Obj2& d2) {
+  using Objects = GuardedObjects<Obj1, Obj2>;
   // FCL's parameters: GJKSolver_libccd's iteration cap, the request's
   // tolerance (fcl::distance copies request.distance_tolerance).
   const fcl::detail::GJKSolver_libccdd solver;
   const fcl::DistanceRequestd request(true);
-  const Objects objs(s1, tf1, s2, tf2);
+  const Objects objs(d1, d2);
   double dist = 0;
   fcl::Vector3d p1 = fcl::Vector3d::Zero(), p2 = fcl::Vector3d::Zero();
   fcl::detail::GJKDistance<double>(objs.o1(), &guarded_support, objs.o2(), &guarded_support,
@@ -367,6 +427,21 @@ FclCapsule::FclCapsule(const Capsule& c)
   pose.translation() = to_fcl(0.5 * c.p + 0.5 * c.q);
 }
 
+FclBox::FclBox(const Obb& b)
+    : shape(2 * b.e.x, 2 * b.e.y, 2 * b.e.z), pose(fcl::Transform3d::Identity()) {
+  // FCL takes the frame for a rotation: a left-handed one gets its third
+  // axis negated, which leaves the (symmetric) box the same set.
+  const bool left_handed = dot(cross(b.axes[0], b.axes[1]), b.axes[2]) < 0;
+  fcl::Matrix3d r;
+  r.col(0) = to_fcl(b.axes[0]);
+  r.col(1) = to_fcl(b.axes[1]);
+  r.col(2) = to_fcl(left_handed ? -b.axes[2] : b.axes[2]);
+  pose.linear() = r;
+  pose.translation() = to_fcl(b.c);
+}
+
+FclTriangle::FclTriangle(const Triangle& t) : a(to_fcl(t.a)), b(to_fcl(t.b)), c(to_fcl(t.c)) {}
+
 namespace {
 
 // The FCL calls on any converted pair (members a, b with shape and pose).
@@ -378,14 +453,16 @@ bool overlap_on(const Pair& pair) {
   return fcl::collide(&pair.a.shape, pair.a.pose, &pair.b.shape, pair.b.pose, req, res) > 0;
 }
 
+/// `zero_normal_touch`: accept libccd MPR's touching contact (pairs that run
+/// MPR).
 template <class Pair>
-PeerContact collide_on(const Pair& pair) {
+PeerContact collide_on(const Pair& pair, bool zero_normal_touch = false) {
   try {
     fcl::CollisionRequestd req(1, true);
     req.gjk_solver_type = fcl::GST_LIBCCD;
     fcl::CollisionResultd res;
     fcl::collide(&pair.a.shape, pair.a.pose, &pair.b.shape, pair.b.pose, req, res);
-    return contact_from(res);
+    return contact_from(res, zero_normal_touch);
   } catch (const std::exception& e) {
     PeerContact out;
     out.error = describe(e);
@@ -397,6 +474,20 @@ PeerContact collide_on(const Pair& pair) {
   }
 }
 
+/// FCL's distance and nearest points, checked for garbage.
+PeerDistance distance_from(double dist, const fcl::Vector3d& p1, const fcl::Vector3d& p2) {
+  PeerDistance out;
+  out.ok = true;
+  out.distance = dist;
+  out.p_a = from_fcl(p1);
+  out.p_b = from_fcl(p2);
+  if (!std::isfinite(out.distance) || !is_finite(out.p_a) || !is_finite(out.p_b)) {
+    out.ok = false;
+    out.error = "FCL returned a non-finite distance or point";
+  }
+  return out;
+}
+
 template <class Pair>
 PeerDistance distance_on(const Pair& pair) {
   PeerDistance out;
@@ -405,14 +496,7 @@ PeerDistance distance_on(const Pair& pair) {
     req.gjk_solver_type = fcl::GST_LIBCCD;
     fcl::DistanceResultd res;
     fcl::distance(&pair.a.shape, pair.a.pose, &pair.b.shape, pair.b.pose, req, res);
-    out.ok = true;
-    out.distance = res.min_distance;
-    out.p_a = from_fcl(res.nearest_points[0]);
-    out.p_b = from_fcl(res.nearest_points[1]);
-    if (!std::isfinite(out.distance) || !is_finite(out.p_a) || !is_finite(out.p_b)) {
-      out.ok = false;
-      out.error = "FCL returned a non-finite distance or point";
-    }
+    out = distance_from(res.min_distance, res.nearest_points[0], res.nearest_points[1]);
   } catch (const std::exception& e) {
     out.ok = false;
     out.error = describe(e);
@@ -421,6 +505,16 @@ PeerDistance distance_on(const Pair& pair) {
     out.error = kUnknownThrow;
   }
   return out;
+}
+
+/// The solver of FCL's per-triangle narrow phase as fcl::collide and
+/// fcl::distance set it up before a mesh traversal (GST_LIBCCD, the
+/// requests' default tolerances copied in).
+fcl::detail::GJKSolver_libccdd triangle_solver() {
+  fcl::detail::GJKSolver_libccdd solver;
+  solver.collision_tolerance = fcl::CollisionRequestd().gjk_tolerance;
+  solver.distance_tolerance = fcl::DistanceRequestd(true).distance_tolerance;
+  return solver;
 }
 
 }  // namespace
@@ -434,6 +528,52 @@ PeerDistance fcl_distance_prepared(const FclCylinderCylinder& pair) { return dis
 bool fcl_overlap_prepared(const FclCylinderCapsule& pair) { return overlap_on(pair); }
 PeerContact fcl_collide_prepared(const FclCylinderCapsule& pair) { return collide_on(pair); }
 PeerDistance fcl_distance_prepared(const FclCylinderCapsule& pair) { return distance_on(pair); }
+bool fcl_overlap_prepared(const FclCylinderBox& pair) { return overlap_on(pair); }
+PeerContact fcl_collide_prepared(const FclCylinderBox& pair) { return collide_on(pair, true); }
+PeerDistance fcl_distance_prepared(const FclCylinderBox& pair) { return distance_on(pair); }
+
+bool fcl_overlap_prepared(const FclCylinderTriangle& pair) {
+  return triangle_solver().shapeTriangleIntersect(pair.a.shape, pair.a.pose, pair.b.a, pair.b.b, pair.b.c);
+}
+
+PeerContact fcl_collide_prepared(const FclCylinderTriangle& pair) {
+  try {
+    fcl::Vector3d point = fcl::Vector3d::Zero(), normal = fcl::Vector3d::Zero();
+    double depth = 0;
+    if (!triangle_solver().shapeTriangleIntersect(pair.a.shape, pair.a.pose, pair.b.a, pair.b.b, pair.b.c, &point,
+                                                  &depth, &normal)) {
+      PeerContact out;
+      out.ok = true;
+      return out;
+    }
+    return contact_from(point, normal, depth, true);
+  } catch (const std::exception& e) {
+    PeerContact out;
+    out.error = describe(e);
+    return out;
+  } catch (...) {
+    PeerContact out;
+    out.error = kUnknownThrow;
+    return out;
+  }
+}
+
+PeerDistance fcl_distance_prepared(const FclCylinderTriangle& pair) {
+  try {
+    double dist = 0;
+    fcl::Vector3d p1 = fcl::Vector3d::Zero(), p2 = fcl::Vector3d::Zero();
+    triangle_solver().shapeTriangleDistance(pair.a.shape, pair.a.pose, pair.b.a, pair.b.b, pair.b.c, &dist, &p1, &p2);
+    return distance_from(dist, p1, p2);
+  } catch (const std::exception& e) {
+    PeerDistance out;
+    out.error = describe(e);
+    return out;
+  } catch (...) {
+    PeerDistance out;
+    out.error = kUnknownThrow;
+    return out;
+  }
+}
 
 PeerContact fcl_collide(const Cylinder& a, const Sphere& b) {
   if (!is_valid(a) || !is_valid(b)) {
@@ -497,15 +637,39 @@ PeerCast fcl_sweep(const MovingSphere& m, const Cylinder& c, FclCastMethod metho
   return continuous_collide(m, c, method);
 }
 
-PeerContact fcl_collide(const Cylinder& a, const Capsule& b) {
+namespace {
+
+constexpr const char* kBoxAxesNotOrthonormal = "box axes not orthonormal";
+
+/// Why FCL is not asked about a pair (nullptr: it is).
+const char* refusal(const Cylinder& a, const Capsule& b) {
+  return is_valid(a) && is_valid(b) ? nullptr : kInvalidInput;
+}
+const char* refusal(const Cylinder& a, const Obb& b) {
+  if (!is_valid(a) || !is_valid(b)) return kInvalidInput;
+  return obb_axes_orthonormal(b) ? nullptr : kBoxAxesNotOrthonormal;
+}
+const char* refusal(const Cylinder& a, const Triangle& b) {
+  return is_valid(a) && is_valid(b) ? nullptr : kInvalidInput;
+}
+
+/// The converted pair of a cylinder and B.
+template <class B> struct PairOf;
+template <> struct PairOf<Capsule> { using type = FclCylinderCapsule; };
+template <> struct PairOf<Obb> { using type = FclCylinderBox; };
+template <> struct PairOf<Triangle> { using type = FclCylinderTriangle; };
+
+/// fcl_collide of the pairs that run libccd's MPR: guarded, validated.
+template <class B>
+PeerContact guarded_collide(const Cylinder& a, const B& b) {
   PeerContact out;
-  if (!is_valid(a) || !is_valid(b)) {
-    out.error = kInvalidInput;
+  if (const char* why = refusal(a, b)) {
+    out.error = why;
     return out;
   }
   try {
-    const FclCylinderCapsule pair(a, b);
-    const MprAnswer r = guarded_mpr(pair.a.shape, pair.a.pose, pair.b.shape, pair.b.pose, true);
+    const typename PairOf<B>::type pair(a, b);
+    const MprAnswer r = guarded_mpr(libccd(pair.a), libccd(pair.b), true);
     if (r.error) {
       out.error = r.error;
       return out;
@@ -523,15 +687,16 @@ PeerContact fcl_collide(const Cylinder& a, const Capsule& b) {
   return out;
 }
 
-bool fcl_overlap(const Cylinder& a, const Capsule& b, std::string* error) {
+template <class B>
+bool guarded_overlap(const Cylinder& a, const B& b, std::string* error) {
   if (error) error->clear();
-  if (!is_valid(a) || !is_valid(b)) {
-    if (error) *error = kInvalidInput;
+  if (const char* why = refusal(a, b)) {
+    if (error) *error = why;
     return false;
   }
   try {
-    const FclCylinderCapsule pair(a, b);
-    const MprAnswer r = guarded_mpr(pair.a.shape, pair.a.pose, pair.b.shape, pair.b.pose, false);
+    const typename PairOf<B>::type pair(a, b);
+    const MprAnswer r = guarded_mpr(libccd(pair.a), libccd(pair.b), false);
     if (!r.error) return r.hit;
     if (error) *error = r.error;
   } catch (const std::exception& e) {
@@ -542,29 +707,40 @@ bool fcl_overlap(const Cylinder& a, const Capsule& b, std::string* error) {
   return false;
 }
 
-PeerDistance fcl_distance(const Cylinder& a, const Capsule& b) {
-  if (!is_valid(a) || !is_valid(b)) {
-    PeerDistance out;
-    out.error = kInvalidInput;
+template <class B>
+PeerDistance guarded_distance(const Cylinder& a, const B& b) {
+  PeerDistance out;
+  if (const char* why = refusal(a, b)) {
+    out.error = why;
     return out;
   }
   if (!within_gjk_range(a, b)) {
-    PeerDistance out;
     out.error = "outside FCL's range";
     return out;
   }
   try {
-    const FclCylinderCapsule pair(a, b);
-    return guarded_gjk_distance(pair.a.shape, pair.a.pose, pair.b.shape, pair.b.pose);
+    const typename PairOf<B>::type pair(a, b);
+    return guarded_gjk_distance(libccd(pair.a), libccd(pair.b));
   } catch (const std::exception& e) {
-    PeerDistance out;
     out.error = describe(e);
-    return out;
   } catch (...) {
-    PeerDistance out;
     out.error = kUnknownThrow;
-    return out;
   }
+  return out;
 }
+
+}  // namespace
+
+PeerContact fcl_collide(const Cylinder& a, const Capsule& b) { return guarded_collide(a, b); }
+bool fcl_overlap(const Cylinder& a, const Capsule& b, std::string* error) { return guarded_overlap(a, b, error); }
+PeerDistance fcl_distance(const Cylinder& a, const Capsule& b) { return guarded_distance(a, b); }
+
+PeerContact fcl_collide(const Cylinder& a, const Obb& b) { return guarded_collide(a, b); }
+bool fcl_overlap(const Cylinder& a, const Obb& b, std::string* error) { return guarded_overlap(a, b, error); }
+PeerDistance fcl_distance(const Cylinder& a, const Obb& b) { return guarded_distance(a, b); }
+
+PeerContact fcl_collide(const Cylinder& a, const Triangle& b) { return guarded_collide(a, b); }
+bool fcl_overlap(const Cylinder& a, const Triangle& b, std::string* error) { return guarded_overlap(a, b, error); }
+PeerDistance fcl_distance(const Cylinder& a, const Triangle& b) { return guarded_distance(a, b); }
 
 }  // namespace geomcheck::oracles

@@ -1,11 +1,14 @@
 // Hand cases with known answers for the FCL peer adapter.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
 #include <limits>
+#include <string>
 
 #include "geomcheck/oracles/fcl_adapter.hpp"
 #include "geomcheck/oracles/fcl_convert.hpp"
@@ -548,6 +551,688 @@ TEST(FclPeerCapsule, InvalidInputNeverReachesFcl) {
   const Cylinder bad_cyl{{0, 0, 0}, {0, 0, 0}, 1};
   EXPECT_EQ(fcl_collide(bad_cyl, good).error, "invalid input");
   EXPECT_FALSE(fcl_distance(bad_cyl, good).ok);
+}
+
+// --- cylinder/box and cylinder/triangle -----------------------------------------
+// Both run libccd's MPR (collide, overlap) and GJK (distance) with FCL's
+// tolerance 1e-6, absolute, like the capsule: depths and normals of these
+// symmetric hand cases are within about 1e-6 (normals on the side within
+// 1e-3).
+
+/// An Obb with the given centre and half extents and the identity axes.
+Obb box_at(Vec3 c, Vec3 e) {
+  Obb b;
+  b.c = c;
+  b.e = e;
+  return b;
+}
+
+/// The same box with its frame rotated by `angle` about z.
+Obb rotated_about_z(Obb b, double angle) {
+  b.axes[0] = {std::cos(angle), std::sin(angle), 0};
+  b.axes[1] = {-std::sin(angle), std::cos(angle), 0};
+  return b;
+}
+
+/// Columns of a rotation from a quaternion (orthonormal to rounding).
+std::array<Vec3, 3> rotation_axes(double w, double x, double y, double z) {
+  const double s = 1 / std::sqrt(w * w + x * x + y * y + z * z);
+  w *= s, x *= s, y *= s, z *= s;
+  return {{{1 - 2 * (y * y + z * z), 2 * (x * y + w * z), 2 * (x * z - w * y)},
+           {2 * (x * y - w * z), 1 - 2 * (x * x + z * z), 2 * (y * z + w * x)},
+           {2 * (x * z + w * y), 2 * (y * z - w * x), 1 - 2 * (x * x + y * y)}}};
+}
+
+/// Deterministic numbers in [-1, 1) for the randomised tests.
+struct TestRng {
+  std::uint64_t state;
+  double next() {
+    state = state * 6364136223846793005ULL + 1442695040888963407ULL;
+    return static_cast<double>(state >> 11) * 0x1.0p-53 * 2 - 1;
+  }
+  Vec3 vec() { return {next(), next(), next()}; }
+  int below(int n) { return std::min(n - 1, static_cast<int>((next() + 1) * 0.5 * n)); }
+};
+
+TEST(FclConvert, BoxPose) {
+  // Full side lengths 2 e; columns of the rotation are the axes.
+  const std::array<Vec3, 3> ax = rotation_axes(0.9, 0.1, -0.3, 0.2);
+  Obb b = box_at({1, -2, 3}, {0.5, 0.25, 2});
+  b.axes = ax;
+  ASSERT_TRUE(obb_axes_orthonormal(b));
+  const FclBox f(b);
+  EXPECT_EQ(f.shape.side, fcl::Vector3d(1, 0.5, 4));
+  EXPECT_EQ(f.pose.translation(), fcl::Vector3d(1, -2, 3));
+  for (int i = 0; i < 3; ++i) EXPECT_EQ(f.pose.linear().col(i), fcl::Vector3d(ax[i].x, ax[i].y, ax[i].z)) << i;
+  EXPECT_NEAR(f.pose.linear().determinant(), 1.0, 1e-15);
+  // A corner: c + e0 a0 - e1 a1 + e2 a2.
+  const Vec3 corner = b.c + 0.5 * ax[0] - 0.25 * ax[1] + 2.0 * ax[2];
+  EXPECT_NEAR((f.pose * fcl::Vector3d(0.5, -0.25, 2) - fcl::Vector3d(corner.x, corner.y, corner.z)).norm(), 0.0, 1e-14);
+  // Left-handed: the third axis is negated, the rotation proper, the set the same.
+  Obb left = b;
+  left.axes[2] = -ax[2];
+  ASSERT_TRUE(obb_axes_orthonormal(left));
+  const FclBox g(left);
+  EXPECT_EQ(g.pose.linear(), f.pose.linear());
+  EXPECT_EQ(g.shape.side, f.shape.side);
+  // The triangle reaches FCL exactly.
+  const FclTriangle t(Triangle{{0.1, 0.2, 0.3}, {-1e-300, 5, 7}, {1e300, 0, -2}});
+  EXPECT_EQ(t.a, fcl::Vector3d(0.1, 0.2, 0.3));
+  EXPECT_EQ(t.b, fcl::Vector3d(-1e-300, 5, 7));
+  EXPECT_EQ(t.c, fcl::Vector3d(1e300, 0, -2));
+}
+
+TEST(FclPeerBox, AxesOrthonormalContract) {
+  Obb b = box_at({0, 0, 0}, {1, 1, 1});
+  EXPECT_TRUE(obb_axes_orthonormal(b));
+  b.axes = rotation_axes(0.3, -0.7, 0.2, 0.6);
+  EXPECT_TRUE(obb_axes_orthonormal(b));
+  b.axes[1] = -b.axes[1];  // left-handed: allowed
+  EXPECT_TRUE(obb_axes_orthonormal(b));
+  // The bound is 16 * 2^-52 on every a_i.a_j - delta_ij: (1 + 2^-49)^2
+  // rounds to 1 + 2^-48 = 1 + 16 * 2^-52 (in), (1 + 2^-48)^2 to 1 + 2^-47 (out).
+  Obb edge = box_at({0, 0, 0}, {1, 1, 1});
+  edge.axes[0] = {1 + 0x1p-49, 0, 0};
+  EXPECT_TRUE(obb_axes_orthonormal(edge));
+  edge.axes[0] = {1 + 0x1p-48, 0, 0};
+  EXPECT_FALSE(obb_axes_orthonormal(edge));
+  Obb skew = box_at({0, 0, 0}, {1, 1, 1});
+  skew.axes[1] = {1e-10, 1, 0};
+  EXPECT_FALSE(obb_axes_orthonormal(skew));
+  Obb repeated = box_at({0, 0, 0}, {1, 1, 1});
+  repeated.axes[2] = repeated.axes[0];
+  EXPECT_FALSE(obb_axes_orthonormal(repeated));
+  Obb zero = box_at({0, 0, 0}, {1, 1, 1});
+  zero.axes[2] = {0, 0, 0};
+  EXPECT_FALSE(obb_axes_orthonormal(zero));
+  Obb nan_axis = box_at({0, 0, 0}, {1, 1, 1});
+  nan_axis.axes[0].x = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_FALSE(obb_axes_orthonormal(nan_axis));
+}
+
+TEST(FclPeerBox, CollideNormalFromCylinderTowardsBox) {
+  // A box over the top cap, its bottom face 0.25 into the cylinder: normal
+  // +z (from the cylinder towards the box), also with the cylinder's caps
+  // swapped and with the box turned about z.
+  for (const Cylinder& c : {kZ, kZFlipped}) {
+    for (const Obb& b : {box_at({0.2, 0.1, 1.25}, {0.5, 0.5, 0.5}),
+                         rotated_about_z(box_at({0.2, 0.1, 1.25}, {0.5, 0.3, 0.5}), 0.5235987755982988)}) {
+      const PeerContact r = fcl_collide(c, b);
+      ASSERT_TRUE(r.ok) << r.error;
+      ASSERT_TRUE(r.hit);
+      EXPECT_NEAR(r.depth, 0.25, 1e-6);
+      EXPECT_NEAR(length(r.normal - Vec3{0, 0, 1}), 0.0, 1e-6);
+      EXPECT_NEAR(length(r.normal), 1.0, 1e-12);
+      EXPECT_TRUE(fcl_overlap(c, b));
+    }
+  }
+  // Under the bottom cap: normal -z.
+  const PeerContact below = fcl_collide(kZ, box_at({0.2, 0.1, -1.4}, {0.5, 0.5, 0.5}));
+  ASSERT_TRUE(below.ok) << below.error;
+  ASSERT_TRUE(below.hit);
+  EXPECT_NEAR(below.depth, 0.1, 1e-6);
+  EXPECT_NEAR(length(below.normal - Vec3{0, 0, -1}), 0.0, 1e-6);
+  // Beside the side, 0.25 in: the outward radial.
+  const PeerContact side = fcl_collide(kZ, box_at({1.25, 0, 0}, {0.5, 0.5, 0.5}));
+  ASSERT_TRUE(side.ok) << side.error;
+  ASSERT_TRUE(side.hit);
+  EXPECT_NEAR(side.depth, 0.25, 1e-6);
+  EXPECT_NEAR(length(side.normal - Vec3{1, 0, 0}), 0.0, 1e-3);
+  // The oblique cylinder, a box in its frame 0.25 into its side.
+  const Vec3 mid{11, -2.5, 6};
+  const Vec3 perp = (1.0 / std::sqrt(13.0)) * Vec3{3, -2, 0};
+  const Vec3 axis = (1.0 / 7) * Vec3{2, 3, 6};
+  Obb ob = box_at(mid + 0.75 * perp, {0.5, 0.5, 0.5});
+  ob.axes = {perp, cross(axis, perp), axis};
+  ASSERT_TRUE(obb_axes_orthonormal(ob));
+  const PeerContact r = fcl_collide(kOblique, ob);
+  ASSERT_TRUE(r.ok) << r.error;
+  ASSERT_TRUE(r.hit);
+  EXPECT_NEAR(r.depth, 0.25, 1e-6);
+  EXPECT_NEAR(length(r.normal - perp), 0.0, 1e-3);
+}
+
+TEST(FclPeerBox, DistanceAndMiss) {
+  // 0.25 above the cap and 0.25 beside the side (GJK, from above, within
+  // 1e-6).
+  const PeerDistance above = fcl_distance(kZ, box_at({0.2, 0.1, 1.75}, {0.5, 0.5, 0.5}));
+  ASSERT_TRUE(above.ok) << above.error;
+  EXPECT_NEAR(above.distance, 0.25, 1e-6);
+  EXPECT_NEAR(above.p_a.z, 1.0, 1e-6);
+  EXPECT_NEAR(above.p_b.z, 1.25, 1e-6);
+  const PeerDistance side = fcl_distance(kZ, rotated_about_z(box_at({1.75, 0, 0}, {0.5, 0.5, 0.5}), 1.5707963267948966));
+  ASSERT_TRUE(side.ok) << side.error;
+  EXPECT_NEAR(side.distance, 0.25, 1e-6);
+  EXPECT_NEAR(side.p_a.x, 1.0, 1e-6);
+  EXPECT_NEAR(side.p_b.x, 1.25, 1e-6);
+  // Separated: no hit, no overlap.
+  const PeerContact miss = fcl_collide(kZ, box_at({0.2, 0.1, 1.75}, {0.5, 0.5, 0.5}));
+  ASSERT_TRUE(miss.ok) << miss.error;
+  EXPECT_FALSE(miss.hit);
+  std::string err = "stale";
+  EXPECT_FALSE(fcl_overlap(kZ, box_at({0.2, 0.1, 1.75}, {0.5, 0.5, 0.5}), &err));
+  EXPECT_EQ(err, "");
+  // Overlapping: exactly -1, nearest points zero.
+  const PeerDistance over = fcl_distance(kZ, box_at({0.2, 0.1, 1.25}, {0.5, 0.5, 0.5}));
+  ASSERT_TRUE(over.ok) << over.error;
+  EXPECT_EQ(over.distance, -1.0);
+  EXPECT_EQ(over.p_a, Vec3{});
+  EXPECT_EQ(over.p_b, Vec3{});
+}
+
+TEST(FclPeerBox, LeftHandedFrameSameAnswer) {
+  // A frame and its left-handed twin (one axis negated) describe the same
+  // box: the adapter hands FCL the same rotation, so the answers are equal
+  // bit for bit.
+  TestRng rng{777};
+  for (int i = 0; i < 50; ++i) {
+    Obb right = box_at(1.5 * rng.vec(), {0.6 + 0.4 * rng.next(), 0.6 + 0.4 * rng.next(), 0.6 + 0.4 * rng.next()});
+    right.axes = rotation_axes(rng.next(), rng.next(), rng.next(), rng.next() + 1.5);
+    Obb left = right;
+    left.axes[2] = -right.axes[2];
+    ASSERT_GT(dot(cross(right.axes[0], right.axes[1]), right.axes[2]), 0);
+    ASSERT_LT(dot(cross(left.axes[0], left.axes[1]), left.axes[2]), 0);
+    const PeerContact r = fcl_collide(kZ, right), l = fcl_collide(kZ, left);
+    ASSERT_TRUE(r.ok && l.ok) << r.error << l.error;
+    EXPECT_EQ(r.hit, l.hit) << i;
+    EXPECT_EQ(r.depth, l.depth) << i;
+    EXPECT_EQ(r.normal, l.normal) << i;
+    EXPECT_EQ(r.point, l.point) << i;
+    const PeerDistance dr = fcl_distance(kZ, right), dl = fcl_distance(kZ, left);
+    ASSERT_TRUE(dr.ok && dl.ok) << dr.error << dl.error;
+    EXPECT_EQ(dr.distance, dl.distance) << i;
+    EXPECT_EQ(fcl_overlap(kZ, right), fcl_overlap(kZ, left)) << i;
+  }
+  // And a hand case: a left-handed box over the top cap, 0.15 in.
+  Obb lh = box_at({0.2, 0.1, 1.25}, {0.5, 0.3, 0.4});
+  lh.axes[2] = {0, 0, -1};
+  const PeerContact k = fcl_collide(kZ, lh);
+  ASSERT_TRUE(k.ok) << k.error;
+  ASSERT_TRUE(k.hit);
+  EXPECT_NEAR(k.depth, 0.15, 1e-6);
+  EXPECT_NEAR(length(k.normal - Vec3{0, 0, 1}), 0.0, 1e-6);
+}
+
+TEST(FclPeerBox, ZeroExtentsWork) {
+  // FCL's box support takes corners +-e_i without dividing: flat boxes,
+  // segments and points are answered like their solid neighbours.
+  const PeerContact flat = fcl_collide(kZ, box_at({0.2, 0.1, 0.75}, {0.5, 0.5, 0}));
+  ASSERT_TRUE(flat.ok) << flat.error;
+  ASSERT_TRUE(flat.hit);
+  EXPECT_NEAR(flat.depth, 0.25, 1e-6);
+  EXPECT_NEAR(length(flat.normal - Vec3{0, 0, 1}), 0.0, 1e-6);
+  const PeerDistance flat_above = fcl_distance(kZ, box_at({0.2, 0.1, 1.25}, {0.5, 0.5, 0}));
+  ASSERT_TRUE(flat_above.ok) << flat_above.error;
+  EXPECT_NEAR(flat_above.distance, 0.25, 1e-6);
+  const PeerContact segment = fcl_collide(kZ, box_at({0, 0, 0.5}, {2, 0, 0}));
+  ASSERT_TRUE(segment.ok) << segment.error;
+  ASSERT_TRUE(segment.hit);
+  EXPECT_NEAR(segment.depth, 0.5, 1e-6);
+  const PeerContact point_in = fcl_collide(kZ, box_at({0.2, 0.1, 0.5}, {0, 0, 0}));
+  ASSERT_TRUE(point_in.ok) << point_in.error;
+  ASSERT_TRUE(point_in.hit);
+  EXPECT_NEAR(point_in.depth, 0.5, 1e-6);
+  EXPECT_NEAR(length(point_in.normal - Vec3{0, 0, 1}), 0.0, 1e-6);
+  const PeerDistance point_out = fcl_distance(kZ, box_at({0.2, 0.1, 1.5}, {0, 0, 0}));
+  ASSERT_TRUE(point_out.ok) << point_out.error;
+  EXPECT_NEAR(point_out.distance, 0.5, 1e-6);
+  EXPECT_FALSE(fcl_overlap(kZ, box_at({0.2, 0.1, 1.5}, {0, 0, 0})));
+}
+
+TEST(FclPeerBox, TouchingAndTolerance) {
+  // Face on the cap: MPR sees the origin on its portal: a hit of
+  // rounding-sized depth whose normal means nothing (here sideways).
+  const PeerContact cap = fcl_collide(kZ, box_at({0.2, 0.1, 1.5}, {0.5, 0.5, 0.5}));
+  ASSERT_TRUE(cap.ok) << cap.error;
+  EXPECT_TRUE(cap.hit) << "FCL's touching verdict changed: update fcl_adapter.hpp";
+  EXPECT_LT(cap.depth, 1e-15);
+  // Overlaps of 1e-12 over the cap are seen; 1e-12 gaps are not.
+  EXPECT_TRUE(fcl_overlap(kZ, box_at({0.2, 0.1, 1.5 - 1e-12}, {0.5, 0.5, 0.5})));
+  EXPECT_FALSE(fcl_overlap(kZ, box_at({0.2, 0.1, 1.5 + 1e-12}, {0.5, 0.5, 0.5})));
+  // Face on the side (tangent): no hit, and overlaps of 1e-9 are missed
+  // there while 1e-7 is seen (MPR's tolerance against a curved surface).
+  EXPECT_FALSE(fcl_overlap(kZ, box_at({1.5, 0, 0}, {0.5, 0.5, 0.5}))) << "update fcl_adapter.hpp";
+  EXPECT_FALSE(fcl_overlap(kZ, box_at({1.5 - 1e-9, 0, 0}, {0.5, 0.5, 0.5})));
+  EXPECT_TRUE(fcl_overlap(kZ, box_at({1.5 - 1e-7, 0, 0}, {0.5, 0.5, 0.5})));
+  // GJK's distance sees both touching pairs meet (-1).
+  for (const Obb& b : {box_at({0.2, 0.1, 1.5}, {0.5, 0.5, 0.5}), box_at({1.5, 0, 0}, {0.5, 0.5, 0.5})}) {
+    const PeerDistance d = fcl_distance(kZ, b);
+    ASSERT_TRUE(d.ok) << d.error;
+    EXPECT_EQ(d.distance, -1.0);
+  }
+}
+
+TEST(FclPeerBox, RefusedInput) {
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const double inf = std::numeric_limits<double>::infinity();
+  Obb skew = box_at({0, 0, 1}, {0.5, 0.5, 0.5});
+  skew.axes[1] = {0.1, 1, 0};
+  Obb scaled = box_at({0, 0, 1}, {0.5, 0.5, 0.5});
+  scaled.axes[0] = {2, 0, 0};
+  for (const Obb& b : {skew, scaled}) {
+    const PeerContact r = fcl_collide(kZ, b);
+    EXPECT_FALSE(r.ok);
+    EXPECT_EQ(r.error, "box axes not orthonormal");
+    std::string err;
+    EXPECT_FALSE(fcl_overlap(kZ, b, &err));
+    EXPECT_EQ(err, "box axes not orthonormal");
+    const PeerDistance d = fcl_distance(kZ, b);
+    EXPECT_FALSE(d.ok);
+    EXPECT_EQ(d.error, "box axes not orthonormal");
+  }
+  Obb nan_axis = box_at({0, 0, 1}, {0.5, 0.5, 0.5});
+  nan_axis.axes[2] = {0, nan, 1};
+  const Obb bad[] = {box_at({0, 0, 1}, {-0.5, 0.5, 0.5}), box_at({nan, 0, 1}, {0.5, 0.5, 0.5}),
+                     box_at({0, 0, 1}, {0.5, inf, 0.5}), nan_axis};
+  for (const Obb& b : bad) {
+    const PeerContact r = fcl_collide(kZ, b);
+    EXPECT_FALSE(r.ok);
+    EXPECT_EQ(r.error, "invalid input");
+    std::string err;
+    EXPECT_FALSE(fcl_overlap(kZ, b, &err));
+    EXPECT_EQ(err, "invalid input");
+    EXPECT_EQ(fcl_distance(kZ, b).error, "invalid input");
+  }
+  const Cylinder bad_cyl{{0, 0, 0}, {0, 0, 0}, 1};
+  EXPECT_EQ(fcl_collide(bad_cyl, box_at({0, 0, 0}, {1, 1, 1})).error, "invalid input");
+  EXPECT_EQ(fcl_distance(bad_cyl, box_at({0, 0, 0}, {1, 1, 1})).error, "invalid input");
+  // Sizes beyond 2^250: GJK's products overflow: distance refuses.
+  const PeerDistance huge = fcl_distance(Cylinder{{0, 0, -1e200}, {0, 0, 1e200}, 1e200}, box_at({0, 0, 0}, {1, 1, 1}));
+  EXPECT_FALSE(huge.ok);
+  EXPECT_EQ(huge.error, "outside FCL's range");
+}
+
+// An elongated scene (a cylinder about 2^48 long) on which libccd's MPR
+// does not terminate: FCL as shipped hangs in fcl::collide with or without
+// contact. The box's frame is left-handed. If this starts to answer, FCL or
+// libccd has changed: update fcl_adapter.hpp.
+TEST(FclPeerBox, MprBudgetStopsNonTermination) {
+  const Cylinder c{{-0x1.2bf3a3d55148cp+17, 0x1.a2b5485b9f04p+15, -0x1.1c824c5433288p+16},
+                   {-0x1.bc07effa9e4f3p+47, 0x1.61ccc24859706p+47, -0x1.aa1918caf96cbp+48},
+                   0x1.0297f59a2e4eap+0};
+  Obb b = box_at({-0x1.ac2c71d5ff996p+47, 0x1.552a31384a0a9p+47, -0x1.9ae18dc80dfaep+48},
+                 {0x1.9b00b36c61ep-10, 0x1.850b0cd4b0a28p-1, 0x1.d413997620aa7p-1});
+  b.axes = {Vec3{0, 0, 1}, Vec3{-1, 0, 0}, Vec3{0, 1, 0}};
+  const auto start = std::chrono::steady_clock::now();
+  const PeerContact r = fcl_collide(c, b);
+  EXPECT_FALSE(r.ok) << "FCL no longer shows the documented non-termination";
+  EXPECT_NE(r.error.find("did not terminate"), std::string::npos) << r.error;
+  std::string err;
+  EXPECT_FALSE(fcl_overlap(c, b, &err));
+  EXPECT_NE(err.find("did not terminate"), std::string::npos) << err;
+  EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 5.0);
+  const PeerDistance d = fcl_distance(c, b);
+  ASSERT_TRUE(d.ok) << d.error;
+}
+
+// Within the budget the adapter's calls are fcl::collide's and
+// fcl::distance's, bit for bit.
+TEST(FclPeerBox, GuardedCallsAreFcls) {
+  TestRng rng{4242};
+  int hits = 0;
+  for (int i = 0; i < 500; ++i) {
+    const Cylinder c{4 * rng.vec(), 4 * rng.vec(), 1.0 + rng.next()};
+    Obb b = box_at(2 * rng.vec(), {0.75 + 0.5 * rng.next(), 0.75 + 0.5 * rng.next(), 0.75 + 0.5 * rng.next()});
+    b.axes = rotation_axes(rng.next(), rng.next(), rng.next(), rng.next());
+    if (rng.below(4) == 0) b.axes[1] = -b.axes[1];
+    ASSERT_TRUE(obb_axes_orthonormal(b)) << i;
+    const PeerContact adapter = fcl_collide(c, b);
+    const PeerContact raw = fcl_collide_prepared(FclCylinderBox(c, b));
+    ASSERT_TRUE(adapter.ok) << adapter.error;
+    ASSERT_EQ(adapter.hit, raw.hit) << i;
+    EXPECT_EQ(fcl_overlap(c, b), fcl_overlap_prepared(FclCylinderBox(c, b))) << i;
+    const PeerDistance d = fcl_distance(c, b);
+    const PeerDistance d_raw = fcl_distance_prepared(FclCylinderBox(c, b));
+    ASSERT_TRUE(d.ok) << d.error;
+    EXPECT_EQ(std::memcmp(&d.distance, &d_raw.distance, sizeof(double)), 0) << i;
+    EXPECT_EQ(d.p_a, d_raw.p_a) << i;
+    EXPECT_EQ(d.p_b, d_raw.p_b) << i;
+    if (!adapter.hit) continue;
+    ++hits;
+    EXPECT_TRUE(raw.ok) << raw.error;
+    EXPECT_EQ(std::memcmp(&adapter.depth, &raw.depth, sizeof(double)), 0) << i;
+    EXPECT_EQ(adapter.normal, raw.normal) << i;
+    EXPECT_EQ(adapter.point, raw.point) << i;
+  }
+  EXPECT_GT(hits, 100);
+}
+
+// --- cylinder/triangle: FCL's per-triangle narrow phase --------------------------
+
+TEST(FclPeerTriangle, CollideNormalFromCylinderTowardsTriangle) {
+  // A vertical triangle whose lowest vertex is 0.25 into the top cap:
+  // normal +z (from the cylinder towards the triangle), whatever the
+  // vertex order and with the caps swapped.
+  const Vec3 a{0.2, 0, 0.75}, b{0.2, -0.5, 2}, c{0.2, 0.5, 2};
+  for (const Cylinder& cyl : {kZ, kZFlipped}) {
+    for (const Triangle& t : {Triangle{a, b, c}, Triangle{c, a, b}, Triangle{b, a, c}}) {
+      const PeerContact r = fcl_collide(cyl, t);
+      ASSERT_TRUE(r.ok) << r.error;
+      ASSERT_TRUE(r.hit);
+      EXPECT_NEAR(r.depth, 0.25, 1e-6);
+      EXPECT_NEAR(length(r.normal - Vec3{0, 0, 1}), 0.0, 1e-6);
+      EXPECT_NEAR(length(r.normal), 1.0, 1e-12);
+      EXPECT_TRUE(fcl_overlap(cyl, t));
+    }
+  }
+  // Lying flat in the cylinder 0.25 under the top cap: out through the cap.
+  const PeerContact flat = fcl_collide(kZ, Triangle{{-0.5, -0.5, 0.75}, {0.5, -0.5, 0.75}, {0, 0.5, 0.75}});
+  ASSERT_TRUE(flat.ok) << flat.error;
+  ASSERT_TRUE(flat.hit);
+  EXPECT_NEAR(flat.depth, 0.25, 1e-6);
+  EXPECT_NEAR(length(flat.normal - Vec3{0, 0, 1}), 0.0, 1e-6);
+  // Under the bottom cap: -z.
+  const PeerContact below = fcl_collide(kZ, Triangle{{0.2, 0, -0.9}, {0.2, -0.5, -2}, {0.2, 0.5, -2}});
+  ASSERT_TRUE(below.ok) << below.error;
+  ASSERT_TRUE(below.hit);
+  EXPECT_NEAR(below.depth, 0.1, 1e-6);
+  EXPECT_NEAR(length(below.normal - Vec3{0, 0, -1}), 0.0, 1e-6);
+  // A vertex 0.25 into the side: the outward radial.
+  const PeerContact side = fcl_collide(kZ, Triangle{{0.75, 0, 0}, {3, -0.5, 0}, {3, 0.5, 0}});
+  ASSERT_TRUE(side.ok) << side.error;
+  ASSERT_TRUE(side.hit);
+  EXPECT_NEAR(side.depth, 0.25, 1e-6);
+  EXPECT_NEAR(length(side.normal - Vec3{1, 0, 0}), 0.0, 1e-3);
+  // FCL as shipped (shapeTriangleIntersect) gives the same direction: no flip.
+  const PeerContact raw = fcl_collide_prepared(FclCylinderTriangle(kZ, Triangle{a, b, c}));
+  ASSERT_TRUE(raw.ok) << raw.error;
+  ASSERT_TRUE(raw.hit);
+  EXPECT_NEAR(length(raw.normal - Vec3{0, 0, 1}), 0.0, 1e-6);
+}
+
+TEST(FclPeerTriangle, DistanceAndMiss) {
+  const PeerDistance above = fcl_distance(kZ, Triangle{{0.2, 0, 1.25}, {0.2, -0.5, 2}, {0.2, 0.5, 2}});
+  ASSERT_TRUE(above.ok) << above.error;
+  EXPECT_NEAR(above.distance, 0.25, 1e-6);
+  EXPECT_NEAR(length(above.p_a - Vec3{0.2, 0, 1}), 0.0, 1e-6);
+  EXPECT_NEAR(length(above.p_b - Vec3{0.2, 0, 1.25}), 0.0, 1e-6);
+  const PeerDistance side = fcl_distance(kZ, Triangle{{1.25, 0, 0}, {3, -0.5, 0}, {3, 0.5, 0}});
+  ASSERT_TRUE(side.ok) << side.error;
+  EXPECT_NEAR(side.distance, 0.25, 1e-6);
+  const PeerContact miss = fcl_collide(kZ, Triangle{{1.25, 0, 0}, {3, -0.5, 0}, {3, 0.5, 0}});
+  ASSERT_TRUE(miss.ok) << miss.error;
+  EXPECT_FALSE(miss.hit);
+  EXPECT_FALSE(fcl_overlap(kZ, Triangle{{1.25, 0, 0}, {3, -0.5, 0}, {3, 0.5, 0}}));
+  // Overlapping: exactly -1, nearest points zero.
+  const PeerDistance over = fcl_distance(kZ, Triangle{{0.2, 0, 0.75}, {0.2, -0.5, 2}, {0.2, 0.5, 2}});
+  ASSERT_TRUE(over.ok) << over.error;
+  EXPECT_EQ(over.distance, -1.0);
+  EXPECT_EQ(over.p_a, Vec3{});
+  EXPECT_EQ(over.p_b, Vec3{});
+  // A large triangle cutting the cylinder: a hit (MPR's depth along its
+  // ray, 6 here, not the minimal 1).
+  const PeerContact cut = fcl_collide(kZ, Triangle{{-5, -5, 0}, {5, -5, 0}, {0, 5, 0}});
+  ASSERT_TRUE(cut.ok) << cut.error;
+  EXPECT_TRUE(cut.hit);
+  EXPECT_GT(cut.depth, 1.0 - 1e-6);
+}
+
+TEST(FclPeerTriangle, DegenerateTriangles) {
+  // FCL's triangle object takes any three points (support: the best vertex;
+  // centre: their mean): collinear and coincident vertices are answered as
+  // the segment or the point.
+  const Triangle through{{-3, 0, 0.5}, {0, 0, 0.5}, {3, 0, 0.5}};
+  const PeerContact t = fcl_collide(kZ, through);
+  ASSERT_TRUE(t.ok) << t.error;
+  ASSERT_TRUE(t.hit);
+  EXPECT_NEAR(t.depth, 0.5, 1e-6);
+  EXPECT_NEAR(length(t.normal - Vec3{0, 0, 1}), 0.0, 1e-6);
+  const PeerContact into = fcl_collide(kZ, Triangle{{0.2, 0, 0.75}, {0.2, 0, 2}, {0.2, 0, 3}});
+  ASSERT_TRUE(into.ok) << into.error;
+  ASSERT_TRUE(into.hit);
+  EXPECT_NEAR(into.depth, 0.25, 1e-6);
+  EXPECT_NEAR(length(into.normal - Vec3{0, 0, 1}), 0.0, 1e-6);
+  const PeerDistance sep = fcl_distance(kZ, Triangle{{-3, 0, 1.5}, {0, 0, 1.5}, {3, 0, 1.5}});
+  ASSERT_TRUE(sep.ok) << sep.error;
+  EXPECT_NEAR(sep.distance, 0.5, 1e-6);
+  // a == b == c.
+  const Vec3 in{0.2, 0.1, 0.5}, out{0.2, 0.1, 1.5};
+  const PeerContact point_in = fcl_collide(kZ, Triangle{in, in, in});
+  ASSERT_TRUE(point_in.ok) << point_in.error;
+  ASSERT_TRUE(point_in.hit);
+  EXPECT_NEAR(point_in.depth, 0.5, 1e-6);
+  EXPECT_NEAR(length(point_in.normal - Vec3{0, 0, 1}), 0.0, 1e-6);
+  EXPECT_EQ(fcl_distance(kZ, Triangle{in, in, in}).distance, -1.0);
+  const PeerDistance point_out = fcl_distance(kZ, Triangle{out, out, out});
+  ASSERT_TRUE(point_out.ok) << point_out.error;
+  EXPECT_NEAR(point_out.distance, 0.5, 1e-6);
+  EXPECT_NEAR(length(point_out.p_b - out), 0.0, 1e-12);
+  EXPECT_FALSE(fcl_overlap(kZ, Triangle{out, out, out}));
+  // Two equal vertices: the segment from outside into the cylinder.
+  const PeerContact two = fcl_collide(kZ, Triangle{out, out, in});
+  ASSERT_TRUE(two.ok) << two.error;
+  ASSERT_TRUE(two.hit);
+  EXPECT_NEAR(two.depth, 0.5, 1e-6);
+}
+
+TEST(FclPeerTriangle, TouchingAndTolerance) {
+  // A vertex on the cap: a hit of rounding-sized depth (its normal means
+  // nothing); on the side: no hit.
+  const PeerContact cap = fcl_collide(kZ, Triangle{{0.2, 0, 1}, {0.2, -0.5, 2}, {0.2, 0.5, 2}});
+  ASSERT_TRUE(cap.ok) << cap.error;
+  EXPECT_TRUE(cap.hit) << "FCL's touching verdict changed: update fcl_adapter.hpp";
+  EXPECT_LT(cap.depth, 1e-15);
+  const PeerContact side = fcl_collide(kZ, Triangle{{1, 0, 0}, {3, -0.5, 0}, {3, 0.5, 0}});
+  ASSERT_TRUE(side.ok) << side.error;
+  EXPECT_FALSE(side.hit) << "FCL's touching verdict changed: update fcl_adapter.hpp";
+  // Overlaps of 1e-12 are seen at a vertex, on the cap and on the side.
+  EXPECT_TRUE(fcl_overlap(kZ, Triangle{{0.2, 0, 1 - 1e-12}, {0.2, -0.5, 2}, {0.2, 0.5, 2}}));
+  EXPECT_TRUE(fcl_overlap(kZ, Triangle{{1 - 1e-12, 0, 0}, {3, -0.5, 0}, {3, 0.5, 0}}));
+  EXPECT_FALSE(fcl_overlap(kZ, Triangle{{1 + 1e-12, 0, 0}, {3, -0.5, 0}, {3, 0.5, 0}}));
+}
+
+// GJK's first Minkowski point is zero when the shapes' support points along
+// +x coincide: a vertex (or a point triangle, or a collinear one) touching
+// the side at (1, 0, 0). FCL then computes with NaN: its nearest points come
+// back NaN (elsewhere its assert aborts, e.g. in subnormal scenes). The
+// adapter reports not ok. If this starts to answer ok, update
+// fcl_adapter.hpp.
+TEST(FclPeerTriangle, DistanceZeroDirectionIsRefused) {
+  for (const Triangle& t : {Triangle{{1, 0, 0}, {3, -0.5, 0}, {3, 0.5, 0}}, Triangle{{1, 0, 0}, {2, 0, 0}, {3, 0, 0}},
+                            Triangle{{1, 0, 0}, {1, 0, 0}, {1, 0, 0}}}) {
+    const PeerDistance d = fcl_distance(kZ, t);
+    EXPECT_FALSE(d.ok) << "FCL no longer shows the documented defect";
+    EXPECT_NE(d.error.find("non-finite point"), std::string::npos) << d.error;
+    EXPECT_FALSE(fcl_distance_prepared(FclCylinderTriangle(kZ, t)).ok);
+  }
+  // Subnormal scenes (FCL as shipped aborts on its assert): refused.
+  const Cylinder sub{{0, 0, 0}, {0, 0, 4e-320}, 4e-320};
+  const PeerDistance tri = fcl_distance(sub, Triangle{{0, 0, 0}, {0, 0, 0}, {0, 0, 0}});
+  EXPECT_FALSE(tri.ok);
+  EXPECT_NE(tri.error.find("non-finite"), std::string::npos) << tri.error;
+  const PeerDistance box = fcl_distance(sub, box_at({0, 0, 0}, {0, 0, 0}));
+  EXPECT_FALSE(box.ok);
+  EXPECT_NE(box.error.find("non-finite"), std::string::npos) << box.error;
+  // Beyond 2^250: refused before FCL is asked.
+  const PeerDistance huge =
+      fcl_distance(Cylinder{{0, 0, -1e200}, {0, 0, 1e200}, 1e200}, Triangle{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}});
+  EXPECT_EQ(huge.error, "outside FCL's range");
+}
+
+// An elongated scene (a cylinder about 2^49 long, a triangle of size ~1e-12
+// relative to its offsets) on which libccd's MPR does not terminate: FCL's
+// shapeTriangleIntersect as shipped hangs. If this starts to answer, update
+// fcl_adapter.hpp.
+TEST(FclPeerTriangle, MprBudgetStopsNonTermination) {
+  const Cylinder c{{0x1.2c463cf0e130cp+8, 0x1.e7310f4a50c1ap+8, -0x1.6ad0bde5b189ep+8},
+                   {-0x1.6627cdfc33f33p+48, 0x1.685e1ecf7a782p+49, 0x1.3c8f6464e3413p+49},
+                   0x1.08ecf54e4af17p-1};
+  const Triangle t{{-0x1.4562f5dff77dfp+48, 0x1.47657640e37f3p+49, 0x1.1f98cf285b149p+49},
+                   {-0x1.4562f5dff77e9p+48, 0x1.47657640e37ffp+49, 0x1.1f98cf285b13ap+49},
+                   {-0x1.4562f5dff77d2p+48, 0x1.47657640e37f6p+49, 0x1.1f98cf285b14ap+49}};
+  const auto start = std::chrono::steady_clock::now();
+  const PeerContact r = fcl_collide(c, t);
+  EXPECT_FALSE(r.ok) << "FCL no longer shows the documented non-termination";
+  EXPECT_NE(r.error.find("did not terminate"), std::string::npos) << r.error;
+  std::string err;
+  EXPECT_FALSE(fcl_overlap(c, t, &err));
+  EXPECT_NE(err.find("did not terminate"), std::string::npos) << err;
+  EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 5.0);
+  const PeerDistance d = fcl_distance(c, t);
+  ASSERT_TRUE(d.ok) << d.error;
+}
+
+// Within the budget the adapter's calls are FCL's shapeTriangleIntersect /
+// shapeTriangleDistance, bit for bit.
+TEST(FclPeerTriangle, GuardedCallsAreFcls) {
+  TestRng rng{9001};
+  int hits = 0;
+  for (int i = 0; i < 500; ++i) {
+    const Cylinder c{4 * rng.vec(), 4 * rng.vec(), 1.0 + rng.next()};
+    const Vec3 centre = 2 * rng.vec();
+    const Triangle t{centre + 1.5 * rng.vec(), centre + 1.5 * rng.vec(), centre + 1.5 * rng.vec()};
+    const PeerContact adapter = fcl_collide(c, t);
+    const PeerContact raw = fcl_collide_prepared(FclCylinderTriangle(c, t));
+    ASSERT_TRUE(adapter.ok) << adapter.error;
+    ASSERT_EQ(adapter.hit, raw.hit) << i;
+    EXPECT_EQ(fcl_overlap(c, t), fcl_overlap_prepared(FclCylinderTriangle(c, t))) << i;
+    const PeerDistance d = fcl_distance(c, t);
+    const PeerDistance d_raw = fcl_distance_prepared(FclCylinderTriangle(c, t));
+    ASSERT_TRUE(d.ok) << d.error;
+    EXPECT_EQ(std::memcmp(&d.distance, &d_raw.distance, sizeof(double)), 0) << i;
+    EXPECT_EQ(d.p_a, d_raw.p_a) << i;
+    EXPECT_EQ(d.p_b, d_raw.p_b) << i;
+    if (!adapter.hit) continue;
+    ++hits;
+    EXPECT_TRUE(raw.ok) << raw.error;
+    EXPECT_EQ(std::memcmp(&adapter.depth, &raw.depth, sizeof(double)), 0) << i;
+    EXPECT_EQ(adapter.normal, raw.normal) << i;
+    EXPECT_EQ(adapter.point, raw.point) << i;
+  }
+  EXPECT_GT(hits, 100);
+}
+
+TEST(FclPeerTriangle, InvalidInputNeverReachesFcl) {
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const double inf = std::numeric_limits<double>::infinity();
+  for (const Triangle& t : {Triangle{{nan, 0, 0}, {1, 0, 0}, {0, 1, 0}}, Triangle{{0, 0, 0}, {1, inf, 0}, {0, 1, 0}},
+                            Triangle{{0, 0, 0}, {1, 0, 0}, {0, 1, -inf}}}) {
+    const PeerContact r = fcl_collide(kZ, t);
+    EXPECT_FALSE(r.ok);
+    EXPECT_EQ(r.error, "invalid input");
+    std::string err;
+    EXPECT_FALSE(fcl_overlap(kZ, t, &err));
+    EXPECT_EQ(err, "invalid input");
+    EXPECT_EQ(fcl_distance(kZ, t).error, "invalid input");
+  }
+  const Cylinder bad_cyl{{0, 0, 0}, {0, 0, 1}, -1};
+  const Triangle good{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+  EXPECT_EQ(fcl_collide(bad_cyl, good).error, "invalid input");
+  EXPECT_EQ(fcl_distance(bad_cyl, good).error, "invalid input");
+}
+
+// Adversarial batches for both pairs: small integer and half coordinates
+// (exact touching), flat and point boxes, degenerate triangles, r = 0,
+// scales 2^-1070..2^430, offsets to 2^1000, and cylinders up to 2^50 long
+// (where FCL as shipped hangs or aborts). Every call returns, quickly, and
+// says ok or why not.
+TEST(FclPeerBoxTriangle, AdversarialInputsDoNotHangOrAbort) {
+  TestRng rng{31337};
+  auto coord = [&](int style) {
+    if (style == 0) return static_cast<double>(rng.below(7) - 3);
+    if (style == 1) return 0.5 * (rng.below(9) - 4);
+    return 2 * rng.next();
+  };
+  auto v3 = [&](int style) { return Vec3{coord(style), coord(style), coord(style)}; };
+  int calls = 0, ok = 0, hits = 0, budget = 0, non_finite = 0, range = 0;
+  double worst = 0;
+  auto check = [&](bool call_ok, const std::string& error, bool hit, std::chrono::steady_clock::time_point start) {
+    ++calls;
+    EXPECT_EQ(call_ok, error.empty()) << error;
+    budget += error.find("did not terminate") != std::string::npos;
+    non_finite += error.find("non-finite") != std::string::npos;
+    range += error == "outside FCL's range";
+    ok += call_ok;
+    hits += call_ok && hit;
+    worst = std::max(worst, std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+  };
+  for (int i = 0; i < 6000; ++i) {
+    const int style = rng.below(3);
+    Cylinder c;
+    Obb b;
+    Triangle t;
+    if (rng.below(5) == 0) {
+      // Elongated: a cylinder 2^0..2^50 long, the box and the triangle near
+      // a point of its axis.
+      const double len = std::ldexp(1.0, rng.below(51));
+      const Vec3 d = (1.0 / length(v3(2) + Vec3{0, 0, 3})) * (v3(2) + Vec3{0, 0, 3});
+      const Vec3 p = std::ldexp(1.0, rng.below(20)) * v3(2);
+      c = Cylinder{p, p + len * d, 0.75 + 0.5 * rng.next()};
+      const Vec3 on = p + (0.6 + 0.6 * rng.next()) * len * d;
+      b = box_at(on + 2 * v3(2), {0.5 + 0.5 * rng.next(), 0.5 + 0.5 * rng.next(), 0.5 + 0.5 * rng.next()});
+      b.axes = rotation_axes(rng.next(), rng.next(), rng.next(), rng.next());
+      const Vec3 t0 = on + 2 * v3(2);
+      t = Triangle{t0, t0 + v3(2), t0 + (rng.below(2) ? len : 1.0) * v3(2)};
+    } else {
+      do {
+        c = Cylinder{v3(style), v3(style), std::fabs(coord(style)) * (rng.below(5) == 0 ? 0 : 1)};
+      } while (c.p == c.q);
+      Vec3 e{std::fabs(coord(style)), std::fabs(coord(style)), std::fabs(coord(style))};
+      if (rng.below(3) == 0) e[rng.below(3)] = 0;
+      if (rng.below(6) == 0) e = {0, 0, 0};
+      b = box_at(v3(style), e);
+      if (rng.below(2) == 0) b.axes = rotation_axes(rng.next(), rng.next(), rng.next(), rng.next());
+      if (rng.below(4) == 0) b.axes[2] = -b.axes[2];
+      const Vec3 p0 = v3(style), p1 = v3(style);
+      switch (rng.below(5)) {
+        case 0: t = Triangle{p0, p1, p0 + 0.5 * (p1 - p0)}; break;  // collinear
+        case 1: t = Triangle{p0, p1, p0}; break;                    // two equal
+        case 2: t = Triangle{p1, p1, p1}; break;                    // a point
+        default: t = Triangle{p0, p1, v3(style)}; break;
+      }
+      const int kind = rng.below(4);
+      double scale = 1, off = 0;
+      if (kind == 1) scale = std::ldexp(1.0, rng.below(1500) - 1070);
+      if (kind == 2) off = std::ldexp(1.0, rng.below(1000)) * (rng.below(2) ? 1 : -1);
+      auto tr = [&](Vec3 v) { return scale * v + Vec3{off, 0.5 * off, -off}; };
+      c = Cylinder{tr(c.p), tr(c.q), scale * c.r};
+      b.c = tr(b.c);
+      b.e = scale * b.e;
+      t = Triangle{tr(t.a), tr(t.b), tr(t.c)};
+      if (!is_valid(c)) continue;
+    }
+    ASSERT_TRUE(obb_axes_orthonormal(b));
+    {
+      const auto s = std::chrono::steady_clock::now();
+      const PeerContact r = fcl_collide(c, b);
+      check(r.ok, r.error, r.hit, s);
+    }
+    {
+      const auto s = std::chrono::steady_clock::now();
+      std::string err;
+      const bool hit = fcl_overlap(c, b, &err);
+      check(err.empty(), err, hit, s);
+    }
+    {
+      const auto s = std::chrono::steady_clock::now();
+      const PeerDistance d = fcl_distance(c, b);
+      check(d.ok, d.error, d.distance < 0, s);
+    }
+    {
+      const auto s = std::chrono::steady_clock::now();
+      const PeerContact r = fcl_collide(c, t);
+      check(r.ok, r.error, r.hit, s);
+    }
+    {
+      const auto s = std::chrono::steady_clock::now();
+      std::string err;
+      const bool hit = fcl_overlap(c, t, &err);
+      check(err.empty(), err, hit, s);
+    }
+    {
+      const auto s = std::chrono::steady_clock::now();
+      const PeerDistance d = fcl_distance(c, t);
+      check(d.ok, d.error, d.distance < 0, s);
+    }
+  }
+  EXPECT_GT(calls, 25000);
+  EXPECT_GT(ok, calls * 8 / 10);  // the guard refuses what FCL cannot do, not everything
+  EXPECT_GT(hits, calls / 10);
+  EXPECT_LT(worst, 1.0);
+  // The batch reaches every guard (else it would test nothing).
+  EXPECT_GT(budget, 0);
+  EXPECT_GT(non_finite, 0);
+  EXPECT_GT(range, 0);
 }
 
 // --- sphere sweep against a cylinder ----------------------------------------

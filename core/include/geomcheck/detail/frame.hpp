@@ -102,11 +102,15 @@ struct SceneScale {
   Sphere in(const Sphere& s) const { return {in(s.c), in(s.r)}; }
   Segment in(const Segment& s) const { return {in(s.a), in(s.b)}; }
   Capsule in(const Capsule& s) const { return {in(s.p), in(s.q), in(s.r)}; }
+  /// A box: centre and extents scale, the axes (directions) do not.
+  Obb in(const Obb& b) const { return {in(b.c), b.axes, in(b.e)}; }
 };
 
 inline double largest(const Cylinder& c) { return std::max(std::max(max_abs(c.p), max_abs(c.q)), c.r); }
 inline double largest(const Sphere& s) { return std::max(max_abs(s.c), s.r); }
 inline double largest(const Segment& s) { return std::max(max_abs(s.a), max_abs(s.b)); }
+/// A box's centre and extents (its axes are directions, unit in the contract).
+inline double largest(const Obb& b) { return std::max(max_abs(b.c), max_abs(b.e)); }
 inline double largest(const Capsule& s) { return std::max(std::max(max_abs(s.p), max_abs(s.q)), s.r); }
 
 /// A point relative to a cylinder: the closest point of the solid cylinder,

@@ -47,15 +47,24 @@ struct SweepSphereCylinderImpl {
   CastHit (*sweep)(const MovingSphere&, const Cylinder&);
 };
 
+/// The implementation under test of collide_cylinder_obb.
+struct CylinderObbImpl {
+  const char* name;
+  bool (*overlap)(const Cylinder&, const Obb&);
+  Contact (*collide)(const Cylinder&, const Obb&);
+};
+
 extern const CylinderSphereImpl kProductionCylinderSphere;
 extern const CastSegmentCylinderImpl kProductionCastSegmentCylinder;
 extern const CylinderCapsuleImpl kProductionCylinderCapsule;
 extern const SweepSphereCylinderImpl kProductionSweepSphereCylinder;
+extern const CylinderObbImpl kProductionCylinderObb;
 
 using CylinderSphereCase = QueryTraits<QueryId::collide_cylinder_sphere>::Case;
 using SegmentCylinderCase = QueryTraits<QueryId::cast_segment_cylinder>::Case;
 using CylinderCapsuleCase = QueryTraits<QueryId::collide_cylinder_capsule>::Case;
 using SweepCylinderCase = QueryTraits<QueryId::sweep_sphere_cylinder>::Case;
+using CylinderObbCase = QueryTraits<QueryId::collide_cylinder_obb>::Case;
 
 /// Production held against the oracle on one case: everything a report or a
 /// check needs. Errors are multiples of `scale`; NaN where not applicable.
@@ -86,6 +95,7 @@ Evaluation evaluate(const CylinderSphereCase& c, const CylinderSphereImpl& impl 
 Evaluation evaluate(const SegmentCylinderCase& c, const CastSegmentCylinderImpl& impl = kProductionCastSegmentCylinder);
 Evaluation evaluate(const CylinderCapsuleCase& c, const CylinderCapsuleImpl& impl = kProductionCylinderCapsule);
 Evaluation evaluate(const SweepCylinderCase& c, const SweepSphereCylinderImpl& impl = kProductionSweepSphereCylinder);
+Evaluation evaluate(const CylinderObbCase& c, const CylinderObbImpl& impl = kProductionCylinderObb);
 
 /// Compares an evaluation with the query's tolerances (tolerances.hpp).
 CheckResult judge(QueryId id, const Evaluation& e);
@@ -151,6 +161,24 @@ CheckResult check_metamorphic(const SweepCylinderCase& c, int move, const SweepS
 CheckResult check_monotone(const SweepCylinderCase& c, const SweepSphereCylinderImpl& impl = kProductionSweepSphereCylinder);
 CheckResult check_robust(const SweepCylinderCase& c, const SweepSphereCylinderImpl& impl = kProductionSweepSphereCylinder);
 CheckResult check_all(const SweepCylinderCase& c, const SweepSphereCylinderImpl& impl = kProductionSweepSphereCylinder);
+
+// --- collide_cylinder_obb ------------------------------------------------------
+/// Agreement with the engine outside the band; the depth claim (see the
+/// query's header), point in both. A box whose axes are not orthonormal is
+/// outside production's contract: only the robust check applies.
+CheckResult check_oracle(const CylinderObbCase& c, const CylinderObbImpl& impl = kProductionCylinderObb);
+/// overlap == collide.hit; unit normal; depth >= 0 equals the overlap along the normal; no NaN.
+CheckResult check_consistency(const CylinderObbCase& c, const CylinderObbImpl& impl = kProductionCylinderObb);
+/// (A,B) and (B,A) agree, normal flips; caps swapped, box axes permuted or
+/// negated: same verdict (band), same depth to the bound.
+CheckResult check_symmetry(const CylinderObbCase& c, const CylinderObbImpl& impl = kProductionCylinderObb);
+CheckResult check_metamorphic(const CylinderObbCase& c, int move, const CylinderObbImpl& impl = kProductionCylinderObb);
+/// A wider or longer cylinder or a bigger box never turns overlap into separation (outside the band).
+CheckResult check_monotone(const CylinderObbCase& c, const CylinderObbImpl& impl = kProductionCylinderObb);
+CheckResult check_robust(const CylinderObbCase& c, const CylinderObbImpl& impl = kProductionCylinderObb);
+CheckResult check_all(const CylinderObbCase& c, const CylinderObbImpl& impl = kProductionCylinderObb);
+/// Axes orthonormal to 16 eps (|a_i . a_j - delta_ij|): production's contract.
+bool obb_in_contract(const Obb& b);
 
 /// Number of metamorphic moves understood by check_metamorphic (0..kNumMoves-1).
 inline constexpr int kNumMoves = 6;

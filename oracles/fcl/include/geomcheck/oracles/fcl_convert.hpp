@@ -8,6 +8,7 @@
 // Conventions and caveats are documented in fcl_adapter.hpp.
 #pragma once
 
+#include <fcl/geometry/shape/box.h>
 #include <fcl/geometry/shape/capsule.h>
 #include <fcl/geometry/shape/cylinder.h>
 #include <fcl/geometry/shape/sphere.h>
@@ -47,6 +48,25 @@ struct FclCapsule {
   explicit FclCapsule(const Capsule& c);
 };
 
+/// A geomcheck oriented box as FCL sees it: fcl::Boxd with FULL side
+/// lengths 2 e_i (exact unless 2 e_i overflows), centred at c, rotation with
+/// columns (axes[0], axes[1], axes[2]); a left-handed frame (det < 0) gets
+/// axes[2] negated (the same set: the box is symmetric). Zero extents (flat
+/// boxes, segments, points) are accepted by FCL. Requires is_valid(b) and
+/// obb_axes_orthonormal(b) (FCL takes the matrix for a rotation).
+struct FclBox {
+  fcl::Boxd shape;
+  fcl::Transform3d pose;
+  explicit FclBox(const Obb& b);
+};
+
+/// A geomcheck triangle as FCL's per-triangle narrow phase takes it: its
+/// three vertices, exactly (world frame). Requires is_valid(t).
+struct FclTriangle {
+  fcl::Vector3d a, b, c;
+  explicit FclTriangle(const Triangle& t);
+};
+
 /// A cylinder/sphere pair converted once; the `*_prepared` calls run only
 /// FCL's query and the conversion of its result. Requires valid shapes.
 struct FclCylinderSphere {
@@ -70,6 +90,22 @@ struct FclCylinderCapsule {
   FclCylinderCapsule(const Cylinder& cyl, const Capsule& cap) : a(cyl), b(cap) {}
 };
 
+/// A cylinder/box pair converted once (PeerContact's normal from the
+/// cylinder towards the box). Requires valid shapes and orthonormal axes.
+struct FclCylinderBox {
+  FclCylinder a;
+  FclBox b;
+  FclCylinderBox(const Cylinder& cyl, const Obb& box) : a(cyl), b(box) {}
+};
+
+/// A cylinder/triangle pair converted once (PeerContact's normal from the
+/// cylinder towards the triangle). Requires valid shapes.
+struct FclCylinderTriangle {
+  FclCylinder a;
+  FclTriangle b;
+  FclCylinderTriangle(const Cylinder& cyl, const Triangle& tri) : a(cyl), b(tri) {}
+};
+
 /// fcl_overlap on a converted pair (no validity check; exceptions propagate).
 bool fcl_overlap_prepared(const FclCylinderSphere& pair);
 bool fcl_overlap_prepared(const FclCylinderCylinder& pair);
@@ -90,5 +126,22 @@ PeerDistance fcl_distance_prepared(const FclCylinderCylinder& pair);
 /// fcl::distance as shipped (unguarded): ABORTS the process on the inputs
 /// described in fcl_adapter.hpp; where fcl_distance is ok, the same answer.
 PeerDistance fcl_distance_prepared(const FclCylinderCapsule& pair);
+
+/// fcl::collide / fcl::distance as shipped (GST_LIBCCD: libccd's MPR and GJK
+/// on FCL's support functions, unguarded, like the capsule's prepared calls:
+/// they can hang or abort where the adapter's calls report not ok). MPR's
+/// touching contact (zero normal, depth below CCD_EPS) is accepted as ok.
+bool fcl_overlap_prepared(const FclCylinderBox& pair);
+PeerContact fcl_collide_prepared(const FclCylinderBox& pair);
+PeerDistance fcl_distance_prepared(const FclCylinderBox& pair);
+
+/// FCL's per-triangle narrow phase as shipped (what its BVH traversal calls
+/// for each triangle of a mesh): GJKSolver_libccd::shapeTriangleIntersect /
+/// shapeTriangleDistance on the cylinder and the three vertices, with the
+/// tolerances fcl::collide / fcl::distance give the solver (1e-6).
+/// Unguarded; MPR's touching contact is accepted as ok.
+bool fcl_overlap_prepared(const FclCylinderTriangle& pair);
+PeerContact fcl_collide_prepared(const FclCylinderTriangle& pair);
+PeerDistance fcl_distance_prepared(const FclCylinderTriangle& pair);
 
 }  // namespace geomcheck::oracles

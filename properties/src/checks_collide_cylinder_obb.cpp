@@ -1,0 +1,290 @@
+#include <cmath>
+#include <utility>
+
+#include "capsule_truth.hpp"
+#include "common.hpp"
+#include "geomcheck/collide_cylinder_obb.hpp"
+#include "geomcheck/oracles/cylinder_sphere.hpp"
+#include "geomcheck/properties/checks.hpp"
+#include "geomcheck/properties/tolerances.hpp"
+#include "moves.hpp"
+
+namespace geomcheck {
+
+namespace {
+
+constexpr QueryId kId = QueryId::collide_cylinder_obb;
+using oracle::Q;
+using oracle::QInterval;
+using oracle::QVec;
+using oracle::Verdict;
+
+bool valid_case(const CylinderObbCase& c) { return is_valid(c.a) && is_valid(c.b); }
+
+double scale_of(const CylinderObbCase& c) {
+  const double m = std::max({max_abs(c.a.p), max_abs(c.a.q), c.a.r, oracle::extent(c.a.p, c.a.q), max_abs(c.b.c),
+                             max_abs(c.b.e)});
+  return m > 0 ? m : 1.0;
+}
+
+// The engine's answer for the box against the cylinder: the verdict, and
+// the signed distance refined to 1e-20 * scale where it can decide the band
+// (always when separated: GJK to convergence is cheap; when overlapping only
+// if the depth can still be within the band, since that runs EPA).
+struct BoxTruth {
+  Verdict verdict = Verdict::Undecided;
+  QInterval signed_distance;
+  std::string text;
+};
+
+BoxTruth box_truth(const oracle::ConvexShape& cyl, const oracle::ConvexShape& box, const Q& band) {
+  BoxTruth t;
+  oracle::EngineOptions opt;
+  opt.certificates = false;
+  oracle::DistanceResult d = oracle::classify(cyl, box, opt);
+  if (d.verdict == Verdict::Separated || (d.verdict == Verdict::Overlapping && d.distance.hi >= -2 * band)) {
+    opt.rel_width = 1e-20;
+    d = oracle::classify(cyl, box, opt);
+  }
+  t.verdict = d.verdict;
+  t.signed_distance = d.verdict == Verdict::Touching ? oracle::point(Q(0)) : d.distance;
+  t.text = std::string(oracle::to_string(t.verdict)) + " signed_distance=" + oracle::to_string(t.signed_distance);
+  return t;
+}
+
+// An upper bound of the distance from x to the box, exactly: x's
+// coordinates along the stored axes (Cramer's rule in rationals; the axes
+// are independent in the contract), clamped to [-e_i, e_i], give a point of
+// the box exactly, and its distance from x bounds the box's.
+Q box_distance_up(const Obb& b, Vec3 x) {
+  const QVec a0 = oracle::to_q(b.axes[0]), a1 = oracle::to_q(b.axes[1]), a2 = oracle::to_q(b.axes[2]);
+  const QVec w = oracle::to_q(x) - oracle::to_q(b.c);
+  const Q det = oracle::dot(a0, oracle::cross(a1, a2));
+  const Q t[3] = {oracle::dot(w, oracle::cross(a1, a2)) / det, oracle::dot(a0, oracle::cross(w, a2)) / det,
+                  oracle::dot(a0, oracle::cross(a1, w)) / det};
+  const QVec axes[3] = {a0, a1, a2};
+  QVec y = oracle::to_q(b.c);
+  for (int i = 0; i < 3; ++i) {
+    const Q e = oracle::to_q(b.e[i]);
+    const Q ti = t[i] > e ? e : (t[i] < -e ? Q(-e) : t[i]);
+    y = y + ti * axes[i];
+  }
+  const QVec d = oracle::to_q(x) - y;
+  return oracle::sqrt_interval(oracle::dot(d, d)).hi;
+}
+
+}  // namespace
+
+bool obb_in_contract(const Obb& b) {
+  for (int i = 0; i < 3; ++i)
+    for (int j = i; j < 3; ++j)
+      if (!(std::fabs(dot(b.axes[i], b.axes[j]) - (i == j ? 1.0 : 0.0)) <= 16 * 0x1p-52)) return false;
+  return true;
+}
+
+const CylinderObbImpl kProductionCylinderObb = {
+    "production",
+    [](const Cylinder& a, const Obb& b) { return overlap(a, b); },
+    [](const Cylinder& a, const Obb& b) { return collide(a, b); },
+};
+
+Evaluation evaluate(const CylinderObbCase& c, const CylinderObbImpl& impl) {
+  Evaluation e;
+  const bool ov = impl.overlap(c.a, c.b);
+  const Contact ct = impl.collide(c.a, c.b);
+  e.prod_hit = ov;
+  e.prod_text = describe(ct, ov);
+  e.valid = valid_case(c);
+  if (!e.valid) {
+    e.truth_text = "invalid input: no overlap";
+    e.disagree = ov || ct.hit;
+    return e;
+  }
+  e.scale = scale_of(c);
+  if (!obb_in_contract(c.b)) {
+    // Outside production's contract: no verdict is owed (robust checks only).
+    e.truth_text = "box axes not orthonormal: outside the contract";
+    e.near_boundary = true;
+    return e;
+  }
+  const Tolerances tol = tolerances(kId);
+  const oracle::ConvexShape cyl = oracle::make_shape(c.a), box = oracle::make_shape(c.b);
+  const Q band = times_scale(tol.verdict, e.scale);
+  const BoxTruth truth = box_truth(cyl, box, band);
+  e.verdict = truth.verdict;
+  e.truth_hit = truth.verdict != Verdict::Separated;
+  e.signed_distance = nearest_to_zero(truth.signed_distance, e.scale);
+  e.truth_text = truth.text;
+  e.disagree = e.prod_hit != e.truth_hit;
+  e.near_boundary = !(truth.signed_distance.lo > band || truth.signed_distance.hi < -band);
+  if (e.disagree) {
+    e.margin = std::fabs(e.signed_distance) / e.scale;
+    e.excused = e.near_boundary;
+  }
+  if (ct.hit && finite_contact(ct)) {
+    e.unit_err = std::fabs(length(ct.normal) - 1);
+    if (e.truth_hit) {
+      // The penetration depth, certified (EPA): the header claims depth
+      // and normal minimal. Where EPA cannot narrow the enclosure below the
+      // bound (it stops at its iteration caps: 4.7e-14 wide on a cap
+      // coplanar with a box face), the errors are taken as the distance from
+      // production's value to the enclosure: certain, a lower bound, so a
+      // failure is always production's.
+      if (truth.verdict == Verdict::Overlapping) {
+        const oracle::PenetrationResult pd = oracle::penetration(cyl, box, 1e-20);
+        if (pd.overlapping && std::isfinite(oracle::to_double(pd.depth.hi))) {
+          const bool narrow = pd.depth.hi - pd.depth.lo <= times_scale(0.01 * tol.depth, e.scale);
+          const Q v = oracle::to_q(ct.depth);
+          if (narrow) e.depth_err = rel_error(pd.depth, ct.depth, e.scale);
+          else e.depth_err = v > pd.depth.hi ? rel_up(v - pd.depth.hi, e.scale) : (v < pd.depth.lo ? rel_up(pd.depth.lo - v, e.scale) : 0.0);
+          if (max_abs(ct.normal) > 0) {
+            const QInterval along = overlap_along(cyl, box, oracle::to_q(ct.normal));
+            const Q excess = narrow ? along.hi - pd.depth.lo : along.lo - pd.depth.hi;
+            e.normal_err = excess > 0 ? rel_up(excess, e.scale) : 0.0;
+          }
+          if (!narrow) e.truth_text += "; penetration depth " + oracle::to_string(pd.depth) + " (EPA enclosure wider than the bound)";
+        }
+      }
+      const QVec x = oracle::to_q(ct.point);
+      const QInterval da = oracle::signed_distance(oracle::to_q(c.a), x);
+      const Q db_hi = oracle::contains(box, x) ? Q(0) : box_distance_up(c.b, ct.point);
+      const Q out = da.hi > db_hi ? da.hi : db_hi;
+      e.point_err = out > 0 ? rel_up(out, e.scale) : 0.0;
+    }
+  }
+  return e;
+}
+
+CheckResult check_oracle(const CylinderObbCase& c, const CylinderObbImpl& impl) { return judge(kId, evaluate(c, impl)); }
+
+CheckResult check_consistency(const CylinderObbCase& c, const CylinderObbImpl& impl) {
+  const bool ov = impl.overlap(c.a, c.b);
+  const Contact ct = impl.collide(c.a, c.b);
+  if (ov != ct.hit) return Failure{"consistency-overlap-vs-collide", describe(ct, ov)};
+  if (!ct.hit) return std::nullopt;
+  if (!finite_contact(ct)) return Failure{"consistency-finite", describe(ct, ov)};
+  const Tolerances tol = tolerances(kId);
+  if (std::fabs(length(ct.normal) - 1) > tol.unit) return Failure{"consistency-unit-normal", describe(ct, ov)};
+  if (!(ct.depth >= 0)) return Failure{"consistency-depth-nonnegative", describe(ct, ov)};
+  if (!valid_case(c) || !obb_in_contract(c.b)) return std::nullopt;
+  // depth equals the overlap of the shapes along the returned normal.
+  const double scale = scale_of(c);
+  const QInterval along = overlap_along(oracle::make_shape(c.a), oracle::make_shape(c.b), oracle::to_q(ct.normal));
+  if (!std::isfinite(oracle::to_double(along.hi))) return std::nullopt;  // beyond the doubles: saturated depth
+  const double err = rel_error(along, ct.depth, scale);
+  if (err > tol.depth)
+    return Failure{"consistency-depth-along-normal",
+                   fmt("|depth - overlap along normal| = %.3g * scale > %.3g; ", err, tol.depth) + describe(ct, ov)};
+  return std::nullopt;
+}
+
+namespace {
+// Same solid, other representation: the verdicts agree unless one case is
+// within the band; the depths within twice the depth bound.
+CheckResult same_answer(const char* what, const CylinderObbCase& c0, const CylinderObbCase& c1,
+                        const CylinderObbImpl& impl) {
+  const bool o0 = impl.overlap(c0.a, c0.b), o1 = impl.overlap(c1.a, c1.b);
+  if (o0 != o1) {
+    const Evaluation e0 = evaluate(c0, impl), e1 = evaluate(c1, impl);
+    if (e0.near_boundary || e1.near_boundary) return std::nullopt;
+    return Failure{what, std::string("overlap ") + (o0 ? "yes" : "no") + " becomes " + (o1 ? "yes" : "no") +
+                             "; oracle: " + e0.truth_text};
+  }
+  if (!o0) return std::nullopt;
+  const Contact k0 = impl.collide(c0.a, c0.b), k1 = impl.collide(c1.a, c1.b);
+  const double d = std::fabs(k0.depth - k1.depth) / scale_of(c0);
+  if (d > 2 * tolerances(kId).depth + tolerances(kId).normal)
+    return Failure{std::string(what) + "-depth",
+                   fmt("depth differs by %.3g * scale; ", d) + describe(k0, o0) + " vs " + describe(k1, o1)};
+  return std::nullopt;
+}
+}  // namespace
+
+CheckResult check_symmetry(const CylinderObbCase& c, const CylinderObbImpl& impl) {
+  const bool ov = impl.overlap(c.a, c.b);
+  const Contact ct = impl.collide(c.a, c.b);
+  if (impl.overlap == kProductionCylinderObb.overlap) {
+    const Contact sw = collide(c.b, c.a);
+    const bool sov = overlap(c.b, c.a);
+    if (sov != ov || sw.hit != ct.hit || (ct.hit && !(sw.normal == -ct.normal)))
+      return Failure{"symmetry-argument-order", describe(ct, ov) + " vs swapped " + describe(sw, sov)};
+  }
+  if (!valid_case(c) || !obb_in_contract(c.b)) return std::nullopt;
+  if (auto f = same_answer("symmetry-caps-swapped", c, {{c.a.q, c.a.p, c.a.r}, c.b}, impl)) return f;
+  // The same box with its axes cycled (extents with them), and with one
+  // axis negated: exactly the same set.
+  const Obb& b = c.b;
+  const Obb cycled{b.c, {{b.axes[1], b.axes[2], b.axes[0]}}, Vec3{b.e.y, b.e.z, b.e.x}};
+  if (auto f = same_answer("symmetry-box-axes-cycled", c, {c.a, cycled}, impl)) return f;
+  const Obb negated{b.c, {{-b.axes[0], b.axes[1], b.axes[2]}}, b.e};
+  return same_answer("symmetry-box-axis-negated", c, {c.a, negated}, impl);
+}
+
+CheckResult check_metamorphic(const CylinderObbCase& c, int move, const CylinderObbImpl& impl) {
+  if (!valid_case(c) || !obb_in_contract(c.b)) return std::nullopt;
+  const moves::Move m{move};
+  if (!moves::applicable(c, move)) return std::nullopt;
+  const CylinderObbCase t{moves::apply(m, c.a), moves::apply(m, c.b)};
+  if (!valid_case(t) || !obb_in_contract(t.b)) return std::nullopt;
+  const bool ov = impl.overlap(c.a, c.b), ov2 = impl.overlap(t.a, t.b);
+  const Contact ct = impl.collide(c.a, c.b), ct2 = impl.collide(t.a, t.b);
+  const std::string what = std::string("metamorphic-") + move_name(move);
+  if (m.exact()) {
+    if (ov != ov2 || ct.hit != ct2.hit) return Failure{what, "verdict changed: " + describe(ct, ov) + " vs " + describe(ct2, ov2)};
+    if (ct.hit && !(m.pt(ct.point) == ct2.point && m.vec(ct.normal) == ct2.normal && m.len(ct.depth) == ct2.depth))
+      return Failure{what, "answer not bit-identical: " + describe(ct, ov) + " vs " + describe(ct2, ov2)};
+    return std::nullopt;
+  }
+  if (ov != ov2) {
+    const Evaluation e0 = evaluate(c, impl), e1 = evaluate(t, impl);
+    const double slack = move == 5 ? moves::rigid_slack(c.a) * std::max(e0.scale, e1.scale) : 0.0;
+    auto near = [&](const Evaluation& e) {
+      return e.near_boundary || std::fabs(e.signed_distance) <= tolerances(kId).verdict * e.scale + slack;
+    };
+    if (!near(e0) && !near(e1))
+      return Failure{what, "verdict changed outside the band: " + describe(ct, ov) + " vs " + describe(ct2, ov2)};
+  }
+  return std::nullopt;
+}
+
+CheckResult check_monotone(const CylinderObbCase& c, const CylinderObbImpl& impl) {
+  if (!valid_case(c) || !obb_in_contract(c.b) || !impl.overlap(c.a, c.b)) return std::nullopt;
+  // A superset never loses the overlap, except within the band of touching.
+  auto lost = [&](const CylinderObbCase& bigger) {
+    return !impl.overlap(bigger.a, bigger.b) && !evaluate(c, impl).near_boundary &&
+           !evaluate(bigger, impl).near_boundary;
+  };
+  const double rc[] = {std::nextafter(c.a.r, INFINITY), c.a.r * 2 + 1e-300};
+  for (double r : rc)
+    if (std::isfinite(r) && lost({Cylinder{c.a.p, c.a.q, r}, c.b}))
+      return Failure{"monotone-cylinder-radius", fmt("overlap with cylinder radius %.17g but not with %.17g", c.a.r, r)};
+  for (int i = 0; i < 3; ++i) {
+    Obb b = c.b;
+    b.e[i] = std::nextafter(b.e[i], INFINITY);
+    if (std::isfinite(b.e[i]) && lost({c.a, b}))
+      return Failure{"monotone-box-extent", fmt("overlap lost when extent %d grows from %.17g", i, c.b.e[i])};
+  }
+  // A longer cylinder: q moved outwards by q - p, only where that is exact
+  // (else the axis direction rounds and the result is no superset).
+  const Vec3 d = c.a.q - c.a.p, q2 = c.a.q + d;
+  if (is_finite(q2) && d + c.a.p == c.a.q && q2 - c.a.q == d && lost({Cylinder{c.a.p, q2, c.a.r}, c.b}))
+    return Failure{"monotone-cylinder-length", "overlap lost when the cylinder is extended beyond q"};
+  return std::nullopt;
+}
+
+CheckResult check_robust(const CylinderObbCase& c, const CylinderObbImpl& impl) {
+  const bool ov = impl.overlap(c.a, c.b);
+  const Contact ct = impl.collide(c.a, c.b);
+  if (!valid_case(c)) {
+    if (ov || ct.hit) return Failure{"robust-invalid-input", "invalid input reported a hit: " + describe(ct, ov)};
+    return std::nullopt;
+  }
+  if (ct.hit && !finite_contact(ct)) return Failure{"robust-finite-output", describe(ct, ov)};
+  if (ct.hit && !(std::fabs(length(ct.normal) - 1) <= 1e-12)) return Failure{"robust-unit-normal", describe(ct, ov)};
+  if (ov != ct.hit) return Failure{"robust-overlap-vs-collide", describe(ct, ov)};
+  return std::nullopt;
+}
+
+CheckResult check_all(const CylinderObbCase& c, const CylinderObbImpl& impl) { return all_checks(c, impl); }
+
+}  // namespace geomcheck
