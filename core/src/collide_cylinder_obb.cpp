@@ -366,6 +366,10 @@ void rim_edge_minima(const BoxSpace& s, Vec3 f1, Vec3 f2, double sg, Vec3 m, Vec
     // rotations of (cos, sin) from the bracket's start.
     double lo = 0, hi = width, flo = f0, fhi = f1v;
     double t = width * (f0 / (f0 - f1v));
+    // The overlap is stationary at the root, so an angle error e costs about
+    // e^2 / u_j^2 (n turns at a rate up to 1 / |u_j| near the tips): stop
+    // below 1e-10 |u_j| (quadratic convergence makes the last step tiny).
+    const double tol = 1e-10 * std::min(1.0, std::fabs(uj));
     double c = cs[i], s1 = sn[i];
     int side = 0;
     for (int it = 0; it < 40; ++it) {
@@ -387,7 +391,7 @@ void rim_edge_minima(const BoxSpace& s, Vec3 f1, Vec3 f2, double sg, Vec3 m, Vec
       double next = fp > 0 ? t - f / fp : lo + (hi - lo) * (flo / (flo - fhi));
       if (!(next > lo && next < hi)) next = lo + (hi - lo) * (flo / (flo - fhi));
       if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
-      if (std::fabs(next - t) < 0x1p-52 * std::max(width, 0x1p-40) || hi - lo < 0x1p-60) break;
+      if (std::fabs(next - t) < tol || hi - lo < 0x1p-60) break;
       t = next;
     }
     const Vec3 d = c * f1 + s1 * f2;
@@ -472,9 +476,31 @@ void search_rim_edges(const BoxSpace& s, Vec3 witness, Best& best) {
     const Vec3* v = vs[cd.cap];
     const double* h = hs[cd.cap];
     const int k = cd.k, l = k | (1 << cd.j);
+    const Vec3 ed = v[l] - v[k];
+    const Vec3 we = ed - dot(ed, s.u) * s.u, wk = v[k] - dot(v[k], s.u) * s.u;
+    const double we2 = dot(we, we);
+    auto rho2_at = [&](double t) {
+      const Vec3 w = wk + t * we;
+      return dot(w, w);
+    };
+    auto closest_to_axis = [&](double lo, double hi) { return we2 > 0 ? std::clamp(-dot(wk, we) / we2, lo, hi) : lo; };
+    const double dh = h[l] - h[k];
+    // The edge's part within bo of the cap plane must come within bo of
+    // the rim's radius (rho is convex along the edge: on that part its range
+    // is [the closest approach to the axis, the larger end]).
+    {
+      double ta = 0, tb = 1;
+      if (dh != 0) {
+        ta = std::clamp((-bo - h[k]) / dh, 0.0, 1.0);
+        tb = std::clamp((bo - h[k]) / dh, 0.0, 1.0);
+        if (ta > tb) std::swap(ta, tb);
+      }
+      const double rmin = std::sqrt(rho2_at(closest_to_axis(ta, tb)));
+      const double rmax = std::sqrt(std::max(rho2_at(ta), rho2_at(tb)));
+      if (rmin > s.r + bo || rmax < s.r - bo) continue;
+    }
     // The edge's part at least bo below the plane: a point of it inside the
     // side by bo rules the edge out.
-    const double dh = h[l] - h[k];
     double ua = 0, ub = 1;
     if (dh != 0) {
       const double t0 = (-bo - h[k]) / dh;
@@ -483,14 +509,7 @@ void search_rim_edges(const BoxSpace& s, Vec3 witness, Best& best) {
     } else if (h[k] > -bo) {
       ua = 1, ub = 0;
     }
-    if (ua <= ub && s.r >= bo) {
-      const Vec3 ed = v[l] - v[k];
-      const Vec3 we = ed - dot(ed, s.u) * s.u, wk = v[k] - dot(v[k], s.u) * s.u;
-      const double we2 = dot(we, we);
-      const double tm = we2 > 0 ? std::clamp(-dot(wk, we) / we2, ua, ub) : ua;
-      const Vec3 w = wk + tm * we;
-      if (dot(w, w) <= (s.r - bo) * (s.r - bo)) continue;
-    }
+    if (ua <= ub && s.r >= bo && rho2_at(closest_to_axis(ua, ub)) <= (s.r - bo) * (s.r - bo)) continue;
     rim_edge_minima(s, f1, f2, sg, m, v[k], cd.j, best);
   }
 }

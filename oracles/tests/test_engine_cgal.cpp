@@ -56,6 +56,7 @@
 #include <type_traits>
 #include <vector>
 
+#include "geomcheck/collide_cylinder_obb.hpp"
 #include "geomcheck/oracles/engine.hpp"
 
 using namespace geomcheck;
@@ -1274,6 +1275,64 @@ void expect_line_contact(const Shape& sa, const Shape& sb, const char* name) {
 }
 
 }  // namespace
+
+// =====================================================================================
+// (e) zero-radius cylinders: Cylinder{p, q, 0} is exactly the segment pq, so
+//     cylinder/box is a polyhedral pair CGAL decides exactly. Held to it: the
+//     engine's verdict on the cylinder shape, and production's
+//     overlap(Cylinder, Obb) outside its verdict band (1e-14 * scale).
+// =====================================================================================
+
+namespace {
+// A box of the grid whose axes are exactly orthonormal (production's
+// contract): signed permutations of the coordinate axes, either handedness.
+Obb grid_orthonormal_box(std::mt19937_64& g) {
+  Obb b = grid_box(g);
+  int perm[3] = {0, 1, 2};
+  std::shuffle(perm, perm + 3, g);
+  for (int i = 0; i < 3; ++i) b.axes[i] = axis_vec(perm[i], irand(g, 0, 1) ? 1.0 : -1.0);
+  return b;
+}
+}  // namespace
+
+TEST(EngineCgalCylinder0, ZeroRadiusCylinderAgainstBox) {
+  const std::uint64_t seed = 20261122;
+  std::mt19937_64 g(seed);
+  int checked = 0, meets = 0, prod_checked = 0;
+  for (int i = 0; i < 3000; ++i) {
+    const Obb box = grid_orthonormal_box(g);
+    // Segment ends: grid points, points on the box's boundary (touching),
+    // and boundary points moved by one ulp.
+    auto end = [&]() {
+      const int mode = irand(g, 0, 3);
+      if (mode == 0) return gvec(g, 2);
+      Vec3 p = box_face_point(box, g);
+      if (mode == 3) p = ulp_move(p, irand(g, 0, 2), irand(g, 0, 1) ? 1 : -1);
+      return p;
+    };
+    const Vec3 a = end(), b = end();
+    if (a == b) continue;
+    const Cylinder cyl{a, b, 0.0};
+    const bool truth = cgal_intersect(cgal_shape(segment_shape(a, b)), cgal_shape(box_shape(box)));
+    meets += truth;
+    const DistanceResult r = classify(make_shape(cyl), make_shape(box));
+    const std::string where = "seed " + std::to_string(seed) + " #" + std::to_string(i) + ": Cylinder{" + hex(a) + ", " +
+                              hex(b) + ", 0} vs Obb{c=" + hex(box.c) + ", e=" + hex(box.e) + "}";
+    ASSERT_NE(r.verdict, Verdict::Undecided) << where;
+    ASSERT_EQ(truth, r.verdict != Verdict::Separated) << where << " engine " << to_string(r.verdict);
+    ++checked;
+    const double scale = std::max({max_abs(a), max_abs(b), max_abs(box.c), max_abs(box.e), length(b - a)});
+    const Q band = to_q(1e-14) * to_q(scale);
+    if (r.distance.lo > band || r.distance.hi < -band) {
+      ++prod_checked;
+      ASSERT_EQ(truth, overlap(cyl, box)) << where << " production disagrees with CGAL outside the band";
+    }
+  }
+  std::printf("[EngineCgalCylinder0] seed %llu: %d pairs, %d meeting; production checked outside the band on %d\n",
+              static_cast<unsigned long long>(seed), checked, meets, prod_checked);
+  EXPECT_GT(meets, checked / 5);
+  EXPECT_LT(meets, checked * 4 / 5);
+}
 
 TEST(EngineCgalHand, PointOnSegment) {
   expect_line_contact(segment_shape({0x1.1bdf4p+0, 0x1.d6584p-1, 0x1.9587ep-1}, {-0x1.4c64fp+0, 0x1.168c2p-1, 0x1.409b3p+0}),
