@@ -1304,10 +1304,10 @@ TEST(EngineCgalCylinder0, ZeroRadiusCylinderAgainstBox) {
     // Segment ends: grid points, points on the box's boundary (touching),
     // and boundary points moved by one ulp.
     auto end = [&]() {
-      const int mode = irand(g, 0, 3);
-      if (mode == 0) return gvec(g, 2);
+      const int mode = irand(g, 0, 6);
+      if (mode <= 3) return gvec(g, 3);
       Vec3 p = box_face_point(box, g);
-      if (mode == 3) p = ulp_move(p, irand(g, 0, 2), irand(g, 0, 1) ? 1 : -1);
+      if (mode == 6) p = ulp_move(p, irand(g, 0, 2), irand(g, 0, 1) ? 1 : -1);
       return p;
     };
     const Vec3 a = end(), b = end();
