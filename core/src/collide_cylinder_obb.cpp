@@ -294,11 +294,12 @@ const AngleTable& angle_table() {
   return t;
 }
 
-// cos and sin of 0 <= t < 0.2 by their Taylor series (error below 1e-17).
+// cos and sin of |t| < 0.2 by their Taylor series to t^13 (error below
+// 1e-17; constant reciprocal factorials, no division).
 void rotation(double t, double& c, double& sn) {
   const double t2 = t * t;
-  c = 1 - t2 / 2 * (1 - t2 / 12 * (1 - t2 / 30 * (1 - t2 / 56 * (1 - t2 / 90 * (1 - t2 / 132)))));
-  sn = t * (1 - t2 / 6 * (1 - t2 / 20 * (1 - t2 / 42 * (1 - t2 / 72 * (1 - t2 / 110 * (1 - t2 / 156))))));
+  c = 1 + t2 * (-1.0 / 2 + t2 * (1.0 / 24 + t2 * (-1.0 / 720 + t2 * (1.0 / 40320 + t2 * (-1.0 / 3628800 + t2 * (1.0 / 479001600))))));
+  sn = t * (1 + t2 * (-1.0 / 6 + t2 * (1.0 / 120 + t2 * (-1.0 / 5040 + t2 * (1.0 / 362880 + t2 * (-1.0 / 39916800 + t2 * (1.0 / 6227020800)))))));
 }
 
 // Minima of the overlap along n(theta) on the patch of the rim of cap C
@@ -328,29 +329,43 @@ void rim_edge_minima(const BoxSpace& s, Vec3 f1, Vec3 f2, double sg, Vec3 m, Vec
   for (int i = 0; i < kAngles; ++i) th[n] = 2 * kPi * i / kAngles, cs[n] = tab.c[i], sn[n] = tab.s[i], ++n;
   const double tipn = std::sqrt(fa * fa + fb * fb);
   if (std::fabs(uj) < 0.125 && tipn > 0) {
+    // The ladder around each tip, in increasing angle, then merged with the
+    // uniform angles (both lists sorted; the merge is linear).
+    double lt[4 * 24], lc[4 * 24], ls[4 * 24];
+    int nl = 0;
     for (double side : {1.0, -1.0}) {
       const double cb = side * fb / tipn, sb = -side * fa / tipn;
       const double tb = std::atan2(sb, cb);
-      for (double dl = std::max(std::fabs(uj), 0x1p-60) * 0.25; dl < 0.1 && n + 2 <= kMax; dl *= 4) {
-        for (double sgn : {1.0, -1.0}) {
-          double cd, sd;
-          rotation(dl, cd, sd);
-          sd *= sgn;
-          cs[n] = cb * cd - sb * sd, sn[n] = sb * cd + cb * sd;
-          double t = tb + sgn * dl;
-          if (t < 0) t += 2 * kPi;
-          if (t >= 2 * kPi) t -= 2 * kPi;
-          th[n] = t;
-          ++n;
-        }
+      double dls[24];
+      int nd = 0;
+      for (double dl = std::max(std::fabs(uj), 0x1p-60) * 0.25; dl < 0.1 && nd < 12; dl *= 4) dls[nd++] = dl;
+      for (int q = 2 * nd - 1; q >= 0; --q) {  // -dl (largest first) ... +dl (smallest first)
+        const double dl = q >= nd ? -dls[q - nd] : dls[nd - 1 - q];
+        double cd, sd;
+        rotation(dl, cd, sd);
+        double t = tb + dl;
+        if (t < 0) t += 2 * kPi;
+        if (t >= 2 * kPi) t -= 2 * kPi;
+        lt[nl] = t, lc[nl] = cb * cd - sb * sd, ls[nl] = sb * cd + cb * sd, ++nl;
       }
     }
-    for (int i = 1; i < n; ++i)
-      for (int q = i; q > 0 && th[q] < th[q - 1]; --q) {
-        std::swap(th[q], th[q - 1]);
-        std::swap(cs[q], cs[q - 1]);
-        std::swap(sn[q], sn[q - 1]);
+    // Sort the ladder (at most 48 values, already two sorted runs, each
+    // possibly wrapped at 2 pi): insertion sort is nearly linear here.
+    for (int i = 1; i < nl; ++i)
+      for (int q = i; q > 0 && lt[q] < lt[q - 1]; --q) {
+        std::swap(lt[q], lt[q - 1]);
+        std::swap(lc[q], lc[q - 1]);
+        std::swap(ls[q], ls[q - 1]);
       }
+    double mt[kMax], mc[kMax], ms[kMax];
+    int a = 0, b = 0, m = 0;
+    while (a < n || b < nl) {
+      if (b >= nl || (a < n && th[a] <= lt[b])) mt[m] = th[a], mc[m] = cs[a], ms[m] = sn[a], ++a;
+      else mt[m] = lt[b], mc[m] = lc[b], ms[m] = ls[b], ++b;
+      ++m;
+    }
+    n = m;
+    for (int i = 0; i < n; ++i) th[i] = mt[i], cs[i] = mc[i], sn[i] = ms[i];
   }
   double fs[kMax];
   for (int i = 0; i < n; ++i) fs[i] = fval(cs[i], sn[i]);
