@@ -272,7 +272,10 @@ std::string hist_svg(const Series& s) {
 int campaign_cases(const CampaignOptions& opt, const char* id) {
   if (opt.cases > 0) return opt.cases;
   const std::string q(id);
-  return q == "collide_cylinder_capsule" || q == "sweep_sphere_cylinder" || q == "collide_cylinder_obb" ? 10000 : 100000;
+  return q == "collide_cylinder_capsule" || q == "sweep_sphere_cylinder" || q == "collide_cylinder_obb" ||
+                 q == "collide_cylinder_triangle"
+             ? 10000
+             : 100000;
 }
 
 int run_campaign(const CampaignOptions& opt) {

@@ -11,7 +11,7 @@ std::string v3(Vec3 v) {
   return b;
 }
 
-/// A collide answer (cylinder/sphere, cylinder/capsule); `note` follows the depth.
+/// A collide answer (cylinder against a sphere, capsule, box or triangle); `note` follows the depth.
 PeerAnswer contact_answer(const oracles::PeerContact& r, const char* note = "") {
   PeerAnswer p;
   p.supported = true;
@@ -67,6 +67,11 @@ PeerAnswer peer(const CylinderCapsuleCase& c) {
 
 PeerAnswer peer(const CylinderObbCase& c) {
   return contact_answer(oracles::fcl_collide(c.a, c.b), " (libccd MPR estimate, not the minimum)");
+}
+
+PeerAnswer peer(const CylinderTriangleCase& c) {
+  return contact_answer(oracles::fcl_collide(c.a, c.b),
+                        " (FCL's mesh narrow phase shapeTriangleIntersect; libccd MPR estimate, not the minimum)");
 }
 
 PeerAnswer peer(const SweepCylinderCase& c) {

@@ -26,5 +26,8 @@ PeerAnswer peer(const CylinderCapsuleCase& c);
 PeerAnswer peer(const SweepCylinderCase& c);
 /// fcl_collide(Cylinder, Obb): libccd's MPR on FCL's box, depth not the minimum (see fcl_adapter.hpp).
 PeerAnswer peer(const CylinderObbCase& c);
+/// fcl_collide(Cylinder, Triangle): FCL's per-triangle mesh narrow phase (shapeTriangleIntersect;
+/// fcl::collide has no cylinder/triangle pair), libccd's MPR, depth not the minimum (see fcl_adapter.hpp).
+PeerAnswer peer(const CylinderTriangleCase& c);
 
 }  // namespace geomcheck

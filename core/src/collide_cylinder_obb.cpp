@@ -7,6 +7,7 @@
 
 #include "geomcheck/detail/frame.hpp"
 #include "geomcheck/detail/obb_stages.hpp"
+#include "geomcheck/detail/rim_edge.hpp"
 
 namespace geomcheck {
 
@@ -260,273 +261,46 @@ double overlap_along(const BoxSpace& s, Vec3 n) {
 }
 
 struct Best {
+  const BoxSpace* s;
   double o = std::numeric_limits<double>::infinity();
-  Vec3 n;
-  void consider(const BoxSpace& s, Vec3 cand) {
-    const double o2 = overlap_along(s, cand);
+  Vec3 n{0, 0, 1};
+  void consider(Vec3 cand) {
+    const double o2 = overlap_along(*s, cand);
     if (o2 < o) o = o2, n = cand;
   }
 };
 
-// The rim x box-edge patches. For the rim of the cap at C (outward m = su,
-// s = +-1) and a box edge along axis j, the patch normal at rim angle theta
-// (d = cos f1 + sin f2, radial) is perpendicular to the rim tangent and to
-// the edge: n = (|u_j| d + |d_j| m) / sqrt(u_j^2 + d_j^2), in the rim's
-// normal cone where s u_j d_j <= 0 (elsewhere the family has no patch). A
-// minimal translation on such a patch presses the edge into the rim: the
-// edge passes within the penetration depth (<= the best overlap so far) of
-// the cap plane, so only such edges are searched, by Newton steps (central
-// differences) on the overlap along n(theta) from the angle of the edge's
-// point nearest the plane.
-constexpr int kAngles = 32;
-constexpr double kPi = 3.14159265358979323846;
-struct AngleTable {
-  double c[kAngles], s[kAngles], c2[kAngles], s2[kAngles];
-  AngleTable() {
-    for (int i = 0; i < kAngles; ++i) {
-      const double th = 2 * kPi * i / kAngles;
-      c[i] = std::cos(th), s[i] = std::sin(th), c2[i] = std::cos(2 * th), s2[i] = std::sin(2 * th);
-    }
+// The rim x box-edge patches (detail/rim_edge.hpp): the box's 8 vertices
+// and 12 edges (along the box axes), the witness and the centre as inner
+// points.
+struct BoxEdges {
+  int edge[12][2];
+  Vec3 dir[12];
+  BoxEdges() {
+    int n = 0;
+    for (int k = 0; k < 8; ++k)
+      for (int j = 0; j < 3; ++j) {
+        if (k & (1 << j)) continue;
+        edge[n][0] = k, edge[n][1] = k | (1 << j);
+        dir[n] = Vec3{0, 0, 0};
+        dir[n][j] = 1;
+        ++n;
+      }
   }
 };
-const AngleTable& angle_table() {
-  static const AngleTable t;
-  return t;
-}
 
-// cos and sin of |t| < 0.2 by their Taylor series to t^13 (error below
-// 1e-17; constant reciprocal factorials, no division).
-void rotation(double t, double& c, double& sn) {
-  const double t2 = t * t;
-  c = 1 + t2 * (-1.0 / 2 + t2 * (1.0 / 24 + t2 * (-1.0 / 720 + t2 * (1.0 / 40320 + t2 * (-1.0 / 3628800 + t2 * (1.0 / 479001600))))));
-  sn = t * (1 + t2 * (-1.0 / 6 + t2 * (1.0 / 120 + t2 * (-1.0 / 5040 + t2 * (1.0 / 362880 + t2 * (-1.0 / 39916800 + t2 * (1.0 / 6227020800)))))));
-}
-
-// Minima of the overlap along n(theta) on the patch of the rim of cap C
-// (outward m = sg u) and the box edge from vertex offset v (from C) along
-// box axis j. The slope of that overlap is a positive multiple (in the rim's
-// normal cone) of f(theta) = ((R(theta) - vertex) without its edge
-// component) . t(theta) = K1 sin 2theta + K2 cos 2theta + A1 sin theta -
-// A2 cos theta (A = v without its edge component, in the frame f1, f2), so
-// its minima are the roots where f turns from - to +. f has at most four
-// roots: bracketed on sample angles (below), refined by Newton kept inside the
-// bracket, as rotations of (cos, sin) from its start.
-void rim_edge_minima(const BoxSpace& s, Vec3 f1, Vec3 f2, double sg, Vec3 m, Vec3 v, int j, Best& best) {
-  const double uj = s.u[j];
-  Vec3 vj = v;
-  vj[j] = 0;
-  const double A1 = dot(vj, f1), A2 = dot(vj, f2), fa = f1[j], fb = f2[j];
-  const double K1 = -0.5 * s.r * (fb * fb - fa * fa), K2 = -s.r * fa * fb;
-  auto fval = [&](double c, double sn) { return K1 * (2 * sn * c) + K2 * (c * c - sn * sn) + A1 * sn - A2 * c; };
-  // Sample angles: 32 uniform ones; when the edge is nearly perpendicular
-  // to the axis (|u_j| small) the rim's projection along the edge is a thin
-  // ellipse, whose normals from a point meet it twice within about |u_j| of
-  // a tip (d_j = 0): there, also a geometric ladder of angles either side.
-  constexpr int kMax = kAngles + 4 * 24;
-  double th[kMax], cs[kMax], sn[kMax];
-  int n = 0;
-  const AngleTable& tab = angle_table();
-  for (int i = 0; i < kAngles; ++i) th[n] = 2 * kPi * i / kAngles, cs[n] = tab.c[i], sn[n] = tab.s[i], ++n;
-  const double tipn = std::sqrt(fa * fa + fb * fb);
-  if (std::fabs(uj) < 0.125 && tipn > 0) {
-    // The ladder around each tip, in increasing angle, then merged with the
-    // uniform angles (both lists sorted; the merge is linear).
-    double lt[4 * 24], lc[4 * 24], ls[4 * 24];
-    int nl = 0;
-    for (double side : {1.0, -1.0}) {
-      const double cb = side * fb / tipn, sb = -side * fa / tipn;
-      const double tb = std::atan2(sb, cb);
-      double dls[24];
-      int nd = 0;
-      for (double dl = std::max(std::fabs(uj), 0x1p-60) * 0.25; dl < 0.1 && nd < 12; dl *= 4) dls[nd++] = dl;
-      for (int q = 2 * nd - 1; q >= 0; --q) {  // -dl (largest first) ... +dl (smallest first)
-        const double dl = q >= nd ? -dls[q - nd] : dls[nd - 1 - q];
-        double cd, sd;
-        rotation(dl, cd, sd);
-        double t = tb + dl;
-        if (t < 0) t += 2 * kPi;
-        if (t >= 2 * kPi) t -= 2 * kPi;
-        lt[nl] = t, lc[nl] = cb * cd - sb * sd, ls[nl] = sb * cd + cb * sd, ++nl;
-      }
-    }
-    // Sort the ladder (at most 48 values, already two sorted runs, each
-    // possibly wrapped at 2 pi): insertion sort is nearly linear here.
-    for (int i = 1; i < nl; ++i)
-      for (int q = i; q > 0 && lt[q] < lt[q - 1]; --q) {
-        std::swap(lt[q], lt[q - 1]);
-        std::swap(lc[q], lc[q - 1]);
-        std::swap(ls[q], ls[q - 1]);
-      }
-    double mt[kMax], mc[kMax], ms[kMax];
-    int a = 0, b = 0, m = 0;
-    while (a < n || b < nl) {
-      if (b >= nl || (a < n && th[a] <= lt[b])) mt[m] = th[a], mc[m] = cs[a], ms[m] = sn[a], ++a;
-      else mt[m] = lt[b], mc[m] = lc[b], ms[m] = ls[b], ++b;
-      ++m;
-    }
-    n = m;
-    for (int i = 0; i < n; ++i) th[i] = mt[i], cs[i] = mc[i], sn[i] = ms[i];
-  }
-  double fs[kMax];
-  for (int i = 0; i < n; ++i) fs[i] = fval(cs[i], sn[i]);
-  for (int i = 0; i < n; ++i) {
-    const int i1 = i + 1 < n ? i + 1 : 0;
-    const double f0 = fs[i], f1v = fs[i1];
-    if (!(f0 < 0 && f1v >= 0)) continue;
-    // Roots outside the rim's normal cone carry no patch.
-    if (sg * uj * (cs[i] * fa + sn[i] * fb) > 0 && sg * uj * (cs[i1] * fa + sn[i1] * fb) > 0) continue;
-    double width = th[i1] - th[i];
-    if (width <= 0) width += 2 * kPi;
-    // Newton kept inside the bracket (Illinois where it leaves), as
-    // rotations of (cos, sin) from the bracket's start.
-    double lo = 0, hi = width, flo = f0, fhi = f1v;
-    double t = width * (f0 / (f0 - f1v));
-    // The overlap is stationary at the root, so an angle error e costs about
-    // e^2 / u_j^2 (n turns at a rate up to 1 / |u_j| near the tips): stop
-    // below 1e-10 |u_j| (quadratic convergence makes the last step tiny).
-    const double tol = 1e-10 * std::min(1.0, std::fabs(uj));
-    double c = cs[i], s1 = sn[i];
-    int side = 0;
-    for (int it = 0; it < 40; ++it) {
-      double cd, sd;
-      rotation(t, cd, sd);
-      c = cs[i] * cd - sn[i] * sd, s1 = sn[i] * cd + cs[i] * sd;
-      const double c2 = c * c - s1 * s1, s2 = 2 * s1 * c;
-      const double f = K1 * s2 + K2 * c2 + A1 * s1 - A2 * c;
-      const double fp = 2 * K1 * c2 - 2 * K2 * s2 + A1 * c + A2 * s1;
-      if (f < 0) {
-        lo = t, flo = f;
-        if (side == -1) fhi *= 0.5;
-        side = -1;
-      } else {
-        hi = t, fhi = f;
-        if (side == 1) flo *= 0.5;
-        side = 1;
-      }
-      double next = fp > 0 ? t - f / fp : lo + (hi - lo) * (flo / (flo - fhi));
-      if (!(next > lo && next < hi)) next = lo + (hi - lo) * (flo / (flo - fhi));
-      if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
-      if (std::fabs(next - t) < tol || hi - lo < 0x1p-60) break;
-      t = next;
-    }
-    const Vec3 d = c * f1 + s1 * f2;
-    const double dj = d[j];
-    if (sg * uj * dj > 0) continue;  // outside the rim's normal cone: no patch
-    best.consider(s, (1.0 / std::sqrt(uj * uj + dj * dj)) * (std::fabs(uj) * d + std::fabs(dj) * m));
-  }
-}
-
-// The rim x box-edge patches. A minimal translation n on the patch of rim
-// point R and edge E moves the box by the penetration depth (<= best.o, the
-// least overlap so far) to touch R with a point of E, so E passes within
-// best.o of the rim circle: the distance from a point y to the circle is
-// sqrt(height^2 + (rho - r)^2), at least max(|height|, |rho - r|), which
-// bounds the edge from below by (min |height|) and (min |rho - r|) over
-// the edge. And for n = a m + b d in the rim's normal cone (a, b >= 0,
-// a + b >= 1) and any box point y, the overlap along n is at least
-// a (depth of y below the cap plane) + b (r - rho(y)): a box point at least
-// best.o below the plane and best.o inside the side rules the patch out
-// (the witness, the box centre and the vertices for the whole rim; the
-// edge's own points for the edge). Edges are searched in increasing order
-// of their bound, which lowers best.o early.
 void search_rim_edges(const BoxSpace& s, Vec3 witness, Best& best) {
-  const Vec3 f1 = any_perpendicular(s.u);
-  const Vec3 f2 = cross(s.u, f1);
-  struct Cand {
-    double bound;
-    int cap, k, j;
-  };
-  Cand cands[24];
-  int nc = 0;
-  double hs[2][8];
-  Vec3 vs[2][8];
-  for (int cap = 0; cap < 2; ++cap) {
-    const Vec3 C = cap ? s.Q : s.P;
-    const Vec3 m = (cap ? 1.0 : -1.0) * s.u;
-    auto deep = [&](Vec3 w, double bo) {  // w from C: at least bo below the plane and inside the side
-      const double below = -dot(w, m);
-      if (!(below >= bo) || !(s.r >= bo)) return false;
-      const Vec3 rad = w - dot(w, s.u) * s.u;
-      return dot(rad, rad) <= (s.r - bo) * (s.r - bo);
-    };
-    bool out = deep(witness - C, best.o) || deep(-C, best.o);
-    for (int k = 0; k < 8; ++k) {
-      vs[cap][k] = s.vertex(k) - C;
-      hs[cap][k] = dot(vs[cap][k], m);
-      out = out || deep(vs[cap][k], best.o);
-    }
-    if (out) continue;
-    const double* h = hs[cap];
-    const Vec3* v = vs[cap];
-    for (int k = 0; k < 8; ++k) {
-      for (int j = 0; j < 3; ++j) {
-        if ((k & (1 << j)) || s.u[j] == 0) continue;  // u_j == 0: the family is the cap normal
-        const int l = k | (1 << j);
-        const double hlo = std::min(h[k], h[l]), hhi = std::max(h[k], h[l]);
-        const double hgap = hlo > 0 ? hlo : (hhi < 0 ? -hhi : 0.0);
-        if (hgap > best.o) continue;
-        // rho along the edge is convex: its range is [the closest approach
-        // to the axis (clamped), the larger end].
-        const Vec3 ed = v[l] - v[k];
-        const Vec3 we = ed - dot(ed, s.u) * s.u, wk = v[k] - dot(v[k], s.u) * s.u;
-        const double we2 = dot(we, we);
-        const double tc = we2 > 0 ? std::clamp(-dot(wk, we) / we2, 0.0, 1.0) : 0.0;
-        const Vec3 wc = wk + tc * we, wl = wk + we;
-        const double rmin = std::sqrt(dot(wc, wc)), rmax = std::sqrt(std::max(dot(wk, wk), dot(wl, wl)));
-        const double rgap = rmin > s.r ? rmin - s.r : (rmax < s.r ? s.r - rmax : 0.0);
-        const double bound = std::max(hgap, rgap);
-        if (bound > best.o) continue;
-        cands[nc++] = {bound, cap, k, j};
-      }
-    }
-  }
-  for (int i = 1; i < nc; ++i)
-    for (int q = i; q > 0 && cands[q].bound < cands[q - 1].bound; --q) std::swap(cands[q], cands[q - 1]);
-  for (int i = 0; i < nc; ++i) {
-    const Cand& cd = cands[i];
-    const double bo = best.o;
-    if (cd.bound > bo) break;
-    const double sg = cd.cap ? 1.0 : -1.0;
-    const Vec3 m = sg * s.u;
-    const Vec3* v = vs[cd.cap];
-    const double* h = hs[cd.cap];
-    const int k = cd.k, l = k | (1 << cd.j);
-    const Vec3 ed = v[l] - v[k];
-    const Vec3 we = ed - dot(ed, s.u) * s.u, wk = v[k] - dot(v[k], s.u) * s.u;
-    const double we2 = dot(we, we);
-    auto rho2_at = [&](double t) {
-      const Vec3 w = wk + t * we;
-      return dot(w, w);
-    };
-    auto closest_to_axis = [&](double lo, double hi) { return we2 > 0 ? std::clamp(-dot(wk, we) / we2, lo, hi) : lo; };
-    const double dh = h[l] - h[k];
-    // The edge's part within bo of the cap plane must come within bo of
-    // the rim's radius (rho is convex along the edge: on that part its range
-    // is [the closest approach to the axis, the larger end]).
-    {
-      double ta = 0, tb = 1;
-      if (dh != 0) {
-        ta = std::clamp((-bo - h[k]) / dh, 0.0, 1.0);
-        tb = std::clamp((bo - h[k]) / dh, 0.0, 1.0);
-        if (ta > tb) std::swap(ta, tb);
-      }
-      const double rmin = std::sqrt(rho2_at(closest_to_axis(ta, tb)));
-      const double rmax = std::sqrt(std::max(rho2_at(ta), rho2_at(tb)));
-      if (rmin > s.r + bo || rmax < s.r - bo) continue;
-    }
-    // The edge's part at least bo below the plane: a point of it inside the
-    // side by bo rules the edge out.
-    double ua = 0, ub = 1;
-    if (dh != 0) {
-      const double t0 = (-bo - h[k]) / dh;
-      if (dh > 0) ub = std::min(ub, t0);
-      else ua = std::max(ua, t0);
-    } else if (h[k] > -bo) {
-      ua = 1, ub = 0;
-    }
-    if (ua <= ub && s.r >= bo && rho2_at(closest_to_axis(ua, ub)) <= (s.r - bo) * (s.r - bo)) continue;
-    rim_edge_minima(s, f1, f2, sg, m, v[k], cd.j, best);
-  }
+  static const BoxEdges edges;
+  detail::RimFrame fr;
+  fr.u = s.u;
+  fr.r = s.r;
+  fr.f1 = any_perpendicular(s.u);
+  fr.f2 = cross(s.u, fr.f1);
+  Vec3 vertex[8];
+  for (int k = 0; k < 8; ++k) vertex[k] = s.vertex(k);
+  const Vec3 inner[2] = {witness, Vec3{0, 0, 0}};
+  const detail::RimPolytope poly{vertex, 8, edges.edge, edges.dir, 12, inner, 2};
+  detail::search_rim_edges(fr, s.P, s.Q, poly, best);
 }
 
 Contact collide_scaled(const Cylinder& cyl, const Obb& box, detail::ObbCapStage stage) {
@@ -536,19 +310,19 @@ Contact collide_scaled(const Cylinder& cyl, const Obb& box, detail::ObbCapStage 
   if (!v.hit) return out;
   out.hit = true;
   out.point = box.c + s.from_box(v.point);
-  Best best;
-  best.consider(s, s.u);
-  best.consider(s, -s.u);
+  Best best{&s};
+  best.consider(s.u);
+  best.consider(-s.u);
   for (int i = 0; i < 3; ++i) {
     Vec3 a{0, 0, 0};
     a[i] = 1;
-    best.consider(s, a);
-    best.consider(s, -a);
+    best.consider(a);
+    best.consider(-a);
     const Vec3 x = cross(s.u, a);
     if (max_abs(x) > 0) {
       const Vec3 w = detail::normalized(x);
-      best.consider(s, w);
-      best.consider(s, -w);
+      best.consider(w);
+      best.consider(-w);
     }
   }
   // The side x vertex patches: a vertex whose radial direction is the
@@ -560,7 +334,7 @@ Contact collide_scaled(const Cylinder& cyl, const Obb& box, detail::ObbCapStage 
     if (z < -best.o || z > s.len + best.o) continue;
     const double rho = detail::safe_length(w - z * s.u);
     if (rho < s.r - best.o || rho > s.r + best.o) continue;
-    best.consider(s, detail::unit_perpendicular_part(w, s.u));
+    best.consider(detail::unit_perpendicular_part(w, s.u));
   }
   search_rim_edges(s, v.point, best);
   const Vec3 n = s.from_box(best.n);

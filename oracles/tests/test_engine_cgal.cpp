@@ -57,6 +57,7 @@
 #include <vector>
 
 #include "geomcheck/collide_cylinder_obb.hpp"
+#include "geomcheck/collide_cylinder_triangle.hpp"
 #include "geomcheck/oracles/engine.hpp"
 
 using namespace geomcheck;
@@ -1330,6 +1331,70 @@ TEST(EngineCgalCylinder0, ZeroRadiusCylinderAgainstBox) {
   }
   std::printf("[EngineCgalCylinder0] seed %llu: %d pairs, %d meeting; production checked outside the band on %d\n",
               static_cast<unsigned long long>(seed), checked, meets, prod_checked);
+  EXPECT_GT(meets, checked / 5);
+  EXPECT_LT(meets, checked * 4 / 5);
+}
+
+// The same for triangles (collide_cylinder_triangle): a zero-radius cylinder
+// is its axis segment; grid triangles, some made degenerate (two equal
+// vertices, a vertex at the midpoint of the opposite edge), against segments
+// whose ends are grid points, points of the triangle, or such points moved
+// by one ulp. CGAL decides segment-triangle intersection exactly.
+TEST(EngineCgalCylinder0, ZeroRadiusCylinderAgainstTriangle) {
+  const std::uint64_t seed = 20261122;
+  std::mt19937_64 g(seed);
+  int checked = 0, meets = 0, prod_checked = 0, undecided = 0;
+  for (int i = 0; i < 1500; ++i) {
+    Triangle t = grid_triangle(g);
+    const int deg = irand(g, 0, 9);
+    if (deg == 0) t.c = t.b;
+    if (deg == 1) t.c = 0.5 * (t.a + t.b);
+    auto end = [&]() {
+      const int mode = irand(g, 0, 6);
+      if (mode <= 2) return gvec(g, 2);
+      Vec3 p = bary_point(t, g);
+      if (mode == 6) p = ulp_move(p, irand(g, 0, 2), irand(g, 0, 1) ? 1 : -1);
+      return p;
+    };
+    const Vec3 a = end(), b = end();
+    if (a == b) continue;
+    const Cylinder cyl{a, b, 0.0};
+    const bool truth = cgal_intersect(cgal_shape(segment_shape(a, b)), cgal_shape(triangle_shape(t.a, t.b, t.c)));
+    meets += truth;
+    DistanceResult r = classify(make_shape(cyl), make_shape(t));
+    if (r.verdict == Verdict::Undecided) {
+      EngineOptions opt;
+      opt.rel_width = 1e-20;
+      r = classify(make_shape(cyl), make_shape(t), opt);
+    }
+    const std::string where = "seed " + std::to_string(seed) + " #" + std::to_string(i) + ": Cylinder{" + hex(a) + ", " +
+                              hex(b) + ", 0} vs Triangle{" + hex(t.a) + ", " + hex(t.b) + ", " + hex(t.c) + "}";
+    const double scale = std::max({max_abs(a), max_abs(b), max_abs(t.a), max_abs(t.b), max_abs(t.c), length(b - a)});
+    const Q band = to_q(1e-14) * to_q(scale);
+    if (r.verdict == Verdict::Undecided) {
+      // The engine does not decide a zero-radius cylinder against a
+      // degenerate triangle (two segments: their Minkowski difference is
+      // flat). It must say so only there; production is then held to
+      // CGAL's exact squared distance.
+      ASSERT_TRUE(t.c == t.b || t.c == 0.5 * (t.a + t.b)) << where << " undecided: " << to_string(r.distance);
+      ++undecided;
+      const Q d2 = decomposed_d2(cgal_shape(segment_shape(a, b)), cgal_shape(triangle_shape(t.a, t.b, t.c)));
+      if (d2 > band * band) {
+        ASSERT_FALSE(overlap(cyl, t)) << where << " production overlaps; CGAL distance^2 " << to_double(d2);
+      }
+      continue;
+    }
+    ASSERT_EQ(truth, r.verdict != Verdict::Separated) << where << " engine " << to_string(r.verdict);
+    ++checked;
+    if (r.distance.lo > band || r.distance.hi < -band) {
+      ++prod_checked;
+      ASSERT_EQ(truth, overlap(cyl, t)) << where << " production disagrees with CGAL outside the band";
+    }
+  }
+  std::printf("[EngineCgalCylinder0] triangles, seed %llu: %d pairs, %d meeting; production checked outside the band on "
+              "%d; engine undecided (touching within the band) on %d\n",
+              static_cast<unsigned long long>(seed), checked, meets, prod_checked, undecided);
+  EXPECT_LT(undecided, checked / 10);
   EXPECT_GT(meets, checked / 5);
   EXPECT_LT(meets, checked * 4 / 5);
 }

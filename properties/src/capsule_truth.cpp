@@ -65,6 +65,21 @@ CapsuleTruth capsule_truth(const oracle::ConvexShape& cyl, const QVec& p, const 
   return t;
 }
 
+PolytopeTruth polytope_truth(const oracle::ConvexShape& cyl, const oracle::ConvexShape& shape, const Q& band) {
+  PolytopeTruth t;
+  oracle::EngineOptions opt;
+  opt.certificates = false;
+  oracle::DistanceResult d = oracle::classify(cyl, shape, opt);
+  if (d.verdict == Verdict::Separated || (d.verdict == Verdict::Overlapping && d.distance.hi >= -2 * band)) {
+    opt.rel_width = 1e-20;
+    d = oracle::classify(cyl, shape, opt);
+  }
+  t.verdict = d.verdict;
+  t.signed_distance = d.verdict == Verdict::Touching ? oracle::point(Q(0)) : d.distance;
+  t.text = std::string(oracle::to_string(t.verdict)) + " signed_distance=" + oracle::to_string(t.signed_distance);
+  return t;
+}
+
 double nearest_to_zero(const QInterval& x, double scale) {
   // A wide enclosure (deep contacts are not refined) is reported by its end
   // nearest to zero: a certified bound, where the midpoint would be a guess.

@@ -1,6 +1,6 @@
 // geomcheck — the exact answer for a capsule (or a swept ball: the capsule
-// of its path) against a cylinder, through the certified engine (internal
-// to properties/).
+// of its path) or a polytope (box, triangle) against a cylinder, through the
+// certified engine (internal to properties/).
 #pragma once
 
 #include <string>
@@ -29,6 +29,22 @@ struct CapsuleTruth {
 /// verdict is not decided by that distance, the capsule itself.
 CapsuleTruth capsule_truth(const oracle::ConvexShape& cylinder, const oracle::QVec& p, const oracle::QVec& q,
                            const oracle::Q& r, const oracle::Q& band);
+
+/// The truth of a polytope (box, triangle) against a cylinder.
+struct PolytopeTruth {
+  oracle::Verdict verdict = oracle::Verdict::Undecided;
+  /// Certified signed distance (exactly 0 when touching): to 1e-20 * scale
+  /// when separated, or overlapping with a first enclosure reaching above
+  /// -2 band; a deeper overlap keeps that first (wide) enclosure.
+  oracle::QInterval signed_distance;
+  std::string text;  ///< human readable
+};
+
+/// The engine's answer for `shape` against the cylinder: the verdict, and
+/// the signed distance refined to 1e-20 * scale where it can decide the band
+/// (always when separated: GJK to convergence is cheap; when overlapping only
+/// if the depth can still be within the band, since that runs EPA).
+PolytopeTruth polytope_truth(const oracle::ConvexShape& cyl, const oracle::ConvexShape& shape, const oracle::Q& band);
 
 /// The double reported for a signed-distance enclosure: its midpoint when
 /// narrow (<= 1e-6 * scale), else its end nearest to zero (a certified bound).

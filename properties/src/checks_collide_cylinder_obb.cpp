@@ -27,31 +27,6 @@ double scale_of(const CylinderObbCase& c) {
   return m > 0 ? m : 1.0;
 }
 
-// The engine's answer for the box against the cylinder: the verdict, and
-// the signed distance refined to 1e-20 * scale where it can decide the band
-// (always when separated: GJK to convergence is cheap; when overlapping only
-// if the depth can still be within the band, since that runs EPA).
-struct BoxTruth {
-  Verdict verdict = Verdict::Undecided;
-  QInterval signed_distance;
-  std::string text;
-};
-
-BoxTruth box_truth(const oracle::ConvexShape& cyl, const oracle::ConvexShape& box, const Q& band) {
-  BoxTruth t;
-  oracle::EngineOptions opt;
-  opt.certificates = false;
-  oracle::DistanceResult d = oracle::classify(cyl, box, opt);
-  if (d.verdict == Verdict::Separated || (d.verdict == Verdict::Overlapping && d.distance.hi >= -2 * band)) {
-    opt.rel_width = 1e-20;
-    d = oracle::classify(cyl, box, opt);
-  }
-  t.verdict = d.verdict;
-  t.signed_distance = d.verdict == Verdict::Touching ? oracle::point(Q(0)) : d.distance;
-  t.text = std::string(oracle::to_string(t.verdict)) + " signed_distance=" + oracle::to_string(t.signed_distance);
-  return t;
-}
-
 // An upper bound of the distance from x to the box, exactly: x's
 // coordinates along the stored axes (Cramer's rule in rationals; the axes
 // are independent in the contract), clamped to [-e_i, e_i], give a point of
@@ -110,7 +85,7 @@ Evaluation evaluate(const CylinderObbCase& c, const CylinderObbImpl& impl) {
   const Tolerances tol = tolerances(kId);
   const oracle::ConvexShape cyl = oracle::make_shape(c.a), box = oracle::make_shape(c.b);
   const Q band = times_scale(tol.verdict, e.scale);
-  const BoxTruth truth = box_truth(cyl, box, band);
+  const PolytopeTruth truth = polytope_truth(cyl, box, band);
   e.verdict = truth.verdict;
   e.truth_hit = truth.verdict != Verdict::Separated;
   e.signed_distance = nearest_to_zero(truth.signed_distance, e.scale);

@@ -86,6 +86,8 @@ inline Capsule apply(const Move& m, const Capsule& c) { return {m.pt(c.p), m.pt(
 inline Obb apply(const Move& m, const Obb& b) {
   return {m.pt(b.c), {{m.vec(b.axes[0]), m.vec(b.axes[1]), m.vec(b.axes[2])}}, {m.len(b.e.x), m.len(b.e.y), m.len(b.e.z)}};
 }
+/// A triangle: its vertices move as points.
+inline Triangle apply(const Move& m, const Triangle& t) { return {m.pt(t.a), m.pt(t.b), m.pt(t.c)}; }
 /// A displacement scales with the scene (unlike a normal).
 inline Vec3 displacement(const Move& m, Vec3 d) { return m.id == 5 ? m.pt(d) - m.pt(Vec3{0, 0, 0}) : m.pt(d); }
 inline MovingSphere apply(const Move& m, const MovingSphere& s) { return {m.pt(s.c), m.len(s.r), displacement(m, s.delta)}; }

@@ -7,6 +7,7 @@
 #include "geomcheck/collide_cylinder_capsule.hpp"
 #include "geomcheck/collide_cylinder_obb.hpp"
 #include "geomcheck/collide_cylinder_sphere.hpp"
+#include "geomcheck/collide_cylinder_triangle.hpp"
 #include "support.hpp"
 
 namespace geomcheck {
@@ -51,6 +52,14 @@ template <> struct Suite<QueryId::collide_cylinder_obb> {
   static rc::Gen<std::pair<Case, std::string>> targeted() { return gen::cylinder_obb_case(); }
   static rc::Gen<Case> wild() { return gen::wild_cylinder_obb(); }
   static bool hit(const Case& c, const Impl& impl = kProductionCylinderObb) { return impl.overlap(c.a, c.b); }
+};
+
+template <> struct Suite<QueryId::collide_cylinder_triangle> {
+  using Case = CylinderTriangleCase;
+  using Impl = CylinderTriangleImpl;
+  static rc::Gen<std::pair<Case, std::string>> targeted() { return gen::cylinder_triangle_case(); }
+  static rc::Gen<Case> wild() { return gen::wild_cylinder_triangle(); }
+  static bool hit(const Case& c, const Impl& impl = kProductionCylinderTriangle) { return impl.overlap(c.a, c.b); }
 };
 
 /// Half wild raw doubles (NaN, inf, subnormal, huge), half targeted cases.

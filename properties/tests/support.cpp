@@ -12,6 +12,7 @@ void showValue(const Sphere& s, std::ostream& os) { os << describe_shape(s); }
 void showValue(const Segment& s, std::ostream& os) { os << describe_shape(s); }
 void showValue(const Capsule& s, std::ostream& os) { os << describe_shape(s); }
 void showValue(const Obb& s, std::ostream& os) { os << describe_shape(s); }
+void showValue(const Triangle& s, std::ostream& os) { os << describe_shape(s); }
 void showValue(const MovingSphere& s, std::ostream& os) { os << describe_shape(s); }
 
 rc::detail::TestListener& listener() {

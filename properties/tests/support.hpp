@@ -27,6 +27,7 @@ void showValue(const Sphere& s, std::ostream& os);
 void showValue(const Segment& s, std::ostream& os);
 void showValue(const Capsule& s, std::ostream& os);
 void showValue(const Obb& s, std::ostream& os);
+void showValue(const Triangle& s, std::ostream& os);
 void showValue(const MovingSphere& s, std::ostream& os);
 template <class A, class B>
 void showValue(const PairCase<A, B>& c, std::ostream& os) {

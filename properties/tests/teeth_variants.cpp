@@ -7,6 +7,7 @@
 
 #include "geomcheck/detail/obb_stages.hpp"
 #include "geomcheck/detail/sweep_stages.hpp"
+#include "geomcheck/detail/triangle_stages.hpp"
 
 namespace geomcheck::teeth {
 
@@ -196,5 +197,10 @@ const CylinderObbImpl kBoxTalkRays = {
     "box-talk-rays",
     [](const Cylinder& c, const Obb& b) { return detail::overlap_with_stage(c, b, detail::ObbCapStage::TalkRays); },
     [](const Cylinder& c, const Obb& b) { return detail::collide_with_stage(c, b, detail::ObbCapStage::TalkRays); }};
+
+const CylinderTriangleImpl kTriangleNoCapStage = {
+    "triangle-without-cap-stage",
+    [](const Cylinder& c, const Triangle& t) { return detail::overlap_with_stage(c, t, detail::TriCapStage::None); },
+    [](const Cylinder& c, const Triangle& t) { return detail::collide_with_stage(c, t, detail::TriCapStage::None); }};
 
 }  // namespace geomcheck::teeth

@@ -27,5 +27,9 @@ extern const CylinderObbImpl kBoxAsCapsule;
 /// collide_cylinder_obb with the talk's step 3 as stated (direction
 /// corrected to Pbox's radial line): one ray per box plane through Pbox.
 extern const CylinderObbImpl kBoxTalkRays;
+/// collide_cylinder_triangle without its cap stage: a triangle whose point
+/// nearest the axis segment lies beyond a cap is taken as a miss (the talk's
+/// steps 1 and 2 only), though it may still cut into the cap's disc.
+extern const CylinderTriangleImpl kTriangleNoCapStage;
 
 }  // namespace geomcheck::teeth

@@ -5,10 +5,13 @@
 #include <gtest/gtest.h>
 
 #include <cstdio>
+#include <cmath>
 #include <cstdlib>
+#include <string>
 
 #include "geomcheck/properties/tolerances.hpp"
 #include "suites.hpp"
+#include "support.hpp"
 
 namespace geomcheck {
 namespace {
@@ -30,38 +33,49 @@ int cases() {
   return n > 0 && n < kCases ? n : kCases;
 }
 
+/// The worst error of each metric; where one exceeds its bound, the case
+/// that reached it is saved as a case file (the path is printed).
 struct Worst {
-  double verdict = 0, depth = 0, normal = 0, point = 0, t = 0, unit = 0;
+  double v[6] = {0, 0, 0, 0, 0, 0};
+  std::string where[6];
 };
+constexpr const char* kMetric[6] = {"verdict", "depth", "normal", "point", "t", "unit"};
 
-void take(double& w, double v) {
-  if (v > w) w = v;  // NaN (not applicable) is ignored
+double bound_of(const Tolerances& t, int k) {
+  const double b[6] = {t.verdict, t.depth, t.normal, t.point, t.t, t.unit};
+  return b[k];
 }
 
 template <QueryId Q>
 Worst measure() {
   Worst w;
   const auto gen = Suite<Q>::targeted();
+  const Tolerances tol = tolerances(Q);
   rc::Random random(kSeed);
   for (int i = 0, n = cases(); i < n; ++i) {
     random.split();
     const auto c = gen(random.split(), 50).value().first;
     const Evaluation e = evaluate(c);
     if (!e.valid) continue;
-    if (e.disagree) take(w.verdict, e.margin);
-    take(w.depth, e.depth_err);
-    take(w.normal, e.normal_err);
-    take(w.point, e.point_err);
-    take(w.t, e.t_err);
-    take(w.unit, e.unit_err);
+    const double err[6] = {e.disagree ? e.margin : NAN, e.depth_err, e.normal_err, e.point_err, e.t_err, e.unit_err};
+    for (int k = 0; k < 6; ++k) {
+      if (!(err[k] > w.v[k])) continue;  // NaN (not applicable) is ignored
+      w.v[k] = err[k];
+      if (err[k] > bound_of(tol, k) && bound_of(tol, k) > 0)
+        w.where[k] = save_counterexample(
+            from_case<Q>(c, "precision table seed " + std::to_string(kSeed) + " case " + std::to_string(i), "",
+                         std::string(kMetric[k]) + " error " + std::to_string(err[k]) + " * scale"),
+            std::string(info(Q).name) + "_precision_" + kMetric[k]);
+    }
   }
   return w;
 }
 
-void expect_in_range(const char* query, const char* what, double worst, double bound) {
+void expect_in_range(const char* query, const char* what, double worst, double bound, const std::string& where = "") {
   std::printf("[precision] %-24s %-8s worst %.3e  bound %.1e\n", query, what, worst, bound);
   if (bound == 0) return;  // not a metric of this query
-  EXPECT_LE(worst, bound) << query << " " << what << ": production is less precise than the table says";
+  EXPECT_LE(worst, bound) << query << " " << what << ": production is less precise than the table says"
+                          << (where.empty() ? "" : "; the worst case is saved as " + where);
   if (cases() < kCases) return;  // a partial sample: upper bounds only
   EXPECT_GE(worst, bound / 100) << query << " " << what << ": the bound is stale (worst " << worst
                                 << " is below bound/100); tighten it in tolerances.hpp and the README";
@@ -74,12 +88,7 @@ void check_table() {
   const char* n = info(Q).name;
   std::printf("[precision] seed %llu, %d cases%s\n", static_cast<unsigned long long>(kSeed), cases(),
               cases() < kCases ? " (partial sample: upper bounds only)" : "");
-  expect_in_range(n, "verdict", w.verdict, t.verdict);
-  expect_in_range(n, "depth", w.depth, t.depth);
-  expect_in_range(n, "normal", w.normal, t.normal);
-  expect_in_range(n, "point", w.point, t.point);
-  expect_in_range(n, "t", w.t, t.t);
-  expect_in_range(n, "unit", w.unit, t.unit);
+  for (int k = 0; k < 6; ++k) expect_in_range(n, kMetric[k], w.v[k], bound_of(t, k), w.where[k]);
 }
 
 TEST(precision, collide_cylinder_sphere) { check_table<QueryId::collide_cylinder_sphere>(); }
@@ -87,6 +96,7 @@ TEST(precision, cast_segment_cylinder) { check_table<QueryId::cast_segment_cylin
 TEST(precision, collide_cylinder_capsule) { check_table<QueryId::collide_cylinder_capsule>(); }
 TEST(precision, sweep_sphere_cylinder) { check_table<QueryId::sweep_sphere_cylinder>(); }
 TEST(precision, collide_cylinder_obb) { check_table<QueryId::collide_cylinder_obb>(); }
+TEST(precision, collide_cylinder_triangle) { check_table<QueryId::collide_cylinder_triangle>(); }
 
 }  // namespace
 }  // namespace geomcheck

@@ -39,6 +39,7 @@ TEST(teeth, sweep_without_corner_stage) { expect_caught<QueryId::sweep_sphere_cy
 TEST(teeth, sweep_talk_one_rim_point) { expect_caught<QueryId::sweep_sphere_cylinder>(teeth::kSweepTalkRimPoint); }
 TEST(teeth, box_cylinder_as_box_capsule) { expect_caught<QueryId::collide_cylinder_obb>(teeth::kBoxAsCapsule); }
 TEST(teeth, box_talk_one_ray_per_plane) { expect_caught<QueryId::collide_cylinder_obb>(teeth::kBoxTalkRays); }
+TEST(teeth, triangle_without_cap_stage) { expect_caught<QueryId::collide_cylinder_triangle>(teeth::kTriangleNoCapStage); }
 
 }  // namespace
 }  // namespace geomcheck

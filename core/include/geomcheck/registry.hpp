@@ -28,7 +28,9 @@
   X(sweep_sphere_cylinder, Sweep, MovingSphere, Cylinder,                                \
     "sweep(Sphere, delta, Cylinder): first time of contact of a moving sphere")          \
   X(collide_cylinder_obb, Collide, Cylinder, Obb,                                        \
-    "overlap/collide(Cylinder, Obb): exact verdict; penetration depth over the Minkowski patches")
+    "overlap/collide(Cylinder, Obb): exact verdict; penetration depth over the Minkowski patches")  \
+  X(collide_cylinder_triangle, Collide, Cylinder, Triangle,                              \
+    "overlap/collide(Cylinder, Triangle): exact verdict; penetration depth over the Minkowski patches")
 
 namespace geomcheck {
 

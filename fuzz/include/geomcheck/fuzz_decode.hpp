@@ -12,7 +12,10 @@
 //         A box's axes are never drawn as values: they come from a fixed
 //         table of orthonormal frames (table_frame), are permuted and
 //         flipped with the scene but never scaled; only its centre and
-//         extents are scaled.
+//         extents are scaled. A triangle's vertices are drawn like any
+//         values, then half of the time put in a special position
+//         (repeated vertex, point, collinear, in a coordinate plane, an
+//         edge along an axis; structured_shape<Triangle>).
 // The fuzz targets and `geomcheck from-fuzz` both decode with this header,
 // so a crash file always turns into the case the target saw.
 #pragma once
@@ -45,10 +48,9 @@ inline double structured_value(FuzzedDataProvider& p) {
   return v;
 }
 
-/// Any shape but a box (see the specialisation below): every value drawn,
-/// then exact moves applied field by field.
+/// Every value of a shape drawn, then exact moves applied field by field.
 template <class S>
-S structured_shape(FuzzedDataProvider& p, int perm, int flips, int e) {
+S structured_fields(FuzzedDataProvider& p, int perm, int flips, int e) {
   double v[ShapeTraits<S>::size];
   for (auto& x : v) x = structured_value(p);
   // Exact moves applied field by field: vectors permuted and flipped, all scaled.
@@ -63,6 +65,13 @@ S structured_shape(FuzzedDataProvider& p, int perm, int flips, int e) {
     i += f.arity;
   }
   return ShapeTraits<S>::from(v);
+}
+
+/// Any shape but a box or a triangle (see the specialisations below):
+/// structured_fields.
+template <class S>
+S structured_shape(FuzzedDataProvider& p, int perm, int flips, int e) {
+  return structured_fields<S>(p, perm, flips, e);
 }
 
 /// Number of rotations table_frame knows (index 0 is the identity).
@@ -144,6 +153,45 @@ inline Obb structured_shape<Obb>(FuzzedDataProvider& p, int perm, int flips, int
   for (int i = 0; i < 3; ++i) b.axes[i] = move(frame[i], false);
   b.e = {std::ldexp(ext.x, e), std::ldexp(ext.y, e), std::ldexp(ext.z, e)};
   return b;
+}
+
+/// Triangles: the vertices as for any shape (structured_fields), then, by one
+/// more byte, half of the time a special position that independent vertices
+/// would almost never take:
+///   6, 11  a repeated vertex (b = a: the triangle is its segment ac; c = b:
+///          its segment ab);
+///   7      a point triangle (b = c = a);
+///   8      c on the line ab: the rounded a + t (b - a), t in {1/2, 2, -1}
+///          (collinear, or within rounding of it);
+///   9      all three vertices in one coordinate plane (parallel to the caps
+///          of an axis-aligned cylinder);
+///   10     the edge ab parallel to a coordinate axis.
+/// They are made after the scene's exact moves (copying coordinates commutes
+/// with them). An exhausted input gives the vertices as drawn.
+template <>
+inline Triangle structured_shape<Triangle>(FuzzedDataProvider& p, int perm, int flips, int e) {
+  Triangle t = structured_fields<Triangle>(p, perm, flips, e);
+  const int kind = p.ConsumeIntegralInRange<int>(0, 11);
+  const int k = p.ConsumeIntegralInRange<int>(0, 2);  // a coordinate, or which t
+  switch (kind) {
+    case 6: t.b = t.a; break;
+    case 7: t.b = t.a, t.c = t.a; break;
+    case 8: {
+      static constexpr double kT[3] = {0.5, 2.0, -1.0};
+      t.c = t.a + kT[k] * (t.b - t.a);
+      break;
+    }
+    case 9: t.b[k] = t.a[k], t.c[k] = t.a[k]; break;
+    case 10: {
+      const double keep = t.b[k];
+      t.b = t.a;
+      t.b[k] = keep;
+      break;
+    }
+    case 11: t.c = t.b; break;
+    default: break;  // 0..5: as drawn
+  }
+  return t;
 }
 
 /// The case an input of query Q's fuzz target stands for.

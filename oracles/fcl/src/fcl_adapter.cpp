@@ -1,10 +1,12 @@
 #include "geomcheck/oracles/fcl_adapter.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <exception>
 #include <limits>
 #include <string>
 #include <type_traits>
+#include <vector>
 
 #include <ccd/vec3.h>
 #include <fcl/narrowphase/collision.h>
@@ -531,6 +533,46 @@ PeerDistance fcl_distance_prepared(const FclCylinderCapsule& pair) { return dist
 bool fcl_overlap_prepared(const FclCylinderBox& pair) { return overlap_on(pair); }
 PeerContact fcl_collide_prepared(const FclCylinderBox& pair) { return collide_on(pair, true); }
 PeerDistance fcl_distance_prepared(const FclCylinderBox& pair) { return distance_on(pair); }
+
+FclMesh::FclMesh(const TriangleMesh& m) {
+  std::vector<fcl::Vector3d> points;
+  points.reserve(m.vertices().size());
+  for (const Vec3& v : m.vertices()) points.emplace_back(v.x, v.y, v.z);
+  std::vector<fcl::Triangle> tris;
+  tris.reserve(m.size());
+  for (const MeshFace& f : m.faces()) tris.emplace_back(f[0], f[1], f[2]);
+  model.beginModel(static_cast<int>(tris.size()), static_cast<int>(points.size()));
+  model.addSubModel(points, tris);
+  model.endModel();
+}
+
+PeerContact fcl_collide_prepared(const FclCylinder& cyl, const FclMesh& mesh, int max_contacts, int* contacts) {
+  try {
+    fcl::CollisionRequestd req(static_cast<std::size_t>(std::max(max_contacts, 1)), true);
+    req.gjk_solver_type = fcl::GST_LIBCCD;
+    fcl::CollisionResultd res;
+    fcl::collide(&mesh.model, fcl::Transform3d::Identity(), &cyl.shape, cyl.pose, req, res);
+    if (contacts) *contacts = static_cast<int>(res.numContacts());
+    if (!res.isCollision()) {
+      PeerContact out;
+      out.ok = true;
+      return out;
+    }
+    std::size_t deepest = 0;
+    for (std::size_t i = 1; i < res.numContacts(); ++i)
+      if (res.getContact(i).penetration_depth > res.getContact(deepest).penetration_depth) deepest = i;
+    const fcl::Contactd& c = res.getContact(deepest);
+    return contact_from(c.pos, -c.normal, c.penetration_depth, true);
+  } catch (const std::exception& e) {
+    PeerContact out;
+    out.error = describe(e);
+    return out;
+  } catch (...) {
+    PeerContact out;
+    out.error = kUnknownThrow;
+    return out;
+  }
+}
 
 bool fcl_overlap_prepared(const FclCylinderTriangle& pair) {
   return triangle_solver().shapeTriangleIntersect(pair.a.shape, pair.a.pose, pair.b.a, pair.b.b, pair.b.c);

@@ -940,6 +940,36 @@ TEST(FclPeerTriangle, CollideNormalFromCylinderTowardsTriangle) {
   EXPECT_NEAR(length(raw.normal - Vec3{0, 0, 1}), 0.0, 1e-6);
 }
 
+// --- cylinder/mesh: FCL's BVH model, as shipped ----------------------------------
+
+TEST(FclPeerMesh, NormalFromCylinderTowardsMeshAndDeepest) {
+  // Face 0 is the vertical triangle above (0.25 into the top cap), face 1 a
+  // decoy far away, face 2 the same triangle 0.5 into the cap. FCL's contact
+  // normal (from the mesh, o1, to the cylinder) is flipped by the adapter.
+  const TriangleMesh m({{0.2, 0, 0.75}, {0.2, -0.5, 2}, {0.2, 0.5, 2}, {9, 9, 9}, {9, 10, 9}, {10, 9, 9},
+                        {-0.2, 0, 0.5}, {-0.2, -0.5, 2}, {-0.2, 0.5, 2}},
+                       {{0, 1, 2}, {3, 4, 5}, {6, 7, 8}});
+  const FclMesh mesh(m);
+  const FclCylinder cyl(kZ);
+  int n = 0;
+  const PeerContact all = fcl_collide_prepared(cyl, mesh, 10, &n);
+  ASSERT_TRUE(all.ok) << all.error;
+  ASSERT_TRUE(all.hit);
+  EXPECT_EQ(n, 2);
+  EXPECT_NEAR(all.depth, 0.5, 1e-6);
+  EXPECT_NEAR(length(all.normal - Vec3{0, 0, 1}), 0.0, 1e-6);
+  const PeerContact first = fcl_collide_prepared(cyl, mesh, 1, &n);
+  ASSERT_TRUE(first.ok) << first.error;
+  ASSERT_TRUE(first.hit);
+  EXPECT_EQ(n, 1);
+  EXPECT_NEAR(length(first.normal - Vec3{0, 0, 1}), 0.0, 1e-6);
+  const TriangleMesh far({{9, 9, 9}, {9, 10, 9}, {10, 9, 9}}, {{0, 1, 2}});
+  const PeerContact miss = fcl_collide_prepared(cyl, FclMesh(far), 10, &n);
+  ASSERT_TRUE(miss.ok) << miss.error;
+  EXPECT_FALSE(miss.hit);
+  EXPECT_EQ(n, 0);
+}
+
 TEST(FclPeerTriangle, DistanceAndMiss) {
   const PeerDistance above = fcl_distance(kZ, Triangle{{0.2, 0, 1.25}, {0.2, -0.5, 2}, {0.2, 0.5, 2}});
   ASSERT_TRUE(above.ok) << above.error;

@@ -104,6 +104,7 @@ struct SceneScale {
   Capsule in(const Capsule& s) const { return {in(s.p), in(s.q), in(s.r)}; }
   /// A box: centre and extents scale, the axes (directions) do not.
   Obb in(const Obb& b) const { return {in(b.c), b.axes, in(b.e)}; }
+  Triangle in(const Triangle& t) const { return {in(t.a), in(t.b), in(t.c)}; }
 };
 
 inline double largest(const Cylinder& c) { return std::max(std::max(max_abs(c.p), max_abs(c.q)), c.r); }
@@ -111,6 +112,7 @@ inline double largest(const Sphere& s) { return std::max(max_abs(s.c), s.r); }
 inline double largest(const Segment& s) { return std::max(max_abs(s.a), max_abs(s.b)); }
 /// A box's centre and extents (its axes are directions, unit in the contract).
 inline double largest(const Obb& b) { return std::max(max_abs(b.c), max_abs(b.e)); }
+inline double largest(const Triangle& t) { return std::max(std::max(max_abs(t.a), max_abs(t.b)), max_abs(t.c)); }
 inline double largest(const Capsule& s) { return std::max(std::max(max_abs(s.p), max_abs(s.q)), s.r); }
 
 /// A point relative to a cylinder: the closest point of the solid cylinder,

@@ -53,18 +53,26 @@ struct CylinderObbImpl {
   bool (*overlap)(const Cylinder&, const Obb&);
   Contact (*collide)(const Cylinder&, const Obb&);
 };
+/// The implementation under test of collide_cylinder_triangle.
+struct CylinderTriangleImpl {
+  const char* name;
+  bool (*overlap)(const Cylinder&, const Triangle&);
+  Contact (*collide)(const Cylinder&, const Triangle&);
+};
 
 extern const CylinderSphereImpl kProductionCylinderSphere;
 extern const CastSegmentCylinderImpl kProductionCastSegmentCylinder;
 extern const CylinderCapsuleImpl kProductionCylinderCapsule;
 extern const SweepSphereCylinderImpl kProductionSweepSphereCylinder;
 extern const CylinderObbImpl kProductionCylinderObb;
+extern const CylinderTriangleImpl kProductionCylinderTriangle;
 
 using CylinderSphereCase = QueryTraits<QueryId::collide_cylinder_sphere>::Case;
 using SegmentCylinderCase = QueryTraits<QueryId::cast_segment_cylinder>::Case;
 using CylinderCapsuleCase = QueryTraits<QueryId::collide_cylinder_capsule>::Case;
 using SweepCylinderCase = QueryTraits<QueryId::sweep_sphere_cylinder>::Case;
 using CylinderObbCase = QueryTraits<QueryId::collide_cylinder_obb>::Case;
+using CylinderTriangleCase = QueryTraits<QueryId::collide_cylinder_triangle>::Case;
 
 /// Production held against the oracle on one case: everything a report or a
 /// check needs. Errors are multiples of `scale`; NaN where not applicable.
@@ -96,6 +104,7 @@ Evaluation evaluate(const SegmentCylinderCase& c, const CastSegmentCylinderImpl&
 Evaluation evaluate(const CylinderCapsuleCase& c, const CylinderCapsuleImpl& impl = kProductionCylinderCapsule);
 Evaluation evaluate(const SweepCylinderCase& c, const SweepSphereCylinderImpl& impl = kProductionSweepSphereCylinder);
 Evaluation evaluate(const CylinderObbCase& c, const CylinderObbImpl& impl = kProductionCylinderObb);
+Evaluation evaluate(const CylinderTriangleCase& c, const CylinderTriangleImpl& impl = kProductionCylinderTriangle);
 
 /// Compares an evaluation with the query's tolerances (tolerances.hpp).
 CheckResult judge(QueryId id, const Evaluation& e);
@@ -179,6 +188,25 @@ CheckResult check_robust(const CylinderObbCase& c, const CylinderObbImpl& impl =
 CheckResult check_all(const CylinderObbCase& c, const CylinderObbImpl& impl = kProductionCylinderObb);
 /// Axes orthonormal to 16 eps (|a_i . a_j - delta_ij|): production's contract.
 bool obb_in_contract(const Obb& b);
+
+// --- collide_cylinder_triangle -------------------------------------------------
+/// Agreement with the engine outside the band; the depth claim (see the
+/// query's header), point in both. Every finite triangle is in the contract
+/// (a degenerate one is its longest edge or its point).
+CheckResult check_oracle(const CylinderTriangleCase& c, const CylinderTriangleImpl& impl = kProductionCylinderTriangle);
+/// overlap == collide.hit; unit normal; depth >= 0 equals the overlap along the normal; no NaN.
+CheckResult check_consistency(const CylinderTriangleCase& c, const CylinderTriangleImpl& impl = kProductionCylinderTriangle);
+/// (A,B) and (B,A) agree, normal flips; caps swapped, triangle vertices
+/// rotated or reversed: same verdict (band), same depth to the bound.
+CheckResult check_symmetry(const CylinderTriangleCase& c, const CylinderTriangleImpl& impl = kProductionCylinderTriangle);
+/// As for the other queries, but for a reflection of a scene whose cylinder
+/// axis lies exactly in the triangle's plane: there the normal is free
+/// (mirror pairs), the verdict and point bit-identical, the depth to the bound.
+CheckResult check_metamorphic(const CylinderTriangleCase& c, int move, const CylinderTriangleImpl& impl = kProductionCylinderTriangle);
+/// A wider or longer cylinder or a bigger triangle never turns overlap into separation (outside the band).
+CheckResult check_monotone(const CylinderTriangleCase& c, const CylinderTriangleImpl& impl = kProductionCylinderTriangle);
+CheckResult check_robust(const CylinderTriangleCase& c, const CylinderTriangleImpl& impl = kProductionCylinderTriangle);
+CheckResult check_all(const CylinderTriangleCase& c, const CylinderTriangleImpl& impl = kProductionCylinderTriangle);
 
 /// Number of metamorphic moves understood by check_metamorphic (0..kNumMoves-1).
 inline constexpr int kNumMoves = 6;

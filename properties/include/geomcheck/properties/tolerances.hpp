@@ -58,6 +58,8 @@ constexpr Tolerances tolerances(QueryId id) {
       return {/*verdict*/ 1e-14, /*depth*/ 1e-14, /*normal*/ 1e-11, /*point*/ 1e-14, /*t*/ 0, /*unit*/ 1e-14};
     case QueryId::collide_cylinder_obb:
       return {/*verdict*/ 1e-14, /*depth*/ 1e-14, /*normal*/ 1e-14, /*point*/ 1e-14, /*t*/ 0, /*unit*/ 1e-14};
+    case QueryId::collide_cylinder_triangle:
+      return {/*verdict*/ 1e-14, /*depth*/ 1e-14, /*normal*/ 1e-14, /*point*/ 1e-14, /*t*/ 0, /*unit*/ 1e-14};
     case QueryId::sweep_sphere_cylinder:
       return {/*verdict*/ 1e-14, /*depth*/ 0, /*normal*/ 1e-14, /*point*/ 1e-12, /*t*/ 1e-12, /*unit*/ 1e-14};
   }

@@ -8,6 +8,7 @@
 // Conventions and caveats are documented in fcl_adapter.hpp.
 #pragma once
 
+#include <fcl/geometry/bvh/BVH_model.h>
 #include <fcl/geometry/shape/box.h>
 #include <fcl/geometry/shape/capsule.h>
 #include <fcl/geometry/shape/cylinder.h>
@@ -16,6 +17,7 @@
 
 #include "geomcheck/oracles/fcl_adapter.hpp"
 #include "geomcheck/shapes.hpp"
+#include "geomcheck/triangle_mesh.hpp"
 
 namespace geomcheck::oracles {
 
@@ -105,6 +107,23 @@ struct FclCylinderTriangle {
   FclTriangle b;
   FclCylinderTriangle(const Cylinder& cyl, const Triangle& tri) : a(cyl), b(tri) {}
 };
+
+/// A geomcheck triangle mesh as FCL's BVH model of oriented-box / swept-
+/// sphere volumes (fcl::BVHModel<OBBRSSd>: beginModel, addSubModel with the
+/// vertices and faces as they are, endModel). Constructing it is FCL's BVH
+/// build. Requires is_valid(m) and at least one face.
+struct FclMesh {
+  fcl::BVHModel<fcl::OBBRSSd> model;
+  explicit FclMesh(const TriangleMesh& m);
+};
+
+/// fcl::collide(mesh, cylinder) as shipped (GST_LIBCCD, the BVH traversal
+/// and the per-triangle narrow phase shapeTriangleIntersect, unguarded).
+/// max_contacts = 1 (the traversal stops at the first contact found) or more
+/// (the contacts of up to that many triangles; the deepest is returned).
+/// The normal is from the cylinder towards the mesh (FCL's, from the mesh,
+/// flipped); `contacts` gets the number FCL reported.
+PeerContact fcl_collide_prepared(const FclCylinder& cyl, const FclMesh& mesh, int max_contacts, int* contacts = nullptr);
 
 /// fcl_overlap on a converted pair (no validity check; exceptions propagate).
 bool fcl_overlap_prepared(const FclCylinderSphere& pair);

@@ -1,0 +1,54 @@
+// geomcheck — collide_cylinder_mesh: cylinder (A) against a triangle mesh
+// (B, triangle_mesh.hpp).
+//
+// Semantics: the mesh is the union of its closed triangles; the shapes
+// overlap iff the cylinder overlaps some triangle, decided by
+// collide_cylinder_triangle. `collide` returns the contact of the DEEPEST
+// triangle (the largest collide_cylinder_triangle depth; the smallest face
+// index on ties) and that face's index: every field is exactly that
+// triangle's collide_cylinder_triangle answer, so the claims of that query
+// hold for it (its penetration depth, its minimal translation, a point in
+// both). That is the contact an engine resolves first; it is not the
+// penetration depth of the union.
+//
+// Broad phase (as the engine does it): the hierarchy's boxes against the
+// cylinder's bounding capsule, taken conservatively as the axis segment
+// against each box grown by r plus a margin of 2^-30 times the scene's
+// magnitude (a box the capsule meets is never skipped, whatever the
+// rounding). Narrow phase: the triangle query on every face of every leaf
+// reached; `overlap` stops at the first hit. The answers are therefore
+// bit-identical to the brute force over all faces in index order
+// (`overlap_brute_force`, `collide_brute_force`), which the properties
+// check.
+//
+// Invalid input (an invalid cylinder, a non-finite vertex, an index out of
+// range) gives "no overlap".
+#pragma once
+
+#include <cstdint>
+
+#include "geomcheck/results.hpp"
+#include "geomcheck/shapes.hpp"
+#include "geomcheck/triangle_mesh.hpp"
+
+namespace geomcheck {
+
+/// Does the closed cylinder meet some triangle of the mesh?
+bool overlap(const Cylinder& a, const TriangleMesh& b);
+/// The deepest triangle's contact (normal from the cylinder towards the
+/// mesh); its face index in *triangle when given (left alone on no hit).
+Contact collide(const Cylinder& a, const TriangleMesh& b, std::uint32_t* triangle = nullptr);
+
+/// Argument-order wrappers.
+inline bool overlap(const TriangleMesh& a, const Cylinder& b) { return overlap(b, a); }
+inline Contact collide(const TriangleMesh& a, const Cylinder& b, std::uint32_t* triangle = nullptr) {
+  return flipped(collide(b, a, triangle));
+}
+
+namespace detail {
+/// The same answers without the hierarchy: every face, in index order.
+bool overlap_brute_force(const Cylinder& a, const TriangleMesh& b);
+Contact collide_brute_force(const Cylinder& a, const TriangleMesh& b, std::uint32_t* triangle = nullptr);
+}  // namespace detail
+
+}  // namespace geomcheck

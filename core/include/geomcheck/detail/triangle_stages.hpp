@@ -1,0 +1,21 @@
+// geomcheck — internal: the cylinder/triangle query with a chosen cap stage,
+// so that the test tree can hold the stages that production does not use to
+// the same properties (properties/tests/teeth_variants.cpp).
+#pragma once
+
+#include "geomcheck/results.hpp"
+#include "geomcheck/shapes.hpp"
+
+namespace geomcheck::detail {
+
+enum class TriCapStage {
+  None,   ///< no cap stage: Ptri beyond a cap means "no overlap" (the talk's steps 1 and 2 only)
+  Exact,  ///< production: the cap disc against the triangle's section by the cap plane
+};
+
+/// overlap(Cylinder, Triangle) with the given cap stage (see collide_cylinder_triangle.hpp).
+bool overlap_with_stage(const Cylinder& cyl, const Triangle& tri, TriCapStage stage);
+/// collide(Cylinder, Triangle) with the given cap stage.
+Contact collide_with_stage(const Cylinder& cyl, const Triangle& tri, TriCapStage stage);
+
+}  // namespace geomcheck::detail

@@ -1,0 +1,316 @@
+#include <algorithm>
+#include <cmath>
+#include <utility>
+
+#include "capsule_truth.hpp"
+#include "common.hpp"
+#include "geomcheck/collide_cylinder_triangle.hpp"
+#include "geomcheck/oracles/cylinder_sphere.hpp"
+#include "geomcheck/properties/checks.hpp"
+#include "geomcheck/properties/tolerances.hpp"
+#include "moves.hpp"
+
+namespace geomcheck {
+
+namespace {
+
+constexpr QueryId kId = QueryId::collide_cylinder_triangle;
+using oracle::Q;
+using oracle::QInterval;
+using oracle::QVec;
+using oracle::Verdict;
+
+bool valid_case(const CylinderTriangleCase& c) { return is_valid(c.a) && is_valid(c.b); }
+
+double scale_of(const CylinderTriangleCase& c) {
+  const double m = std::max({max_abs(c.a.p), max_abs(c.a.q), c.a.r, oracle::extent(c.a.p, c.a.q), max_abs(c.b.a),
+                             max_abs(c.b.b), max_abs(c.b.c)});
+  return m > 0 ? m : 1.0;
+}
+
+bool same_point(const QVec& u, const QVec& v) { return u.x == v.x && u.y == v.y && u.z == v.z; }
+
+// The distance from x to the triangle, exactly squared (rounded up at the
+// square root only): the projection y of x onto the plane, when the
+// triangle is not degenerate and y lies on the inner side of (or on) all
+// three edges; otherwise the nearest of the edges' exactly clamped closest
+// points (a zero-length edge: its end point). A degenerate triangle is the
+// hull of its edges, so the edges alone give its distance.
+Q triangle_distance_up(const Triangle& t, Vec3 x) {
+  const QVec v[3] = {oracle::to_q(t.a), oracle::to_q(t.b), oracle::to_q(t.c)};
+  const QVec xq = oracle::to_q(x);
+  auto d2 = [&](const QVec& y) {
+    const QVec d = xq - y;
+    return oracle::dot(d, d);
+  };
+  const QVec n = oracle::cross(v[1] - v[0], v[2] - v[0]);
+  const Q nn = oracle::dot(n, n);
+  if (nn != 0) {
+    const QVec y = xq - (oracle::dot(n, xq - v[0]) / nn) * n;
+    bool inside = true;
+    for (int i = 0; i < 3 && inside; ++i)
+      inside = oracle::dot(n, oracle::cross(v[(i + 1) % 3] - v[i], y - v[i])) >= 0;
+    if (inside) return oracle::sqrt_interval(d2(y)).hi;
+  }
+  Q best;
+  for (int i = 0; i < 3; ++i) {
+    const QVec& p = v[i];
+    const QVec e = v[(i + 1) % 3] - p;
+    const Q ee = oracle::dot(e, e);
+    Q s = ee > 0 ? oracle::dot(xq - p, e) / ee : Q(0);
+    if (s < 0) s = 0;
+    if (s > 1) s = 1;
+    const Q di = d2(p + s * e);
+    if (i == 0 || di < best) best = di;
+  }
+  return oracle::sqrt_interval(best).hi;
+}
+
+// The cylinder's axis and the triangle in one plane, decided exactly: every
+// orient3d (p, q, v_i, v_j) over the pairs of vertices is zero. With p != q
+// that is exactly "a, b, c, p, q coplanar" (a vertex off the line pq spans
+// the plane with it, and the zero orientations put the other two in it; if
+// none is off the line, all five are collinear). The reflection in that
+// plane maps the cylinder (axis in it) and the triangle (in it) onto
+// themselves, so the minimal translations come in mirror pairs and a
+// reflected scene may pick the other one (the header's exception). For a
+// proper triangle this is the header's "axis in the triangle's plane"; a
+// degenerate triangle (a segment coplanar with the axis, or a point: always)
+// has the same symmetry, so the same rule covers it.
+bool scene_coplanar(const CylinderTriangleCase& c) {
+  const QVec p = oracle::to_q(c.a.p), u = oracle::to_q(c.a.q) - p;
+  const QVec v[3] = {oracle::to_q(c.b.a) - p, oracle::to_q(c.b.b) - p, oracle::to_q(c.b.c) - p};
+  for (int i = 0; i < 3; ++i)
+    for (int j = i + 1; j < 3; ++j)
+      if (oracle::dot(oracle::cross(u, v[i]), v[j]) != 0) return false;
+  return true;
+}
+
+}  // namespace
+
+const CylinderTriangleImpl kProductionCylinderTriangle = {
+    "production",
+    [](const Cylinder& a, const Triangle& b) { return overlap(a, b); },
+    [](const Cylinder& a, const Triangle& b) { return collide(a, b); },
+};
+
+Evaluation evaluate(const CylinderTriangleCase& c, const CylinderTriangleImpl& impl) {
+  Evaluation e;
+  const bool ov = impl.overlap(c.a, c.b);
+  const Contact ct = impl.collide(c.a, c.b);
+  e.prod_hit = ov;
+  e.prod_text = describe(ct, ov);
+  e.valid = valid_case(c);
+  if (!e.valid) {
+    e.truth_text = "invalid input: no overlap";
+    e.disagree = ov || ct.hit;
+    return e;
+  }
+  e.scale = scale_of(c);
+  // Every finite triangle is in the contract (degenerate ones included).
+  const Tolerances tol = tolerances(kId);
+  const oracle::ConvexShape cyl = oracle::make_shape(c.a), tri = oracle::make_shape(c.b);
+  const Q band = times_scale(tol.verdict, e.scale);
+  const PolytopeTruth truth = polytope_truth(cyl, tri, band);
+  e.verdict = truth.verdict;
+  e.truth_hit = truth.verdict != Verdict::Separated;
+  e.signed_distance = nearest_to_zero(truth.signed_distance, e.scale);
+  e.truth_text = truth.text;
+  e.disagree = e.prod_hit != e.truth_hit;
+  e.near_boundary = !(truth.signed_distance.lo > band || truth.signed_distance.hi < -band);
+  if (e.disagree) {
+    e.margin = std::fabs(e.signed_distance) / e.scale;
+    e.excused = e.near_boundary;
+  }
+  if (ct.hit && finite_contact(ct)) {
+    e.unit_err = std::fabs(length(ct.normal) - 1);
+    if (e.truth_hit) {
+      // The penetration depth, certified (EPA): the header claims depth
+      // and normal minimal. Where EPA cannot narrow the enclosure below the
+      // bound (it stops at its iteration caps), the errors are taken as the
+      // distance from production's value to the enclosure: certain, a
+      // lower bound, so a failure is always production's.
+      if (truth.verdict == Verdict::Overlapping) {
+        const oracle::PenetrationResult pd = oracle::penetration(cyl, tri, 1e-20);
+        if (pd.overlapping && std::isfinite(oracle::to_double(pd.depth.hi))) {
+          const bool narrow = pd.depth.hi - pd.depth.lo <= times_scale(0.01 * tol.depth, e.scale);
+          const Q v = oracle::to_q(ct.depth);
+          if (narrow) e.depth_err = rel_error(pd.depth, ct.depth, e.scale);
+          else e.depth_err = v > pd.depth.hi ? rel_up(v - pd.depth.hi, e.scale) : (v < pd.depth.lo ? rel_up(pd.depth.lo - v, e.scale) : 0.0);
+          if (max_abs(ct.normal) > 0) {
+            const QInterval along = overlap_along(cyl, tri, oracle::to_q(ct.normal));
+            const Q excess = narrow ? along.hi - pd.depth.lo : along.lo - pd.depth.hi;
+            e.normal_err = excess > 0 ? rel_up(excess, e.scale) : 0.0;
+          }
+          if (!narrow) e.truth_text += "; penetration depth " + oracle::to_string(pd.depth) + " (EPA enclosure wider than the bound)";
+        }
+      }
+      // The point: its distance from the cylinder (certified) and from the
+      // triangle (exact, rounded up at the square root).
+      const QVec x = oracle::to_q(ct.point);
+      const QInterval da = oracle::signed_distance(oracle::to_q(c.a), x);
+      const Q db_hi = triangle_distance_up(c.b, ct.point);
+      const Q out = da.hi > db_hi ? da.hi : db_hi;
+      e.point_err = out > 0 ? rel_up(out, e.scale) : 0.0;
+    }
+  }
+  return e;
+}
+
+CheckResult check_oracle(const CylinderTriangleCase& c, const CylinderTriangleImpl& impl) { return judge(kId, evaluate(c, impl)); }
+
+CheckResult check_consistency(const CylinderTriangleCase& c, const CylinderTriangleImpl& impl) {
+  const bool ov = impl.overlap(c.a, c.b);
+  const Contact ct = impl.collide(c.a, c.b);
+  if (ov != ct.hit) return Failure{"consistency-overlap-vs-collide", describe(ct, ov)};
+  if (!ct.hit) return std::nullopt;
+  if (!finite_contact(ct)) return Failure{"consistency-finite", describe(ct, ov)};
+  const Tolerances tol = tolerances(kId);
+  if (std::fabs(length(ct.normal) - 1) > tol.unit) return Failure{"consistency-unit-normal", describe(ct, ov)};
+  if (!(ct.depth >= 0)) return Failure{"consistency-depth-nonnegative", describe(ct, ov)};
+  if (!valid_case(c)) return std::nullopt;
+  // depth equals the overlap of the shapes along the returned normal.
+  const double scale = scale_of(c);
+  const QInterval along = overlap_along(oracle::make_shape(c.a), oracle::make_shape(c.b), oracle::to_q(ct.normal));
+  if (!std::isfinite(oracle::to_double(along.hi))) return std::nullopt;  // beyond the doubles: saturated depth
+  const double err = rel_error(along, ct.depth, scale);
+  if (err > tol.depth)
+    return Failure{"consistency-depth-along-normal",
+                   fmt("|depth - overlap along normal| = %.3g * scale > %.3g; ", err, tol.depth) + describe(ct, ov)};
+  return std::nullopt;
+}
+
+namespace {
+// Same solid, other representation: the verdicts agree unless one case is
+// within the band; the depths within twice the depth bound.
+CheckResult same_answer(const char* what, const CylinderTriangleCase& c0, const CylinderTriangleCase& c1,
+                        const CylinderTriangleImpl& impl) {
+  const bool o0 = impl.overlap(c0.a, c0.b), o1 = impl.overlap(c1.a, c1.b);
+  if (o0 != o1) {
+    const Evaluation e0 = evaluate(c0, impl), e1 = evaluate(c1, impl);
+    if (e0.near_boundary || e1.near_boundary) return std::nullopt;
+    return Failure{what, std::string("overlap ") + (o0 ? "yes" : "no") + " becomes " + (o1 ? "yes" : "no") +
+                             "; oracle: " + e0.truth_text};
+  }
+  if (!o0) return std::nullopt;
+  const Contact k0 = impl.collide(c0.a, c0.b), k1 = impl.collide(c1.a, c1.b);
+  const double d = std::fabs(k0.depth - k1.depth) / scale_of(c0);
+  if (d > 2 * tolerances(kId).depth + tolerances(kId).normal)
+    return Failure{std::string(what) + "-depth",
+                   fmt("depth differs by %.3g * scale; ", d) + describe(k0, o0) + " vs " + describe(k1, o1)};
+  return std::nullopt;
+}
+}  // namespace
+
+CheckResult check_symmetry(const CylinderTriangleCase& c, const CylinderTriangleImpl& impl) {
+  const bool ov = impl.overlap(c.a, c.b);
+  const Contact ct = impl.collide(c.a, c.b);
+  if (impl.overlap == kProductionCylinderTriangle.overlap) {
+    const Contact sw = collide(c.b, c.a);
+    const bool sov = overlap(c.b, c.a);
+    if (sov != ov || sw.hit != ct.hit || (ct.hit && !(sw.normal == -ct.normal)))
+      return Failure{"symmetry-argument-order", describe(ct, ov) + " vs swapped " + describe(sw, sov)};
+  }
+  if (!valid_case(c)) return std::nullopt;
+  if (auto f = same_answer("symmetry-caps-swapped", c, {{c.a.q, c.a.p, c.a.r}, c.b}, impl)) return f;
+  // The same triangle with its vertices rotated, and reversed (the other
+  // orientation): exactly the same set.
+  const Triangle& t = c.b;
+  if (auto f = same_answer("symmetry-triangle-rotated", c, {c.a, Triangle{t.b, t.c, t.a}}, impl)) return f;
+  return same_answer("symmetry-triangle-reversed", c, {c.a, Triangle{t.a, t.c, t.b}}, impl);
+}
+
+CheckResult check_metamorphic(const CylinderTriangleCase& c, int move, const CylinderTriangleImpl& impl) {
+  if (!valid_case(c)) return std::nullopt;
+  const moves::Move m{move};
+  if (!moves::applicable(c, move)) return std::nullopt;
+  const CylinderTriangleCase t{moves::apply(m, c.a), moves::apply(m, c.b)};
+  if (!valid_case(t)) return std::nullopt;
+  const bool ov = impl.overlap(c.a, c.b), ov2 = impl.overlap(t.a, t.b);
+  const Contact ct = impl.collide(c.a, c.b), ct2 = impl.collide(t.a, t.b);
+  const std::string what = std::string("metamorphic-") + move_name(move);
+  if (m.exact()) {
+    if (ov != ov2 || ct.hit != ct2.hit) return Failure{what, "verdict changed: " + describe(ct, ov) + " vs " + describe(ct2, ov2)};
+    if (!ct.hit) return std::nullopt;
+    if ((move == 0 || move == 1) && scene_coplanar(c)) {
+      // A reflection of a scene symmetric in the plane of the axis and the
+      // triangle: the normal may be the other of a mirror pair (and the
+      // depth, computed along it, differ by rounding). The point does not
+      // depend on the normal: still bit-identical.
+      if (!(m.pt(ct.point) == ct2.point))
+        return Failure{what, "point not bit-identical (axis in the triangle's plane): " + describe(ct, ov) + " vs " +
+                                 describe(ct2, ov2)};
+      const double d = std::fabs(m.len(ct.depth) - ct2.depth) / scale_of(c);
+      if (!(d <= 2 * tolerances(kId).depth))
+        return Failure{what + "-depth", fmt("depth differs by %.3g * scale (axis in the triangle's plane); ", d) +
+                                            describe(ct, ov) + " vs " + describe(ct2, ov2)};
+      return std::nullopt;
+    }
+    if (!(m.pt(ct.point) == ct2.point && m.vec(ct.normal) == ct2.normal && m.len(ct.depth) == ct2.depth))
+      return Failure{what, "answer not bit-identical: " + describe(ct, ov) + " vs " + describe(ct2, ov2)};
+    return std::nullopt;
+  }
+  if (ov != ov2) {
+    const Evaluation e0 = evaluate(c, impl), e1 = evaluate(t, impl);
+    const double slack = move == 5 ? moves::rigid_slack(c.a) * std::max(e0.scale, e1.scale) : 0.0;
+    auto near = [&](const Evaluation& e) {
+      return e.near_boundary || std::fabs(e.signed_distance) <= tolerances(kId).verdict * e.scale + slack;
+    };
+    if (!near(e0) && !near(e1))
+      return Failure{what, "verdict changed outside the band: " + describe(ct, ov) + " vs " + describe(ct2, ov2)};
+  }
+  return std::nullopt;
+}
+
+CheckResult check_monotone(const CylinderTriangleCase& c, const CylinderTriangleImpl& impl) {
+  if (!valid_case(c) || !impl.overlap(c.a, c.b)) return std::nullopt;
+  // A superset never loses the overlap, except within the band of touching.
+  auto lost = [&](const CylinderTriangleCase& bigger) {
+    return !impl.overlap(bigger.a, bigger.b) && !evaluate(c, impl).near_boundary &&
+           !evaluate(bigger, impl).near_boundary;
+  };
+  const double rc[] = {std::nextafter(c.a.r, INFINITY), c.a.r * 2 + 1e-300};
+  for (double r : rc)
+    if (std::isfinite(r) && lost({Cylinder{c.a.p, c.a.q, r}, c.b}))
+      return Failure{"monotone-cylinder-radius", fmt("overlap with cylinder radius %.17g but not with %.17g", c.a.r, r)};
+  // A bigger triangle: scaled by 2 about a vertex (which it keeps; the
+  // triangle is star-shaped from it, so the original lies inside), each
+  // vertex in turn, only where the doubled edges are exact (checked in
+  // rationals).
+  const Triangle& t = c.b;
+  const Triangle rotations[3] = {t, {t.b, t.c, t.a}, {t.c, t.a, t.b}};
+  for (const Triangle& r : rotations) {
+    const Triangle g{r.a, r.a + 2.0 * (r.b - r.a), r.a + 2.0 * (r.c - r.a)};
+    if (!is_finite(g.b) || !is_finite(g.c)) continue;
+    const QVec a = oracle::to_q(r.a);
+    if (!same_point(oracle::to_q(g.b) - a, Q(2) * (oracle::to_q(r.b) - a)) ||
+        !same_point(oracle::to_q(g.c) - a, Q(2) * (oracle::to_q(r.c) - a)))
+      continue;
+    if (lost({c.a, g}))
+      return Failure{"monotone-triangle-scaled",
+                     "overlap lost when the triangle is scaled by 2 about its vertex " + vec(r.a)};
+  }
+  // A longer cylinder: q moved outwards by q - p, only where that is exact
+  // (else the axis direction rounds and the result is no superset).
+  const Vec3 d = c.a.q - c.a.p, q2 = c.a.q + d;
+  if (is_finite(q2) && d + c.a.p == c.a.q && q2 - c.a.q == d && lost({Cylinder{c.a.p, q2, c.a.r}, c.b}))
+    return Failure{"monotone-cylinder-length", "overlap lost when the cylinder is extended beyond q"};
+  return std::nullopt;
+}
+
+CheckResult check_robust(const CylinderTriangleCase& c, const CylinderTriangleImpl& impl) {
+  const bool ov = impl.overlap(c.a, c.b);
+  const Contact ct = impl.collide(c.a, c.b);
+  if (!valid_case(c)) {
+    if (ov || ct.hit) return Failure{"robust-invalid-input", "invalid input reported a hit: " + describe(ct, ov)};
+    return std::nullopt;
+  }
+  if (ct.hit && !finite_contact(ct)) return Failure{"robust-finite-output", describe(ct, ov)};
+  if (ct.hit && !(std::fabs(length(ct.normal) - 1) <= 1e-12)) return Failure{"robust-unit-normal", describe(ct, ov)};
+  if (ov != ct.hit) return Failure{"robust-overlap-vs-collide", describe(ct, ov)};
+  return std::nullopt;
+}
+
+CheckResult check_all(const CylinderTriangleCase& c, const CylinderTriangleImpl& impl) { return all_checks(c, impl); }
+
+}  // namespace geomcheck
