@@ -2,9 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 #include "geomcheck/collide_cylinder_triangle.hpp"
 #include "geomcheck/detail/frame.hpp"
+#include "geomcheck/detail/triangle_stages.hpp"
 
 namespace geomcheck {
 
@@ -82,11 +84,29 @@ bool overlap(const Cylinder& a, const TriangleMesh& b) {
 
 Contact collide(const Cylinder& a, const TriangleMesh& b, std::uint32_t* triangle) {
   if (!is_valid(a) || !is_valid(b)) return {};
-  Deepest d;
+  // The overlapping faces with a cheap upper bound of their depth (the
+  // overlap along +-u, +-the face normal and +-u x each edge), then the full collide in
+  // decreasing order of the bound until the bound falls below the deepest
+  // depth found: the faces skipped cannot be deeper, so the answer is the
+  // brute force's, bit for bit.
+  struct Cand {
+    double bound;
+    std::uint32_t index;
+  };
+  std::vector<Cand> cands;
   traverse(a, b, [&](std::uint32_t i) {
-    d.consider(collide(a, b.triangle(i)), i);
+    double bound;
+    if (detail::overlap_with_depth_bound(a, b.triangle(i), &bound)) cands.push_back({bound, i});
     return false;
   });
+  std::sort(cands.begin(), cands.end(), [](const Cand& x, const Cand& y) {
+    return x.bound > y.bound || (x.bound == y.bound && x.index < y.index);
+  });
+  Deepest d;
+  for (const Cand& c : cands) {
+    if (d.best.hit && c.bound < d.best.depth) break;
+    d.consider(collide(a, b.triangle(c.index)), c.index);
+  }
   if (d.best.hit && triangle) *triangle = d.index;
   return d.best;
 }

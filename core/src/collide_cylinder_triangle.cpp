@@ -413,6 +413,25 @@ bool overlap_with_stage(const Cylinder& cyl, const Triangle& tri, TriCapStage st
   return decide(TriSpace(sc.in(cyl), sc.in(tri)), stage).hit;
 }
 
+bool overlap_with_depth_bound(const Cylinder& cyl, const Triangle& tri, double* bound) {
+  if (!is_valid(cyl) || !is_valid(tri)) return false;
+  const SceneScale sc(std::max(largest(cyl), largest(tri)));
+  const TriSpace s(sc.in(cyl), sc.in(tri));
+  if (!decide(s, TriCapStage::Exact).hit) return false;
+  double o = std::min(overlap_along(s, s.u), overlap_along(s, -s.u));
+  auto both = [&](Vec3 w) { o = std::min(o, std::min(overlap_along(s, w), overlap_along(s, -w))); };
+  if (s.flat()) both(detail::normalized(s.nt));
+  for (int k = 0; k < 3; ++k) {  // side x edge, as collide_scaled
+    const Vec3 e = s.V[k == 2 ? 0 : k + 1] - s.V[k];
+    if (!(max_abs(e) > 0)) continue;
+    const Vec3 x = cross(s.u, detail::normalized(e));
+    both(max_abs(x) > 0 ? detail::normalized(x) : detail::unit_perpendicular_part(s.V[k], s.u));
+  }
+  o = std::min(std::max(o, 0.0), std::numeric_limits<double>::max());
+  *bound = std::min(sc.out(o), std::numeric_limits<double>::max());
+  return true;
+}
+
 Contact collide_with_stage(const Cylinder& cyl, const Triangle& tri, TriCapStage stage) {
   if (!is_valid(cyl) || !is_valid(tri)) return {};
   const SceneScale sc(std::max(largest(cyl), largest(tri)));

@@ -15,11 +15,14 @@
 // cylinder's bounding capsule, taken conservatively as the axis segment
 // against each box grown by r plus a margin of 2^-30 times the scene's
 // magnitude (a box the capsule meets is never skipped, whatever the
-// rounding). Narrow phase: the triangle query on every face of every leaf
-// reached; `overlap` stops at the first hit. The answers are therefore
-// bit-identical to the brute force over all faces in index order
-// (`overlap_brute_force`, `collide_brute_force`), which the properties
-// check.
+// rounding). Narrow phase: the triangle query's verdict on every face of
+// every leaf reached; `overlap` stops at the first hit. `collide` bounds the
+// depth of each overlapping face from above (the overlap along +-u, +-its
+// normal and +-u x each edge, which the triangle query also takes) and runs the full
+// triangle collide in decreasing order of the bound, until the bound falls
+// below the deepest depth found. The answers are therefore bit-identical to
+// the brute force over all faces in index order (`overlap_brute_force`,
+// `collide_brute_force`), which the properties check.
 //
 // Invalid input (an invalid cylinder, a non-finite vertex, an index out of
 // range) gives "no overlap".
