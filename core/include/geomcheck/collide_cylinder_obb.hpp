@@ -41,8 +41,10 @@
 //   - rim x box edge (curved): for the rim at angle theta and an edge along
 //     box axis j, n(theta) is perpendicular to the rim tangent and to the
 //     edge; the overlap along n(theta) has a slope proportional to a
-//     trigonometric polynomial of degree 2 in theta, whose roots (at most
-//     four) are bracketed on 32 angles and refined by Newton / Illinois.
+//     trigonometric polynomial of degree 2 in theta: a quartic in
+//     tan(phi / 2), whose real roots are isolated by its derivatives' and
+//     refined by bracketed Newton, plus a local cubic at each tip of the
+//     rim's projection where roots crowd (detail/rim_edge.hpp).
 //     Only edges that pass within the best overlap so far of the rim circle
 //     are searched (a minimal translation on such a patch moves that edge
 //     onto the rim), and none whose own points lie that deep inside.

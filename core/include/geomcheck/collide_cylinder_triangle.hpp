@@ -41,7 +41,8 @@
 //   - side x vertex: the radial direction through each vertex within the
 //     best overlap so far of the side;
 //   - rim x edge (curved): the roots of a trigonometric polynomial of degree
-//     2 in the rim angle, bracketed and refined by Newton / Illinois, for
+//     2 in the rim angle (a quartic in tan(phi / 2), and a local cubic at
+//     the tips of the rim's projection), for
 //     edges passing within the best overlap so far of the rim circle (the
 //     search shared with collide_cylinder_obb, detail/rim_edge.hpp).
 // `depth` is always the overlap of the shapes along `normal`.
