@@ -95,8 +95,10 @@ bool fast_contact(const Cylinder& cyl, const Sphere& s, const Axial& a, Contact&
   const Vec3 w = a.m - (t / dd) * a.d;  // from the axis to the centre
   // Radial direction: w re-projected (perpendicular to rounding) and
   // normalised by its own length (w carries up to eps |m| of rounding).
+  // Its squared length may be subnormal where the radius is tiny against the
+  // axis after rescaling (regression 0005): normalized() scales it first.
   const Vec3 wp = w - dot(w, u) * u;
-  const Vec3 rad = (1.0 / std::sqrt(dot(wp, wp))) * wp;
+  const Vec3 rad = detail::normalized(wp);
   if (t >= 0 && t <= dd && a.cr2 <= cyl.r * cyl.r * dd) {
     // Centre inside: leave through the nearer cap or the side. (rho and the
     // inside test round differently: the side gap is clamped at zero.)
