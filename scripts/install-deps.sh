@@ -8,6 +8,7 @@ PKGS=(
   libgtest-dev libgmock-dev librapidcheck-dev libbenchmark-dev
   libcgal-dev libfcl-dev libeigen3-dev libboost-dev libgmp-dev libmpfr-dev
   python3
+  chromium
 )
 missing=()
 for p in "${PKGS[@]}"; do

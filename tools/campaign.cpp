@@ -15,6 +15,7 @@
 
 #include <unistd.h>
 
+#include "draw.hpp"
 #include "generators.hpp"
 #include "geomcheck/casefile.hpp"
 #include "geomcheck/properties/tolerances.hpp"
@@ -99,6 +100,8 @@ struct QueryReport {
   std::vector<std::string> fcl_cases;  // FCL disagreements beyond the band, saved
   double prod_ns = NAN, oracle_us = NAN;
   std::vector<std::string> counterexamples;
+  std::vector<std::string> drawings;      // production's counterexamples, drawn (first 12)
+  std::vector<std::string> fcl_drawings;  // FCL's disagreements beyond the band, drawn (first 6)
   std::map<std::string, int> failures_by_property;
   Tolerances tol{};
 };
@@ -212,6 +215,11 @@ QueryReport run_query(const CampaignOptions& opt, const std::filesystem::path& o
                                         "FCL: " + r.fcl.text + "; oracle: " + e.truth_text);
               std::string err;
               if (save_case(dir / name, f, err)) rep.fcl_cases.push_back((dir / name).string());
+              if (rep.fcl_drawings.size() < 6)
+                rep.fcl_drawings.push_back(draw::views(
+                    cases[r.index].first.a, cases[r.index].first.b,
+                    html(std::string("case ") + name + ": FCL " + (r.fcl.hit ? "hit" : "no hit") + " (" + r.fcl.text +
+                         "); oracle: " + e.truth_text)));
             }
           }
         }
@@ -235,6 +243,10 @@ QueryReport run_query(const CampaignOptions& opt, const std::filesystem::path& o
         f.oracle_verdict = info(Q).kind == QueryKind::Collide ? oracle::to_string(e.verdict) : (e.truth_hit ? "hit" : "miss");
         std::string err;
         if (save_case(path, f, err)) rep.counterexamples.push_back(path.string());
+        if (rep.drawings.size() < 12)
+          rep.drawings.push_back(draw::views(cases[r.index].first.a, cases[r.index].first.b,
+                                             html(std::string("case ") + name + ": " + r.failure->property + ": " +
+                                                  r.failure->detail + "; oracle: " + e.truth_text)));
       }
     }
   }
@@ -342,7 +354,9 @@ int run_campaign(const CampaignOptions& opt) {
   h << "<!doctype html><html lang='en'><head><meta charset='utf-8'><title>geomcheck campaign report</title>"
        "<style>body{font-family:sans-serif;margin:2em;max-width:1100px}table{border-collapse:collapse;margin:1em 0}"
        "td,th{border:1px solid #bbb;padding:4px 8px;text-align:right}th{background:#eee}td.l,th.l{text-align:left}"
-       ".bad{color:#b00;font-weight:bold}.ok{color:#070}</style></head><body>"
+       ".bad{color:#b00;font-weight:bold}.ok{color:#070}figure.cx{margin:1em 0;border-top:1px solid #ddd}"
+       "figure.cx svg{margin-right:6px}figcaption{font-size:12px;margin:4px 0;word-break:break-all}"
+       ".legend{font-size:12px;margin:2px 0}</style></head><body>"
        "<h1>geomcheck campaign report</h1><p>seed <code>"
     << opt.seed << "</code>, " << html(per_query) << ". Errors are multiples of the case scale "
        "(largest coordinate magnitude or extent). Rerun: <code>" << html(rerun) << "</code></p>";
@@ -385,7 +399,13 @@ int run_campaign(const CampaignOptions& opt) {
       for (const auto& [k, v] : r.failures_by_property) h << "<li>" << html(k) << ": " << v << "</li>";
       h << "</ul><p>counterexamples (replay with <code>geomcheck replay FILE</code>):</p><ul>";
       for (const auto& c : r.counterexamples) h << "<li><code>" << html(c) << "</code></li>";
-      h << "</ul>";
+      h << "</ul><h3>counterexamples drawn (first " << r.drawings.size() << ")</h3>";
+      for (const auto& d : r.drawings) h << d;
+    }
+    if (!r.fcl_drawings.empty()) {
+      h << "<h3>FCL's disagreements beyond the band, drawn (first " << r.fcl_drawings.size()
+        << "; case files under <code>fcl-disagreements/" << r.name << "/</code>)</h3>";
+      for (const auto& d : r.fcl_drawings) h << d;
     }
   }
   h << "</body></html>\n";

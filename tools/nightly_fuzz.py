@@ -200,9 +200,8 @@ def slug_of(sig):
 def known_signatures(regressions):
     """Signatures already filed, read back from the case files themselves."""
     known = {}
-    if not os.path.isdir(regressions):
-        return known
-    for root, _, files in os.walk(regressions):
+    raw = os.path.join(os.path.dirname(regressions), "regressions-raw")
+    for root, _, files in [w for d in (regressions, raw) if os.path.isdir(d) for w in os.walk(d)]:
         for n in files:
             p = os.path.join(root, n)
             try:
@@ -210,7 +209,7 @@ def known_signatures(regressions):
                     for line in f:
                         m = re.match(r"(?:note|#) nightly-signature (\S+) (.*)$", line.rstrip("\n"))
                         if m:
-                            known[(m.group(1), m.group(2))] = os.path.relpath(p, regressions)
+                            known[(m.group(1), m.group(2))] = os.path.relpath(p, os.path.dirname(regressions))
             except OSError:
                 pass
     return known
@@ -249,7 +248,7 @@ def process_findings(t, args, known, stamp, summary):
             check_stop()
             known[key] = case
             summary["new"].append({"signature": sig, "case": case, "input": n})
-            log(f"  NEW {t['name']}: {sig} -> {os.path.join(args.regressions, case)}")
+            log(f"  NEW {t['name']}: {sig} -> {os.path.join(os.path.dirname(args.regressions), case)}")
         os.replace(path, os.path.join(done, n))
 
 
@@ -291,13 +290,14 @@ def file_finding(t, args, path, name, sig, text, stamp):
         os.remove(case_tmp)
     else:
         # A target without a registered query (the case-file parser, the
-        # mesh): the raw input, bit-exact, replayed by the fuzz preset's
-        # regression test; its signature in a sidecar text file.
-        folder = os.path.join(args.regressions, t["name"])
+        # mesh): the raw input, bit-exact, in REGRESSIONS/../regressions-raw/T/
+        # (replayed through the target by the fuzz preset's ctest), its
+        # signature in a text file beside it.
+        folder = os.path.join(os.path.dirname(args.regressions), "regressions-raw", t["name"])
         dest = next_case_path(folder, slug_of(sig), ".input")
         write_atomic(dest + ".txt", "".join("# " + m + "\n" for m in marks) + "\n" + text[-4000:])
         write_atomic(dest, data, "wb")
-    return os.path.relpath(dest, args.regressions)
+    return os.path.relpath(dest, os.path.dirname(args.regressions))
 
 
 # ---------------------------------------------------------------- fuzzing

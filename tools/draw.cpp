@@ -1,0 +1,257 @@
+#include "draw.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <sstream>
+#include <vector>
+
+#include "geomcheck/cast_segment_cylinder.hpp"
+#include "geomcheck/collide_cylinder_capsule.hpp"
+#include "geomcheck/collide_cylinder_obb.hpp"
+#include "geomcheck/collide_cylinder_sphere.hpp"
+#include "geomcheck/collide_cylinder_triangle.hpp"
+#include "geomcheck/sweep_sphere_cylinder.hpp"
+
+namespace geomcheck::draw {
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+constexpr int kRim = 48;
+
+// A shape as the views see it: point groups whose projected convex hull is
+// the shape's silhouette, and polylines drawn over it.
+struct Figure {
+  std::vector<std::vector<Vec3>> hulls;
+  std::vector<std::pair<std::vector<Vec3>, bool>> lines;  // points, closed
+};
+
+std::vector<Vec3> circle(Vec3 c, Vec3 e1, Vec3 e2, double r) {
+  std::vector<Vec3> v;
+  for (int i = 0; i < kRim; ++i) {
+    const double a = 2 * kPi * i / kRim;
+    v.push_back(c + (r * std::cos(a)) * e1 + (r * std::sin(a)) * e2);
+  }
+  return v;
+}
+
+// Ball samples whose projection onto any coordinate plane has the disc as hull.
+std::vector<Vec3> ball(Vec3 c, double r) {
+  std::vector<Vec3> v;
+  const Vec3 x{1, 0, 0}, y{0, 1, 0}, z{0, 0, 1};
+  for (auto [e1, e2] : {std::pair{x, y}, std::pair{x, z}, std::pair{y, z}}) {
+    const auto s = circle(c, e1, e2, r);
+    v.insert(v.end(), s.begin(), s.end());
+  }
+  return v;
+}
+
+Figure figure(const Cylinder& c) {
+  Figure f;
+  const Vec3 d = c.q - c.p;
+  const double l = length(d);
+  const Vec3 u = l > 0 && std::isfinite(l) ? (1.0 / l) * d : Vec3{0, 0, 1};
+  const Vec3 e1 = any_perpendicular(u), e2 = cross(u, e1);
+  auto r1 = circle(c.p, e1, e2, c.r), r2 = circle(c.q, e1, e2, c.r);
+  std::vector<Vec3> all = r1;
+  all.insert(all.end(), r2.begin(), r2.end());
+  f.hulls.push_back(all);
+  f.lines.push_back({r1, true});
+  f.lines.push_back({r2, true});
+  f.lines.push_back({{c.p, c.q}, false});  // the axis
+  return f;
+}
+Figure figure(const Sphere& s) {
+  Figure f;
+  f.hulls.push_back(ball(s.c, s.r));
+  return f;
+}
+Figure figure(const Segment& s) {
+  Figure f;
+  f.lines.push_back({{s.a, s.b}, false});
+  return f;
+}
+Figure figure(const Capsule& c) {
+  Figure f;
+  auto v = ball(c.p, c.r), w = ball(c.q, c.r);
+  v.insert(v.end(), w.begin(), w.end());
+  f.hulls.push_back(v);
+  f.lines.push_back({{c.p, c.q}, false});
+  return f;
+}
+Figure figure(const MovingSphere& m) {
+  Figure f;
+  f.hulls.push_back(ball(m.c, m.r));  // the start
+  auto v = ball(m.c, m.r), w = ball(m.c + m.delta, m.r);
+  v.insert(v.end(), w.begin(), w.end());
+  f.lines.push_back({{m.c, m.c + m.delta}, false});  // the path of the centre
+  f.hulls.push_back(v);                               // the swept volume
+  return f;
+}
+Figure figure(const Obb& b) {
+  Figure f;
+  std::vector<Vec3> k;
+  for (int i = 0; i < 8; ++i)
+    k.push_back(b.c + ((i & 1 ? 1 : -1) * b.e.x) * b.axes[0] + ((i & 2 ? 1 : -1) * b.e.y) * b.axes[1] +
+                ((i & 4 ? 1 : -1) * b.e.z) * b.axes[2]);
+  f.hulls.push_back(k);
+  for (int i = 0; i < 8; ++i)
+    for (int bit = 1; bit < 8; bit <<= 1)
+      if (!(i & bit)) f.lines.push_back({{k[i], k[i | bit]}, false});
+  return f;
+}
+Figure figure(const Triangle& t) {
+  Figure f;
+  f.hulls.push_back({t.a, t.b, t.c});
+  f.lines.push_back({{t.a, t.b, t.c}, true});
+  return f;
+}
+
+struct P2 { double x, y; };
+double cross2(P2 o, P2 a, P2 b) { return (a.x - o.x) * (b.y - o.y) - (a.y - o.y) * (b.x - o.x); }
+
+std::vector<P2> hull2(std::vector<P2> p) {  // Andrew's monotone chain
+  std::sort(p.begin(), p.end(), [](P2 a, P2 b) { return a.x < b.x || (a.x == b.x && a.y < b.y); });
+  if (p.size() < 3) return p;
+  std::vector<P2> h(2 * p.size());
+  std::size_t k = 0;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    while (k >= 2 && cross2(h[k - 2], h[k - 1], p[i]) <= 0) --k;
+    h[k++] = p[i];
+  }
+  for (std::size_t i = p.size() - 1, t = k + 1; i-- > 0;) {
+    while (k >= t && cross2(h[k - 2], h[k - 1], p[i]) <= 0) --k;
+    h[k++] = p[i];
+  }
+  h.resize(k - 1);
+  return h;
+}
+
+struct View {
+  const char* name;
+  int i, j;  // coordinates shown: 0 x, 1 y, 2 z
+  const char* axes;
+};
+constexpr View kViews[] = {{"top", 0, 1, "x \u2192, y \u2191"}, {"front", 0, 2, "x \u2192, z \u2191"}, {"side", 1, 2, "y \u2192, z \u2191"}};
+
+double coord(Vec3 v, int i) { return i == 0 ? v.x : i == 1 ? v.y : v.z; }
+
+std::string num(double x) {
+  char b[32];
+  std::snprintf(b, sizeof b, "%.2f", x);
+  return b;
+}
+
+std::string fmt3(double x) {
+  char b[32];
+  std::snprintf(b, sizeof b, "%.3g", x);
+  return b;
+}
+
+std::string render(const Figure (&shapes)[2], const Answer& ans, const std::string& title) {
+  static const char* kFill[2] = {"rgba(60,110,200,0.25)", "rgba(230,140,30,0.25)"};
+  static const char* kStroke[2] = {"#2c5aa0", "#c06a00"};
+  constexpr double W = 220, M = 12;
+  std::ostringstream o;
+  o << "<figure class='cx'><figcaption>" << title << "</figcaption>";
+  for (const View& v : kViews) {
+    // Fit: the bounds of every finite projected point, equal scales.
+    double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
+    auto grow = [&](Vec3 p) {
+      const double a = coord(p, v.i), b = coord(p, v.j);
+      if (!std::isfinite(a) || !std::isfinite(b)) return;
+      lo[0] = std::min(lo[0], a), hi[0] = std::max(hi[0], a), lo[1] = std::min(lo[1], b), hi[1] = std::max(hi[1], b);
+    };
+    for (const Figure& f : shapes) {
+      for (const auto& h : f.hulls)
+        for (Vec3 p : h) grow(p);
+      for (const auto& l : f.lines)
+        for (Vec3 p : l.first) grow(p);
+    }
+    if (ans.hit) grow(ans.point);
+    o << "<svg width='" << W << "' height='" << W + 16 << "' role='img' viewBox='0 0 " << W << ' ' << W + 16
+      << "'><title>" << v.name << " view</title><rect x='0' y='0' width='" << W << "' height='" << W
+      << "' fill='#fafafa' stroke='#ccc'/>";
+    const double span = std::max(hi[0] - lo[0], hi[1] - lo[1]);
+    if (!(span >= 0) || !std::isfinite(span)) {
+      o << "<text x='10' y='110' font-size='11'>nothing finite to draw</text></svg>";
+      continue;
+    }
+    const double s = span > 0 ? (W - 2 * M) / span : 1;
+    const double cx = 0.5 * (lo[0] + hi[0]), cy = 0.5 * (lo[1] + hi[1]);
+    auto X = [&](double a) { return W / 2 + (a - cx) * s; };
+    auto Y = [&](double b) { return W / 2 - (b - cy) * s; };
+    auto pt = [&](Vec3 p) { return P2{X(coord(p, v.i)), Y(coord(p, v.j))}; };
+    auto finite = [](P2 p) { return std::isfinite(p.x) && std::isfinite(p.y); };
+    for (int k = 0; k < 2; ++k) {
+      for (const auto& h : shapes[k].hulls) {
+        std::vector<P2> q;
+        for (Vec3 p : h)
+          if (finite(pt(p))) q.push_back(pt(p));
+        const auto hh = hull2(q);
+        o << "<polygon fill='" << kFill[k] << "' stroke='" << kStroke[k] << "' stroke-width='1' points='";
+        for (P2 p : hh) o << num(p.x) << ',' << num(p.y) << ' ';
+        o << "'/>";
+      }
+      for (const auto& [pts, closed] : shapes[k].lines) {
+        o << "<" << (closed ? "polygon" : "polyline") << " fill='none' stroke='" << kStroke[k]
+          << "' stroke-width='0.8' stroke-dasharray='3,2' points='";
+        for (Vec3 p : pts)
+          if (finite(pt(p))) o << num(pt(p).x) << ',' << num(pt(p).y) << ' ';
+        o << "'/>";
+      }
+    }
+    if (ans.hit && finite(pt(ans.point))) {
+      const P2 a = pt(ans.point);
+      const double nx = coord(ans.normal, v.i), ny = coord(ans.normal, v.j);
+      o << "<circle cx='" << num(a.x) << "' cy='" << num(a.y) << "' r='3' fill='#d00'/>";
+      if (std::isfinite(nx) && std::isfinite(ny))
+        o << "<line x1='" << num(a.x) << "' y1='" << num(a.y) << "' x2='" << num(a.x + 40 * nx) << "' y2='"
+          << num(a.y - 40 * ny) << "' stroke='#d00' stroke-width='1.5'/>";
+    }
+    o << "<text x='4' y='" << W + 12 << "' font-size='10'>" << v.name << " (" << v.axes << "), 1 unit = " << fmt3(s)
+      << " px</text></svg>";
+  }
+  o << "<p class='legend'><span style='color:#2c5aa0'>&#9632; A</span> <span style='color:#c06a00'>&#9632; B</span> "
+       "<span style='color:#d00'>&#9679; "
+    << (ans.label.empty() ? "production" : ans.label) << "</span></p></figure>";
+  return o.str();
+}
+
+std::string fmt(double x) {
+  char b[32];
+  std::snprintf(b, sizeof b, "%.6g", x);
+  return b;
+}
+Answer from_contact(const Contact& k) {
+  return {k.hit, k.point, k.normal,
+          k.hit ? "production: contact, depth " + fmt(k.depth) + " (point and normal)" : "production: no contact"};
+}
+Answer from_cast(const CastHit& h) {
+  return {h.hit, h.point, h.normal, h.hit ? "production: hit at t = " + fmt(h.t) + " (point and normal)" : "production: miss"};
+}
+
+}  // namespace
+
+Answer production_answer(const Cylinder& a, const Sphere& b) { return from_contact(collide(a, b)); }
+Answer production_answer(const Segment& a, const Cylinder& b) { return from_cast(cast(a, b)); }
+Answer production_answer(const Cylinder& a, const Capsule& b) { return from_contact(collide(a, b)); }
+Answer production_answer(const MovingSphere& a, const Cylinder& b) { return from_cast(sweep(a, b)); }
+Answer production_answer(const Cylinder& a, const Obb& b) { return from_contact(collide(a, b)); }
+Answer production_answer(const Cylinder& a, const Triangle& b) { return from_contact(collide(a, b)); }
+
+template <class A, class B>
+std::string views(const A& a, const B& b, const std::string& title) {
+  const Figure shapes[2] = {figure(a), figure(b)};
+  return render(shapes, production_answer(a, b), title);
+}
+
+template std::string views(const Cylinder&, const Sphere&, const std::string&);
+template std::string views(const Segment&, const Cylinder&, const std::string&);
+template std::string views(const Cylinder&, const Capsule&, const std::string&);
+template std::string views(const MovingSphere&, const Cylinder&, const std::string&);
+template std::string views(const Cylinder&, const Obb&, const std::string&);
+template std::string views(const Cylinder&, const Triangle&, const std::string&);
+
+}  // namespace geomcheck::draw

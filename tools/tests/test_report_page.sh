@@ -1,0 +1,36 @@
+#!/usr/bin/env bash
+# geomcheck — the campaign's HTML report as a person sees it: a small
+# campaign (fixed seed) whose FCL disagreements are drawn, the page rendered
+# in headless Chromium (screenshot and DOM), and checked: it renders with no
+# console message, the screenshot is a real image, and the
+# page holds the report's parts (the query's table, histograms, the drawn
+# counterexamples in three views each).
+# usage: test_report_page.sh GEOMCHECK OUT_DIR
+set -u
+tool=$1 out=$2
+browser=$(command -v chromium || command -v chromium-browser || true)
+if [ -z "$browser" ]; then echo "SKIP: no chromium (apt-get install chromium)"; exit 77; fi
+rm -rf "$out"; mkdir -p "$out"
+fail() { echo "FAIL: $*"; exit 1; }
+"$tool" campaign --seed 20261121 --cases 1500 --query cast_segment_cylinder --no-progress --out "$out/report" \
+  > "$out/campaign.log" 2>&1 || { cat "$out/campaign.log"; fail "campaign failed"; }
+page="$out/report/report.html"
+flags=(--headless --no-sandbox --disable-gpu --disable-quic --no-first-run --disable-background-networking
+       --disable-component-update --disable-sync --hide-scrollbars --user-data-dir="$out/profile"
+       --enable-logging=stderr --v=0)
+timeout 120 "$browser" "${flags[@]}" --window-size=1200,2400 --screenshot="$out/report.png" "file://$page" \
+  > "$out/chromium.log" 2>&1
+timeout 120 "$browser" "${flags[@]}" --dump-dom "file://$page" > "$out/dom.html" 2>> "$out/chromium.log"
+[ -s "$out/report.png" ] || { cat "$out/chromium.log"; fail "no screenshot"; }
+[ "$(head -c 8 "$out/report.png" | od -An -tx1 | tr -d ' \n')" = "89504e470d0a1a0a" ] || fail "the screenshot is not a PNG"
+size=$(stat -c %s "$out/report.png")
+[ "$size" -gt 20000 ] || fail "the screenshot is only $size bytes: a blank page?"
+# The page has no script: any console line (an error, a failed load) is a defect.
+if grep -E "CONSOLE|Uncaught|Failed to load" "$out/chromium.log"; then fail "the page logged to the console (above)"; fi
+grep -q "<h2 id=\"cast_segment_cylinder\">" "$out/dom.html" || fail "no section for the query"
+figures=$(grep -o "<figure class=\"cx\">" "$out/dom.html" | wc -l)
+views=$(grep -o "<title>[a-z]* view</title>" "$out/dom.html" | wc -l)
+[ "$figures" -gt 0 ] || fail "no counterexample drawn (FCL's cast disagreements are expected at this seed)"
+[ "$views" -eq $((3 * figures)) ] || fail "$figures figures but $views views (three each expected)"
+grep -q "log10 histogram" "$out/dom.html" || fail "no histogram"
+echo "report page: $figures counterexamples drawn in $views views, screenshot $out/report.png ($size bytes), no console errors"
