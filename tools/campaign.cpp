@@ -76,6 +76,12 @@ std::string jstr(const std::string& s) {
   }
   return o + "\"";
 }
+std::string hnum(double x) {  // for a table cell: three digits, a dash for none
+  if (!std::isfinite(x)) return "&ndash;";
+  char b[32];
+  std::snprintf(b, sizeof b, "%.3g", x);
+  return b;
+}
 std::string html(const std::string& s) {
   std::string o;
   for (char c : s) {
@@ -360,6 +366,26 @@ int run_campaign(const CampaignOptions& opt) {
        "<h1>geomcheck campaign report</h1><p>seed <code>"
     << opt.seed << "</code>, " << html(per_query) << ". Errors are multiples of the case scale "
        "(largest coordinate magnitude or extent). Rerun: <code>" << html(rerun) << "</code></p>";
+  // FCL as a subject: one row per query, production beside it.
+  h << "<h2 id='precision'>Precision table: production and FCL against the exact oracle</h2>"
+       "<p>Errors are multiples of the case scale; verdicts count disagreements with the certified verdict where "
+       "the exact answer is farther than the band from touching. FCL's depth error is |FCL depth &minus; true "
+       "penetration depth| on cases both call overlapping; its t error is |t &minus; t<sub>exact</sub>|.</p>"
+       "<table style='font-size:13px'><tr><th class='l'>query</th><th>cases</th><th>production: verdicts beyond the band</th>"
+       "<th>production: depth max</th><th>production: normal max</th><th>FCL: answered</th>"
+       "<th>FCL: verdicts beyond the band</th><th>FCL: depth p50</th><th>p99</th><th>max</th>"
+       "<th>FCL: t p50</th><th>p99</th><th>max</th></tr>";
+  for (QueryReport& r : reps) {
+    auto rate = [&](int n, int of) { return std::to_string(n) + (of ? " (" + hnum(100.0 * n / of) + "%)" : ""); };
+    h << "<tr><td class='l'><a href='#" << r.name << "'>" << r.name << "</a></td><td>" << r.valid << "</td><td class='"
+      << (r.beyond ? "bad" : "ok") << "'>" << rate(r.beyond, r.valid) << "</td><td>" << hnum(r.depth.pct(1.0))
+      << "</td><td>" << hnum(r.normal.pct(1.0)) << "</td><td>" << r.fcl_ok << "</td><td class='"
+      << (r.fcl_beyond ? "bad" : "ok") << "'>" << rate(r.fcl_beyond, r.fcl_ok) << "</td><td>" << hnum(r.fcl_depth.pct(0.5))
+      << "</td><td>" << hnum(r.fcl_depth.pct(0.99)) << "</td><td>" << hnum(r.fcl_depth.pct(1.0)) << "</td><td>"
+      << hnum(r.fcl_t.pct(0.5)) << "</td><td>" << hnum(r.fcl_t.pct(0.99)) << "</td><td>" << hnum(r.fcl_t.pct(1.0))
+      << "</td></tr>";
+  }
+  h << "</table>";
   for (QueryReport& r : reps) {
     const bool clean = r.beyond == 0 && r.check_failures == 0;
     h << "<h2 id='" << r.name << "'>" << r.name << "</h2><p>" << html(r.summary) << "</p><p class='"
