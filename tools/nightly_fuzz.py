@@ -172,7 +172,7 @@ def merge_corpus(target, cur, work, pruned_dir, fuzz_flags):
 # ---------------------------------------------------------------- findings
 
 
-def signature(target_name, text, kind):
+def signature(text, kind):
     """What makes two findings the same bug."""
     m = re.search(r"==== geomcheck (\S+) property failed: (\S+)", text)
     if m:
@@ -236,7 +236,7 @@ def process_findings(t, args, known, stamp, summary):
         summary["inputs"] += 1
         rc, text = run([t["path"], *args.run_flags, path], timeout=300)
         check_stop()
-        sig = signature(t["name"], text, kind) if rc != 0 else None
+        sig = signature(text, kind) if rc != 0 else None
         if sig is None:
             summary["not_reproduced"] += 1
             sig = "not reproduced"
@@ -265,7 +265,7 @@ def file_finding(t, args, path, name, sig, text, stamp):
         check_stop()
         if os.path.exists(mini) and os.path.getsize(mini) > 0:
             rc, mtext = run([t["path"], *args.run_flags, mini], timeout=300)
-            if rc != 0 and signature(t["name"], mtext, "crash") == sig:
+            if rc != 0 and signature(mtext, "crash") == sig:
                 data_path, text = mini, mtext
     with open(data_path, "rb") as f:
         data = f.read()
