@@ -12,6 +12,7 @@
 #include <mutex>
 #include <sstream>
 #include <thread>
+#include <type_traits>
 
 #include <unistd.h>
 
@@ -101,16 +102,39 @@ struct QueryReport {
   double worst_margin = 0;
   Series depth, normal, point, t;
   int fcl_supported = 0, fcl_ok = 0, fcl_disagree = 0, fcl_beyond = 0;
-  Series fcl_depth;
+  Series fcl_depth, fcl_normal, fcl_point;  // the yardsticks of production's depth, normal, point
+  Series fcl_t_gap;  // production's t yardstick (the gap at FCL's t)
   Series fcl_t;  // |t_FCL - t_exact| (absolute, t in [0, 1])
-  std::vector<std::string> fcl_cases;  // FCL disagreements beyond the band, saved
+  Series fcl_distance;  // |FCL distance - certified distance| on separated pairs FCL calls separated
+  int fcl_distance_asked = 0, fcl_distance_beyond = 0;  // distance's verdict (< 0: meet) beyond the band
+  std::vector<std::string> fcl_cases;  // FCL disagreements beyond the band, saved (all of them)
+  std::map<std::string, int> fcl_drawn;  // per kind of disagreement (the first 3 of each are drawn)
   double prod_ns = NAN, oracle_us = NAN;
   std::vector<std::string> counterexamples;
   std::vector<std::string> drawings;      // production's counterexamples, drawn (first 12)
-  std::vector<std::string> fcl_drawings;  // FCL's disagreements beyond the band, drawn (first 6)
+  std::vector<std::string> fcl_drawings;  // FCL's disagreements beyond the band, drawn (the first 3 of each kind)
   std::map<std::string, int> failures_by_property;
   Tolerances tol{};
 };
+
+// FCL's answer, drawn beside production's (purple).
+template <class Case>
+draw::Mark fcl_mark(const Case& c, const PeerAnswer& p) {
+  constexpr const char* kColour = "#83c";
+  const Vec3 nowhere{NAN, NAN, NAN};
+  char b[96];
+  if (!p.hit) return {draw::Mark::Kind::PointNormal, nowhere, Vec3{}, 0, kColour, "FCL: " + html(p.text)};
+  if constexpr (std::is_same_v<Case, SegmentCylinderCase>) {
+    std::snprintf(b, sizeof b, "FCL: hit at t = %.6g (S(t); FCL gives no point)", p.t);
+    return {draw::Mark::Kind::PointNormal, c.a.a + p.t * (c.a.b - c.a.a), Vec3{}, 0, kColour, b};
+  } else if constexpr (std::is_same_v<Case, SweepCylinderCase>) {
+    std::snprintf(b, sizeof b, "FCL: hit at t = %.6g (the ball then)", p.t);
+    return {draw::Mark::Kind::Ball, c.a.c + p.t * c.a.delta, Vec3{}, c.a.r, kColour, b};
+  } else {
+    std::snprintf(b, sizeof b, "FCL: contact, depth %.6g (point and normal)", p.contact.depth);
+    return {draw::Mark::Kind::PointNormal, p.contact.point, p.contact.normal, 0, kColour, b};
+  }
+}
 
 template <QueryId Q>
 QueryReport run_query(const CampaignOptions& opt, const std::filesystem::path& out_dir, int threads) {
@@ -153,9 +177,9 @@ QueryReport run_query(const CampaignOptions& opt, const std::filesystem::path& o
       Row& r = rows[i];
       r.index = i;
       r.tag = cases[i].second;
-      r.e = evaluate(cases[i].first);
-      r.failure = check_all(cases[i].first);
       r.fcl = peer(cases[i].first);
+      r.e = evaluate_with_peer(cases[i].first, r.fcl);
+      r.failure = check_all(cases[i].first);
       r.run = true;
       ++done;
     }
@@ -205,34 +229,49 @@ QueryReport run_query(const CampaignOptions& opt, const std::filesystem::path& o
       ++rep.fcl_supported;
       if (r.fcl.ok) {
         ++rep.fcl_ok;
+        // Every FCL disagreement beyond the band is saved as a case file;
+        // the first few of each kind are drawn.
+        auto save_fcl = [&](const char* kind, const std::string& answer) {
+          const std::filesystem::path dir = out_dir / "fcl-disagreements" / rep.name;
+          std::filesystem::create_directories(dir);
+          char name[80];
+          std::snprintf(name, sizeof name, "%05d-fcl-%s.case", r.index, kind);
+          CaseFile f = from_case<Q>(cases[r.index].first,
+                                    "campaign seed=" + std::to_string(opt.seed) + " case=" + std::to_string(r.index),
+                                    e.truth_hit ? (info(Q).kind == QueryKind::Collide ? oracle::to_string(e.verdict) : "hit")
+                                                : (info(Q).kind == QueryKind::Collide ? "separated" : "miss"),
+                                    "FCL: " + r.fcl.text + "; oracle: " + e.truth_text);
+          std::string err;
+          if (save_case(dir / name, f, err)) rep.fcl_cases.push_back((dir / name).string());
+          else std::fprintf(stderr, "[campaign] cannot save %s: %s\n", (dir / name).string().c_str(), err.c_str());
+          if (rep.fcl_drawn[kind]++ < 3)
+            rep.fcl_drawings.push_back(draw::views(
+                cases[r.index].first.a, cases[r.index].first.b,
+                html(std::string("case ") + name + ": " + answer + " (" + r.fcl.text + "); oracle: " + e.truth_text),
+                {fcl_mark(cases[r.index].first, r.fcl)}));
+        };
         if (r.fcl.hit != e.truth_hit) {
           ++rep.fcl_disagree;
           if (!e.near_boundary) {  // the same band as production's
             ++rep.fcl_beyond;
-            if (rep.fcl_cases.size() < 20) {
-              const std::filesystem::path dir = out_dir / "fcl-disagreements" / rep.name;
-              std::filesystem::create_directories(dir);
-              char name[64];
-              std::snprintf(name, sizeof name, "%05d-fcl-%s.case", r.index, r.fcl.hit ? "false-hit" : "missed-hit");
-              CaseFile f = from_case<Q>(cases[r.index].first,
-                                        "campaign seed=" + std::to_string(opt.seed) + " case=" + std::to_string(r.index),
-                                        e.truth_hit ? (info(Q).kind == QueryKind::Collide ? oracle::to_string(e.verdict) : "hit")
-                                                    : (info(Q).kind == QueryKind::Collide ? "separated" : "miss"),
-                                        "FCL: " + r.fcl.text + "; oracle: " + e.truth_text);
-              std::string err;
-              if (save_case(dir / name, f, err)) rep.fcl_cases.push_back((dir / name).string());
-              if (rep.fcl_drawings.size() < 6)
-                rep.fcl_drawings.push_back(draw::views(
-                    cases[r.index].first.a, cases[r.index].first.b,
-                    html(std::string("case ") + name + ": FCL " + (r.fcl.hit ? "hit" : "no hit") + " (" + r.fcl.text +
-                         "); oracle: " + e.truth_text)));
-            }
+            save_fcl(r.fcl.hit ? "false-hit" : "missed-hit", r.fcl.hit ? "FCL hit" : "FCL no hit");
           }
         }
-        if (r.fcl.hit && e.truth_hit && std::isfinite(r.fcl.depth) && std::isfinite(e.signed_distance))
-          rep.fcl_depth.add(std::fabs(r.fcl.depth + e.signed_distance) / e.scale);
+        if (std::isfinite(r.fcl.distance) && (r.fcl.distance < 0) != e.truth_hit && !e.near_boundary)
+          save_fcl(r.fcl.distance < 0 ? "distance-says-meet" : "distance-says-apart",
+                   r.fcl.distance < 0 ? "FCL's distance: they meet" : "FCL's distance: separated");
+        rep.fcl_depth.add(e.peer.depth_err);
+        rep.fcl_normal.add(e.peer.normal_err);
+        rep.fcl_point.add(e.peer.point_err);
+        rep.fcl_t_gap.add(e.peer.t_err);
         if (r.fcl.hit && e.truth_hit && std::isfinite(r.fcl.t) && std::isfinite(e.t_true))
           rep.fcl_t.add(std::fabs(r.fcl.t - e.t_true));
+        if (std::isfinite(r.fcl.distance)) {
+          ++rep.fcl_distance_asked;
+          if ((r.fcl.distance < 0) != e.truth_hit && !e.near_boundary) ++rep.fcl_distance_beyond;
+          if (r.fcl.distance >= 0 && std::isfinite(e.distance))
+            rep.fcl_distance.add(std::fabs(r.fcl.distance - e.distance) / e.scale);
+        }
       }
     }
     if (r.failure) {
@@ -346,7 +385,16 @@ int run_campaign(const CampaignOptions& opt) {
        << ", \"disagreements\": " << r.fcl_disagree << ", \"beyond_band\": " << r.fcl_beyond << ",\n";
     write_series_json(js, "depth", r.fcl_depth);
     js << ",\n";
+    write_series_json(js, "normal", r.fcl_normal);
+    js << ",\n";
+    write_series_json(js, "point", r.fcl_point);
+    js << ",\n";
+    write_series_json(js, "t", r.fcl_t_gap);
+    js << ",\n";
     write_series_json(js, "t_abs", r.fcl_t);
+    js << ",\n      \"distance_asked\": " << r.fcl_distance_asked
+       << ", \"distance_verdicts_beyond_band\": " << r.fcl_distance_beyond << ",\n";
+    write_series_json(js, "distance", r.fcl_distance);
     js << ", \"cases\": [";
     for (std::size_t k = 0; k < r.fcl_cases.size(); ++k) js << (k ? ", " : "") << jstr(r.fcl_cases[k]);
     js << "]},\n      \"production_ns_per_query\": " << jnum(r.prod_ns) << ", \"oracle_us_per_case\": " << jnum(r.oracle_us)
@@ -366,23 +414,36 @@ int run_campaign(const CampaignOptions& opt) {
        "<h1>geomcheck campaign report</h1><p>seed <code>"
     << opt.seed << "</code>, " << html(per_query) << ". Errors are multiples of the case scale "
        "(largest coordinate magnitude or extent). Rerun: <code>" << html(rerun) << "</code></p>";
-  // FCL as a subject: one row per query, production beside it.
+  // FCL as a subject: production and FCL, a row each, per query.
   h << "<h2 id='precision'>Precision table: production and FCL against the exact oracle</h2>"
-       "<p>Errors are multiples of the case scale; verdicts count disagreements with the certified verdict where "
-       "the exact answer is farther than the band from touching. FCL's depth error is |FCL depth &minus; true "
-       "penetration depth| on cases both call overlapping; its t error is |t &minus; t<sub>exact</sub>|.</p>"
-       "<table style='font-size:13px'><tr><th class='l'>query</th><th>cases</th><th>production: verdicts beyond the band</th>"
-       "<th>production: depth max</th><th>production: normal max</th><th>FCL: answered</th>"
-       "<th>FCL: verdicts beyond the band</th><th>FCL: depth p50</th><th>p99</th><th>max</th>"
-       "<th>FCL: t p50</th><th>p99</th><th>max</th></tr>";
+       "<p>Every error is measured with the same exact yardstick for both engines, as a multiple of the case scale "
+       "(p50 / p99 / max over the cases where it applies). <b>verdicts</b>: disagreements with the certified "
+       "verdict where the exact answer is farther than the band from touching (collide: overlap or FCL's collide; "
+       "FCL's distance is counted apart: &lt; 0 meaning &lsquo;they meet&rsquo;). <b>depth</b>: distance of the "
+       "reported depth from the certified penetration depth. <b>normal</b>: how much farther the shapes overlap "
+       "along the reported normal than the true depth (0 for a minimal direction). <b>point</b>: how far the "
+       "reported point lies outside either shape. <b>distance</b>: |reported &minus; certified distance| on "
+       "separated pairs. <b>t</b>: the gap (or depth) of the segment point or ball at the reported t; "
+       "|&Delta;t| is FCL's t against the exact first touch, absolute.</p>"
+       "<table style='font-size:12px'><tr><th class='l'>query</th><th class='l'>engine</th><th>answered</th>"
+       "<th>verdicts beyond the band</th><th>depth</th><th>normal</th><th>point</th><th>distance</th>"
+       "<th>t</th><th>|&Delta;t|</th></tr>";
+  auto tri = [](Series& s) {
+    if (s.v.empty()) return std::string("&ndash;");
+    return hnum(s.pct(0.5)) + " / " + hnum(s.pct(0.99)) + " / " + hnum(s.pct(1.0));
+  };
   for (QueryReport& r : reps) {
     auto rate = [&](int n, int of) { return std::to_string(n) + (of ? " (" + hnum(100.0 * n / of) + "%)" : ""); };
-    h << "<tr><td class='l'><a href='#" << r.name << "'>" << r.name << "</a></td><td>" << r.valid << "</td><td class='"
-      << (r.beyond ? "bad" : "ok") << "'>" << rate(r.beyond, r.valid) << "</td><td>" << hnum(r.depth.pct(1.0))
-      << "</td><td>" << hnum(r.normal.pct(1.0)) << "</td><td>" << r.fcl_ok << "</td><td class='"
-      << (r.fcl_beyond ? "bad" : "ok") << "'>" << rate(r.fcl_beyond, r.fcl_ok) << "</td><td>" << hnum(r.fcl_depth.pct(0.5))
-      << "</td><td>" << hnum(r.fcl_depth.pct(0.99)) << "</td><td>" << hnum(r.fcl_depth.pct(1.0)) << "</td><td>"
-      << hnum(r.fcl_t.pct(0.5)) << "</td><td>" << hnum(r.fcl_t.pct(0.99)) << "</td><td>" << hnum(r.fcl_t.pct(1.0))
+    Series none;
+    h << "<tr><td class='l' rowspan='2'><a href='#" << r.name << "'>" << r.name << "</a></td><td class='l'>production</td><td>"
+      << r.valid << "</td><td class='" << (r.beyond ? "bad" : "ok") << "'>" << rate(r.beyond, r.valid) << "</td><td>"
+      << tri(r.depth) << "</td><td>" << tri(r.normal) << "</td><td>" << tri(r.point) << "</td><td>&ndash;</td><td>"
+      << tri(r.t) << "</td><td>&ndash;</td></tr>";
+    h << "<tr><td class='l'>FCL</td><td>" << r.fcl_ok << "</td><td class='" << (r.fcl_beyond || r.fcl_distance_beyond ? "bad" : "ok")
+      << "'>" << rate(r.fcl_beyond, r.fcl_ok);
+    if (r.fcl_distance_asked) h << "<br>distance: " << rate(r.fcl_distance_beyond, r.fcl_distance_asked);
+    h << "</td><td>" << tri(r.fcl_depth) << "</td><td>" << tri(r.fcl_normal) << "</td><td>" << tri(r.fcl_point)
+      << "</td><td>" << tri(r.fcl_distance) << "</td><td>" << tri(r.fcl_t_gap) << "</td><td>" << tri(r.fcl_t)
       << "</td></tr>";
   }
   h << "</table>";
@@ -418,6 +479,10 @@ int run_campaign(const CampaignOptions& opt) {
     row("point", r.point, r.tol.point);
     row("t", r.t, r.tol.t);
     row("FCL depth", r.fcl_depth, 0);
+    row("FCL normal", r.fcl_normal, 0);
+    row("FCL point", r.fcl_point, 0);
+    row("FCL distance", r.fcl_distance, 0);
+    row("FCL t", r.fcl_t_gap, 0);
     row("FCL |t - t_exact| (absolute)", r.fcl_t, 0);
     h << "</table>";
     if (!r.failures_by_property.empty()) {
@@ -429,8 +494,9 @@ int run_campaign(const CampaignOptions& opt) {
       for (const auto& d : r.drawings) h << d;
     }
     if (!r.fcl_drawings.empty()) {
-      h << "<h3>FCL's disagreements beyond the band, drawn (first " << r.fcl_drawings.size()
-        << "; case files under <code>fcl-disagreements/" << r.name << "/</code>)</h3>";
+      h << "<h3>FCL's disagreements beyond the band, drawn (" << r.fcl_drawings.size() << " of " << r.fcl_cases.size()
+        << "; every one saved under <code>fcl-disagreements/" << r.name
+        << "/</code>, replay with <code>geomcheck replay DIR</code>)</h3>";
       for (const auto& d : r.fcl_drawings) h << d;
     }
   }

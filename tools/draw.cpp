@@ -12,6 +12,8 @@
 #include "geomcheck/collide_cylinder_sphere.hpp"
 #include "geomcheck/collide_cylinder_triangle.hpp"
 #include "geomcheck/sweep_sphere_cylinder.hpp"
+#include "geomcheck/oracles/cast_segment_cylinder.hpp"
+#include "geomcheck/oracles/engine.hpp"
 
 namespace geomcheck::draw {
 
@@ -149,7 +151,9 @@ std::string fmt3(double x) {
   return b;
 }
 
-std::string render(const Figure (&shapes)[2], const Answer& ans, const std::string& title) {
+bool finite3(Vec3 v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
+
+std::string render(const Figure (&shapes)[2], const std::vector<Mark>& marks, const std::string& title) {
   static const char* kFill[2] = {"rgba(60,110,200,0.25)", "rgba(230,140,30,0.25)"};
   static const char* kStroke[2] = {"#2c5aa0", "#c06a00"};
   constexpr double W = 220, M = 12;
@@ -169,7 +173,11 @@ std::string render(const Figure (&shapes)[2], const Answer& ans, const std::stri
       for (const auto& l : f.lines)
         for (Vec3 p : l.first) grow(p);
     }
-    if (ans.hit) grow(ans.point);
+    for (const Mark& m : marks) {
+      if (!finite3(m.p)) continue;
+      grow(m.p);
+      if (m.kind == Mark::Kind::Arrow || m.kind == Mark::Kind::Segment) grow(m.q);
+    }
     o << "<svg width='" << W << "' height='" << W + 16 << "' role='img' viewBox='0 0 " << W << ' ' << W + 16
       << "'><title>" << v.name << " view</title><rect x='0' y='0' width='" << W << "' height='" << W
       << "' fill='#fafafa' stroke='#ccc'/>";
@@ -202,20 +210,42 @@ std::string render(const Figure (&shapes)[2], const Answer& ans, const std::stri
         o << "'/>";
       }
     }
-    if (ans.hit && finite(pt(ans.point))) {
-      const P2 a = pt(ans.point);
-      const double nx = coord(ans.normal, v.i), ny = coord(ans.normal, v.j);
-      o << "<circle cx='" << num(a.x) << "' cy='" << num(a.y) << "' r='3' fill='#d00'/>";
-      if (std::isfinite(nx) && std::isfinite(ny))
-        o << "<line x1='" << num(a.x) << "' y1='" << num(a.y) << "' x2='" << num(a.x + 40 * nx) << "' y2='"
-          << num(a.y - 40 * ny) << "' stroke='#d00' stroke-width='1.5'/>";
+    for (const Mark& m : marks) {
+      if (!finite3(m.p) || !finite(pt(m.p))) continue;  // a legend entry only
+      const P2 a = pt(m.p);
+      auto line = [&](P2 b) {
+        if (finite(b))
+          o << "<line x1='" << num(a.x) << "' y1='" << num(a.y) << "' x2='" << num(b.x) << "' y2='" << num(b.y)
+            << "' stroke='" << m.color << "' stroke-width='1.5'/>";
+      };
+      o << "<circle cx='" << num(a.x) << "' cy='" << num(a.y) << "' r='3' fill='" << m.color << "'/>";
+      switch (m.kind) {
+        case Mark::Kind::PointNormal: {
+          const double nx = coord(m.q, v.i), ny = coord(m.q, v.j);
+          if (std::isfinite(nx) && std::isfinite(ny) && (nx != 0 || ny != 0)) line({a.x + 40 * nx, a.y - 40 * ny});
+          break;
+        }
+        case Mark::Kind::Arrow:
+          line(pt(m.q));
+          break;
+        case Mark::Kind::Segment:
+          line(pt(m.q));
+          if (finite(pt(m.q)))
+            o << "<circle cx='" << num(pt(m.q).x) << "' cy='" << num(pt(m.q).y) << "' r='2.5' fill='" << m.color << "'/>";
+          break;
+        case Mark::Kind::Ball:
+          if (std::isfinite(m.r * s))
+            o << "<circle cx='" << num(a.x) << "' cy='" << num(a.y) << "' r='" << num(m.r * s) << "' fill='none' stroke='"
+              << m.color << "' stroke-width='1.2' stroke-dasharray='4,2'/>";
+          break;
+      }
     }
     o << "<text x='4' y='" << W + 12 << "' font-size='10'>" << v.name << " (" << v.axes << "), 1 unit = " << fmt3(s)
       << " px</text></svg>";
   }
-  o << "<p class='legend'><span style='color:#2c5aa0'>&#9632; A</span> <span style='color:#c06a00'>&#9632; B</span> "
-       "<span style='color:#d00'>&#9679; "
-    << (ans.label.empty() ? "production" : ans.label) << "</span></p></figure>";
+  o << "<p class='legend'><span style='color:#2c5aa0'>&#9632; A</span> <span style='color:#c06a00'>&#9632; B</span>";
+  for (const Mark& m : marks) o << "<br><span style='color:" << m.color << "'>&#9679; " << m.label << "</span>";
+  o << "</p></figure>";
   return o.str();
 }
 
@@ -241,17 +271,127 @@ Answer production_answer(const MovingSphere& a, const Cylinder& b) { return from
 Answer production_answer(const Cylinder& a, const Obb& b) { return from_contact(collide(a, b)); }
 Answer production_answer(const Cylinder& a, const Triangle& b) { return from_contact(collide(a, b)); }
 
-template <class A, class B>
-std::string views(const A& a, const B& b, const std::string& title) {
-  const Figure shapes[2] = {figure(a), figure(b)};
-  return render(shapes, production_answer(a, b), title);
+namespace {
+
+constexpr const char* kOracleColour = "#080";
+const Vec3 kNowhere{NAN, NAN, NAN};  // a mark with a legend entry only
+
+Vec3 dbl(const oracle::QVec& v) { return {oracle::to_double(v.x), oracle::to_double(v.y), oracle::to_double(v.z)}; }
+
+// The cylinder's farthest point along unit u, in doubles (for drawing only).
+Vec3 cylinder_support(const Cylinder& c, Vec3 u) {
+  const Vec3 d = c.q - c.p;
+  const Vec3 end = dot(d, u) >= 0 ? c.q : c.p;
+  const double l2 = dot(d, d);
+  const Vec3 radial = l2 > 0 ? u - (dot(u, d) / l2) * d : u;
+  const double rl = length(radial);
+  return rl > 0 ? end + (c.r / rl) * radial : end;
 }
 
-template std::string views(const Cylinder&, const Sphere&, const std::string&);
-template std::string views(const Segment&, const Cylinder&, const std::string&);
-template std::string views(const Cylinder&, const Capsule&, const std::string&);
-template std::string views(const MovingSphere&, const Cylinder&, const std::string&);
-template std::string views(const Cylinder&, const Obb&, const std::string&);
-template std::string views(const Cylinder&, const Triangle&, const std::string&);
+std::vector<Mark> engine_witness(const oracle::ConvexShape& a, const oracle::ConvexShape& b, const Cylinder* cyl,
+                                 const Vec3* hint) {
+  oracle::EngineOptions opt;
+  opt.rel_width = 1e-12;
+  const oracle::DistanceResult d = oracle::classify(a, b, opt);
+  switch (d.verdict) {
+    case oracle::Verdict::Separated:
+      if (d.witness_a && d.witness_b)
+        return {{Mark::Kind::Segment, dbl(*d.witness_a), dbl(*d.witness_b), 0, kOracleColour,
+                 "oracle: nearest points, distance " + fmt(oracle::to_double(d.distance.mid()))}};
+      return {{Mark::Kind::Segment, kNowhere, kNowhere, 0, kOracleColour, "oracle: separated"}};
+    case oracle::Verdict::Touching:
+      return {{Mark::Kind::PointNormal, d.common_point ? dbl(*d.common_point) : kNowhere, Vec3{}, 0, kOracleColour,
+               "oracle: touching (a common point)"}};
+    case oracle::Verdict::Overlapping: {
+      const oracle::PenetrationResult pd = oracle::penetration(a, b, 1e-20);
+      const Vec3 dir = dbl(pd.direction);
+      const double len = length(dir), depth = oracle::to_double(pd.depth.mid());
+      const bool have_dir = pd.overlapping && len > 0 && std::isfinite(depth);
+      // A point certified in both: the engine's, else the first candidate
+      // that passes the exact test (production's point, the middle of the
+      // translation from A's extreme point along the direction).
+      std::vector<Vec3> candidates;
+      if (d.common_point) candidates.push_back(dbl(*d.common_point));
+      if (hint) candidates.push_back(*hint);
+      Vec3 extreme = kNowhere;
+      if (have_dir && cyl) {
+        extreme = cylinder_support(*cyl, (1 / len) * dir);
+        candidates.push_back(extreme - (0.5 * depth / len) * dir);
+      }
+      Vec3 common = kNowhere;
+      for (Vec3 x : candidates)
+        if (finite3(x) && oracle::check_common_point(a, b, oracle::to_q(x))) {
+          common = x;
+          break;
+        }
+      if (!have_dir)
+        return {{Mark::Kind::PointNormal, common, Vec3{}, 0, kOracleColour, "oracle: overlapping (a certified common point)"}};
+      const Vec3 from = finite3(common) ? common : extreme;
+      return {{Mark::Kind::Arrow, from, from + (depth / len) * dir, 0, kOracleColour,
+               std::string("oracle: overlapping, depth ") + fmt(depth) + "; B's minimal translation out, drawn from " +
+                   (finite3(common) ? "a certified common point" : "A's extreme point along it")}};
+    }
+    default:
+      return {{Mark::Kind::PointNormal, kNowhere, Vec3{}, 0, kOracleColour, "oracle: undecided"}};
+  }
+}
+
+template <class B>
+std::vector<Mark> collide_witness(const Cylinder& a, const B& b) {
+  if (!is_valid(a) || !is_valid(b)) return {{Mark::Kind::PointNormal, kNowhere, Vec3{}, 0, kOracleColour, "oracle: invalid input"}};
+  const Answer ans = production_answer(a, b);
+  return engine_witness(oracle::make_shape(a), oracle::make_shape(b), &a, ans.hit ? &ans.point : nullptr);
+}
+
+}  // namespace
+
+std::vector<Mark> oracle_witness(const Cylinder& a, const Sphere& b) { return collide_witness(a, b); }
+std::vector<Mark> oracle_witness(const Cylinder& a, const Capsule& b) { return collide_witness(a, b); }
+std::vector<Mark> oracle_witness(const Cylinder& a, const Obb& b) { return collide_witness(a, b); }
+std::vector<Mark> oracle_witness(const Cylinder& a, const Triangle& b) { return collide_witness(a, b); }
+
+std::vector<Mark> oracle_witness(const Segment& s, const Cylinder& c) {
+  if (!is_valid(s) || !is_valid(c)) return {{Mark::Kind::PointNormal, kNowhere, Vec3{}, 0, kOracleColour, "oracle: invalid input"}};
+  const oracle::CastTruth t = oracle::solve_cast(s, c);
+  if (!t.hit) return {{Mark::Kind::PointNormal, kNowhere, Vec3{}, 0, kOracleColour, "oracle: miss"}};
+  const double tm = oracle::to_double(t.t.mid());
+  return {{Mark::Kind::PointNormal, s.a + tm * (s.b - s.a), Vec3{}, 0, kOracleColour,
+           std::string("oracle: first touch S(t), t = ") + fmt(tm) + " (" + oracle::to_string(t.feature) + ")"}};
+}
+
+std::vector<Mark> oracle_witness(const MovingSphere& m, const Cylinder& c) {
+  if (!is_valid(m) || !is_valid(c)) return {{Mark::Kind::PointNormal, kNowhere, Vec3{}, 0, kOracleColour, "oracle: invalid input"}};
+  const oracle::ImpactResult r =
+      oracle::time_of_impact(oracle::make_shape(Sphere{m.c, m.r}), oracle::to_q(m.delta), oracle::make_shape(c));
+  switch (r.kind) {
+    case oracle::ImpactResult::Kind::Hit: {
+      const double t = oracle::to_double(r.t.mid());
+      return {{Mark::Kind::Ball, m.c + t * m.delta, Vec3{}, m.r, kOracleColour, "oracle: the ball at its first touch, t = " + fmt(t)}};
+    }
+    case oracle::ImpactResult::Kind::StartsInside:
+      return {{Mark::Kind::Ball, m.c, Vec3{}, m.r, kOracleColour, "oracle: the ball starts in contact (t = 0)"}};
+    case oracle::ImpactResult::Kind::NoHit:
+      return {{Mark::Kind::PointNormal, kNowhere, Vec3{}, 0, kOracleColour, "oracle: miss"}};
+    default:
+      return {{Mark::Kind::PointNormal, kNowhere, Vec3{}, 0, kOracleColour, "oracle: undecided"}};
+  }
+}
+
+template <class A, class B>
+std::string views(const A& a, const B& b, const std::string& title, const std::vector<Mark>& extra) {
+  const Figure shapes[2] = {figure(a), figure(b)};
+  const Answer ans = production_answer(a, b);
+  std::vector<Mark> marks{{Mark::Kind::PointNormal, ans.hit ? ans.point : kNowhere, ans.normal, 0, "#d00", ans.label}};
+  for (const Mark& m : oracle_witness(a, b)) marks.push_back(m);
+  marks.insert(marks.end(), extra.begin(), extra.end());
+  return render(shapes, marks, title);
+}
+
+template std::string views(const Cylinder&, const Sphere&, const std::string&, const std::vector<Mark>&);
+template std::string views(const Segment&, const Cylinder&, const std::string&, const std::vector<Mark>&);
+template std::string views(const Cylinder&, const Capsule&, const std::string&, const std::vector<Mark>&);
+template std::string views(const MovingSphere&, const Cylinder&, const std::string&, const std::vector<Mark>&);
+template std::string views(const Cylinder&, const Obb&, const std::string&, const std::vector<Mark>&);
+template std::string views(const Cylinder&, const Triangle&, const std::string&, const std::vector<Mark>&);
 
 }  // namespace geomcheck::draw

@@ -1,9 +1,11 @@
 // geomcheck — counterexamples drawn for the campaign report: the two shapes
 // in three orthographic views (top: x-y, front: x-z, side: y-z), with
-// production's contact or hit point and its normal, as inline SVG.
+// production's contact or hit point and its normal, the exact oracle's
+// witness, and optionally another engine's answer, as inline SVG.
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include "geomcheck/results.hpp"
 #include "geomcheck/shapes.hpp"
@@ -24,10 +26,37 @@ Answer production_answer(const MovingSphere& a, const Cylinder& b);
 Answer production_answer(const Cylinder& a, const Obb& b);
 Answer production_answer(const Cylinder& a, const Triangle& b);
 
-/// Three views of shapes A (blue) and B (orange) and the answer (red),
-/// fitted to the shapes; `title` heads the figure. Non-finite coordinates
-/// are left out (a figure with nothing finite says so).
+/// Something drawn over the shapes.
+struct Mark {
+  enum class Kind {
+    PointNormal,  ///< a dot at p, an arrow along the unit q (40 px)
+    Arrow,        ///< a dot at p, an arrow to q (to scale)
+    Segment,      ///< p to q, dots at both ends
+    Ball,         ///< a dot at p and the outline of the ball of radius r
+  } kind = Kind::PointNormal;
+  Vec3 p, q;
+  double r = 0;
+  std::string color, label;
+};
+
+/// The exact oracle's witness, certified by the engine (oracles/engine.hpp)
+/// or the closed-form cast: separated, the nearest points; touching, a
+/// common point; overlapping, a common point and the minimal translation
+/// of B (depth along the penetration direction); a cast, the first touch
+/// S(t); a sweep, the ball at its first touch. Empty for invalid input or
+/// when the oracle cannot say.
+std::vector<Mark> oracle_witness(const Cylinder& a, const Sphere& b);
+std::vector<Mark> oracle_witness(const Segment& a, const Cylinder& b);
+std::vector<Mark> oracle_witness(const Cylinder& a, const Capsule& b);
+std::vector<Mark> oracle_witness(const MovingSphere& a, const Cylinder& b);
+std::vector<Mark> oracle_witness(const Cylinder& a, const Obb& b);
+std::vector<Mark> oracle_witness(const Cylinder& a, const Triangle& b);
+
+/// Three views of shapes A (blue) and B (orange), production's answer
+/// (red), the oracle's witness (green) and `extra` marks, fitted to all of
+/// them; `title` heads the figure. Non-finite coordinates are left out (a
+/// figure with nothing finite says so).
 template <class A, class B>
-std::string views(const A& a, const B& b, const std::string& title);
+std::string views(const A& a, const B& b, const std::string& title, const std::vector<Mark>& extra = {});
 
 }  // namespace geomcheck::draw

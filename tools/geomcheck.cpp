@@ -71,8 +71,8 @@ bool replay_one(const fs::path& path, bool quiet) {
   }
   return visit_case(f, [&](auto q, const auto& c) {
     constexpr QueryId Q = decltype(q)::value;
-    const Evaluation e = evaluate(c);
     const PeerAnswer fcl = peer(c);
+    const Evaluation e = evaluate_with_peer(c, fcl);
     const CheckResult failure = check_all(c);
     const Tolerances tol = tolerances(Q);
     bool filed_ok = true;
@@ -102,6 +102,21 @@ bool replay_one(const fs::path& path, bool quiet) {
       err("normal", e.normal_err, tol.normal);
       err("point", e.point_err, tol.point);
       err("t", e.t_err, tol.t);
+      // FCL by the same yardsticks (no bound: FCL is measured, not judged).
+      auto ferr = [&](const char* n, double v) {
+        if (std::isfinite(v)) std::printf("  FCL %s error %.3g * scale\n", n, v);
+      };
+      if (fcl.supported && fcl.ok) {
+        ferr("depth", e.peer.depth_err);
+        ferr("normal", e.peer.normal_err);
+        ferr("point", e.peer.point_err);
+        ferr("t", e.peer.t_err);
+        if (std::isfinite(fcl.distance) && std::isfinite(e.distance))
+          ferr("distance", fcl.distance >= 0 ? std::fabs(fcl.distance - e.distance) / e.scale : NAN);
+        if (std::isfinite(fcl.distance) && (fcl.distance < 0) != e.truth_hit)
+          std::printf("  FCL's distance %s the oracle's verdict%s\n", fcl.distance < 0 ? "says they meet, against" : "says separated, against",
+                      e.near_boundary ? " (inside the band)" : " (beyond the band)");
+      }
     }
     if (!f.oracle_verdict.empty())
       std::printf("  filed oracle verdict: %s%s\n", f.oracle_verdict.c_str(), filed_ok ? "" : "  <-- the oracle now says otherwise");

@@ -21,8 +21,12 @@ PeerAnswer contact_answer(const oracles::PeerContact& r, const char* note = "") 
     return p;
   }
   p.hit = r.hit;
+  p.contact.hit = r.hit;
   if (r.hit) {
     p.depth = r.depth;
+    p.contact.depth = r.depth;
+    p.contact.point = r.point;
+    p.contact.normal = r.normal;
     char b[64];
     std::snprintf(b, sizeof b, "%.17g", r.depth);
     p.text = std::string("hit depth=") + b + note + " normal=" + v3(r.normal) + " point=" + v3(r.point);
@@ -53,25 +57,42 @@ PeerAnswer cast_answer(const oracles::PeerCast& r, const char* how) {
   return p;
 }
 
+/// Adds FCL's distance on the same pair.
+PeerAnswer with_distance(PeerAnswer p, const oracles::PeerDistance& d) {
+  if (d.ok) {
+    p.distance = d.distance;
+    char b[64];
+    std::snprintf(b, sizeof b, "%.17g", d.distance);
+    p.text += std::string("; distance=") + b;
+  } else {
+    p.text += "; distance failed: " + d.error;
+  }
+  return p;
+}
+
 }  // namespace
 
-PeerAnswer peer(const CylinderSphereCase& c) { return contact_answer(oracles::fcl_collide(c.a, c.b)); }
+PeerAnswer peer(const CylinderSphereCase& c) {
+  return with_distance(contact_answer(oracles::fcl_collide(c.a, c.b)), oracles::fcl_distance(c.a, c.b));
+}
 
 PeerAnswer peer(const SegmentCylinderCase& c) {
   return cast_answer(oracles::fcl_cast(c.a, c.b), "FCL continuous collision of a radius-0 sphere");
 }
 
 PeerAnswer peer(const CylinderCapsuleCase& c) {
-  return contact_answer(oracles::fcl_collide(c.a, c.b), " (libccd MPR estimate, not the minimum)");
+  return with_distance(contact_answer(oracles::fcl_collide(c.a, c.b), " (libccd MPR estimate, not the minimum)"), oracles::fcl_distance(c.a, c.b));
 }
 
 PeerAnswer peer(const CylinderObbCase& c) {
-  return contact_answer(oracles::fcl_collide(c.a, c.b), " (libccd MPR estimate, not the minimum)");
+  return with_distance(contact_answer(oracles::fcl_collide(c.a, c.b), " (libccd MPR estimate, not the minimum)"), oracles::fcl_distance(c.a, c.b));
 }
 
 PeerAnswer peer(const CylinderTriangleCase& c) {
-  return contact_answer(oracles::fcl_collide(c.a, c.b),
-                        " (FCL's mesh narrow phase shapeTriangleIntersect; libccd MPR estimate, not the minimum)");
+  return with_distance(
+      contact_answer(oracles::fcl_collide(c.a, c.b),
+                     " (FCL's mesh narrow phase shapeTriangleIntersect; libccd MPR estimate, not the minimum)"),
+      oracles::fcl_distance(c.a, c.b));
 }
 
 PeerAnswer peer(const SweepCylinderCase& c) {

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <string>
+#include <type_traits>
 
 #include "geomcheck/oracles/fcl_adapter.hpp"
 #include "geomcheck/properties/checks.hpp"
@@ -15,6 +16,10 @@ struct PeerAnswer {
   bool hit = false;
   double depth = NAN;      ///< collide: penetration depth
   double t = NAN;          ///< cast, sweep: first-touch parameter
+  Contact contact;         ///< collide: FCL's contact (hit, depth, point, normal) as geomcheck's Contact
+  /// collide: fcl::distance (GJK or closed form) on the same pair: > 0
+  /// separated, -1 when FCL sees them meet; NaN when not asked or it failed.
+  double distance = NAN;
   std::string text;        ///< human readable
 };
 
@@ -29,5 +34,23 @@ PeerAnswer peer(const CylinderObbCase& c);
 /// fcl_collide(Cylinder, Triangle): FCL's per-triangle mesh narrow phase (shapeTriangleIntersect;
 /// fcl::collide has no cylinder/triangle pair), libccd's MPR, depth not the minimum (see fcl_adapter.hpp).
 PeerAnswer peer(const CylinderTriangleCase& c);
+
+// Production's evaluation with FCL's answer scored against the same truth.
+inline const CylinderSphereImpl& production(const CylinderSphereCase&) { return kProductionCylinderSphere; }
+inline const CylinderCapsuleImpl& production(const CylinderCapsuleCase&) { return kProductionCylinderCapsule; }
+inline const CylinderObbImpl& production(const CylinderObbCase&) { return kProductionCylinderObb; }
+inline const CylinderTriangleImpl& production(const CylinderTriangleCase&) { return kProductionCylinderTriangle; }
+inline const CastSegmentCylinderImpl& production(const SegmentCylinderCase&) { return kProductionCastSegmentCylinder; }
+inline const SweepSphereCylinderImpl& production(const SweepCylinderCase&) { return kProductionSweepSphereCylinder; }
+
+template <class Case>
+Evaluation evaluate_with_peer(const Case& c, const PeerAnswer& p) {
+  const bool answered = p.supported && p.ok;
+  if constexpr (std::is_same_v<Case, SegmentCylinderCase> || std::is_same_v<Case, SweepCylinderCase>) {
+    return evaluate(c, production(c), answered && p.hit ? &p.t : nullptr);
+  } else {
+    return evaluate(c, production(c), answered ? &p.contact : nullptr);
+  }
+}
 
 }  // namespace geomcheck

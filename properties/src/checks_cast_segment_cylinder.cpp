@@ -55,7 +55,7 @@ double disagreement_margin(const oracle::QSegment& s, const oracle::QCylinder& c
 const CastSegmentCylinderImpl kProductionCastSegmentCylinder = {
     "production", [](const Segment& s, const Cylinder& c) { return cast(s, c); }};
 
-Evaluation evaluate(const SegmentCylinderCase& c, const CastSegmentCylinderImpl& impl) {
+Evaluation evaluate(const SegmentCylinderCase& c, const CastSegmentCylinderImpl& impl, const double* peer_t) {
   Evaluation e;
   const CastHit h = impl.cast(c.a, c.b);
   e.prod_hit = h.hit;
@@ -77,6 +77,19 @@ Evaluation evaluate(const SegmentCylinderCase& c, const CastSegmentCylinderImpl&
   e.truth_text = truth.hit ? std::string("hit ") + oracle::to_string(truth.feature) + " t=" + oracle::to_string(truth.t)
                            : std::string("miss");
   e.disagree = e.prod_hit != e.truth_hit;
+  if (peer_t && truth.hit && *peer_t >= 0 && *peer_t <= 1) {
+    // The peer's t, by production's yardstick: the gap of S(t); starting
+    // inside, how far S moved before t.
+    const QVec x = qs.a + oracle::to_q(*peer_t) * (qs.b - qs.a);
+    if (oracle::signed_distance(qc, qs.a).hi <= 0) {
+      const QVec d = x - qs.a;
+      e.peer.t_err = rel_up(oracle::sqrt_interval(oracle::dot(d, d)).hi, e.scale);
+    } else {
+      const QInterval sd = oracle::signed_distance(qc, x);
+      const Q a = sd.lo < 0 ? -sd.lo : sd.lo, b = sd.hi < 0 ? -sd.hi : sd.hi;
+      e.peer.t_err = rel_up(a > b ? a : b, e.scale);
+    }
+  }
   const Q band = times_scale(tol.verdict, e.scale);
   // Within the band of touching: a miss that meets the grown cylinder, or a
   // hit that never gets band-deep into the cylinder.

@@ -34,7 +34,7 @@ const CylinderCapsuleImpl kProductionCylinderCapsule = {
     [](const Cylinder& a, const Capsule& b) { return collide(a, b); },
 };
 
-Evaluation evaluate(const CylinderCapsuleCase& c, const CylinderCapsuleImpl& impl) {
+Evaluation evaluate(const CylinderCapsuleCase& c, const CylinderCapsuleImpl& impl, const Contact* peer) {
   Evaluation e;
   const bool ov = impl.overlap(c.a, c.b);
   const Contact ct = impl.collide(c.a, c.b);
@@ -63,31 +63,38 @@ Evaluation evaluate(const CylinderCapsuleCase& c, const CylinderCapsuleImpl& imp
     e.margin = std::fabs(e.signed_distance) / e.scale;
     e.excused = e.near_boundary;
   }
-  if (ct.hit && finite_contact(ct)) {
-    e.unit_err = std::fabs(length(ct.normal) - 1);
-    if (e.truth_hit) {
-      // The depth claim holds for shallow contacts: the segment certainly
-      // outside the cylinder by 1e-6 * scale (production's shallow branch
-      // starts at 2^-20 * scene, just below).
-      if (truth.core_outside && truth.core_distance.lo > times_scale(1e-6, e.scale)) {
-        const QInterval depth = -truth.signed_distance;
-        if (std::isfinite(oracle::to_double(depth.hi))) e.depth_err = rel_error(depth, ct.depth, e.scale);
-        // The normal is the direction between the closest points: its angle
-        // is only as good as eps * scale / D, and the capsule's extent turns
-        // an angle into excess overlap. It is held to the claim where the
-        // segment is at least 1e-6 * scale outside (see the header).
-        if (max_abs(ct.normal) > 0) {
-          const QInterval along = overlap_along(cyl, oracle::make_capsule(p, q, r), oracle::to_q(ct.normal));
-          e.normal_err = rel_up(along.hi - depth.lo, e.scale);
-        }
+  // Separated: the capsule's core is outside and D - r enclosed to 1e-20 * scale.
+  if (truth.verdict == oracle::Verdict::Separated &&
+      truth.signed_distance.hi - truth.signed_distance.lo <= times_scale(1e-12, e.scale))
+    e.distance = truth.signed_distance.mid();
+  // One contact (production's or the peer's) against the truth.
+  auto score = [&](const Contact& k, double& unit_err, double& depth_err, double& normal_err, double& point_err) {
+    if (!k.hit || !finite_contact(k)) return;
+    unit_err = std::fabs(length(k.normal) - 1);
+    if (!e.truth_hit) return;
+    // The depth claim holds for shallow contacts: the segment certainly
+    // outside the cylinder by 1e-6 * scale (production's shallow branch
+    // starts at 2^-20 * scene, just below).
+    if (truth.core_outside && truth.core_distance.lo > times_scale(1e-6, e.scale)) {
+      const QInterval depth = -truth.signed_distance;
+      if (std::isfinite(oracle::to_double(depth.hi))) depth_err = rel_error(depth, k.depth, e.scale);
+      // The normal is the direction between the closest points: its angle
+      // is only as good as eps * scale / D, and the capsule's extent turns
+      // an angle into excess overlap. It is held to the claim where the
+      // segment is at least 1e-6 * scale outside (see the header).
+      if (max_abs(k.normal) > 0) {
+        const QInterval along = overlap_along(cyl, oracle::make_capsule(p, q, r), oracle::to_q(k.normal));
+        normal_err = rel_up(along.hi - depth.lo, e.scale);
       }
-      const QVec x = oracle::to_q(ct.point);
-      const QInterval da = oracle::signed_distance(oracle::to_q(c.a), x);
-      const QInterval db = capsule_signed_distance(p, q, r, x);
-      const Q out = da.hi > db.hi ? da.hi : db.hi;
-      e.point_err = out > 0 ? rel_up(out, e.scale) : 0.0;
     }
-  }
+    const QVec x = oracle::to_q(k.point);
+    const QInterval da = oracle::signed_distance(oracle::to_q(c.a), x);
+    const QInterval db = capsule_signed_distance(p, q, r, x);
+    const Q out = da.hi > db.hi ? da.hi : db.hi;
+    point_err = out > 0 ? rel_up(out, e.scale) : 0.0;
+  };
+  score(ct, e.unit_err, e.depth_err, e.normal_err, e.point_err);
+  if (peer) score(*peer, e.peer.unit_err, e.peer.depth_err, e.peer.normal_err, e.peer.point_err);
   return e;
 }
 

@@ -26,7 +26,7 @@ const CylinderSphereImpl kProductionCylinderSphere = {
     [](const Cylinder& a, const Sphere& b) { return collide(a, b); },
 };
 
-Evaluation evaluate(const CylinderSphereCase& c, const CylinderSphereImpl& impl) {
+Evaluation evaluate(const CylinderSphereCase& c, const CylinderSphereImpl& impl, const Contact* peer) {
   Evaluation e;
   const bool ov = impl.overlap(c.a, c.b);
   const Contact ct = impl.collide(c.a, c.b);
@@ -56,23 +56,27 @@ Evaluation evaluate(const CylinderSphereCase& c, const CylinderSphereImpl& impl)
     e.margin = std::fabs(e.signed_distance) / e.scale;
     e.excused = e.near_boundary;
   }
-  if (ct.hit && finite_contact(ct)) {
-    e.unit_err = std::fabs(length(ct.normal) - 1);
-    if (e.truth_hit) {
-      const oracle::QInterval depth = -truth.signed_distance;
-      // A depth beyond the largest double has no exact answer in doubles
-      // (production saturates): no depth error is measured then.
-      if (std::isfinite(oracle::to_double(depth.hi))) e.depth_err = rel_error(depth, ct.depth, e.scale);
-      if (max_abs(ct.normal) > 0) {
-        const oracle::QInterval along = oracle::overlap_along(qa, qb, oracle::to_q(ct.normal));
-        e.normal_err = rel_up(along.hi - depth.lo, e.scale);
-      }
-      const oracle::QVec x = oracle::to_q(ct.point);
-      const oracle::QInterval da = oracle::signed_distance(qa, x), db = oracle::signed_distance(qb, x);
-      const oracle::Q out = da.hi > db.hi ? da.hi : db.hi;
-      e.point_err = out > 0 ? rel_up(out, e.scale) : 0.0;
+  if (truth.verdict == oracle::Verdict::Separated) e.distance = truth.signed_distance.mid();
+  // One contact (production's or the peer's) against the truth.
+  auto score = [&](const Contact& k, double& unit_err, double& depth_err, double& normal_err, double& point_err) {
+    if (!k.hit || !finite_contact(k)) return;
+    unit_err = std::fabs(length(k.normal) - 1);
+    if (!e.truth_hit) return;
+    const oracle::QInterval depth = -truth.signed_distance;
+    // A depth beyond the largest double has no exact answer in doubles
+    // (production saturates): no depth error is measured then.
+    if (std::isfinite(oracle::to_double(depth.hi))) depth_err = rel_error(depth, k.depth, e.scale);
+    if (max_abs(k.normal) > 0) {
+      const oracle::QInterval along = oracle::overlap_along(qa, qb, oracle::to_q(k.normal));
+      normal_err = rel_up(along.hi - depth.lo, e.scale);
     }
-  }
+    const oracle::QVec x = oracle::to_q(k.point);
+    const oracle::QInterval da = oracle::signed_distance(qa, x), db = oracle::signed_distance(qb, x);
+    const oracle::Q out = da.hi > db.hi ? da.hi : db.hi;
+    point_err = out > 0 ? rel_up(out, e.scale) : 0.0;
+  };
+  score(ct, e.unit_err, e.depth_err, e.normal_err, e.point_err);
+  if (peer) score(*peer, e.peer.unit_err, e.peer.depth_err, e.peer.normal_err, e.peer.point_err);
   return e;
 }
 

@@ -56,7 +56,7 @@ bool path_meets(const SweepCylinderCase& c, double t, const Q& dr) {
 const SweepSphereCylinderImpl kProductionSweepSphereCylinder = {
     "production", [](const MovingSphere& s, const Cylinder& c) { return sweep(s, c); }};
 
-Evaluation evaluate(const SweepCylinderCase& c, const SweepSphereCylinderImpl& impl) {
+Evaluation evaluate(const SweepCylinderCase& c, const SweepSphereCylinderImpl& impl, const double* peer_t) {
   Evaluation e;
   const CastHit h = impl.sweep(c.a, c.b);
   e.prod_hit = h.hit;
@@ -81,6 +81,26 @@ Evaluation evaluate(const SweepCylinderCase& c, const SweepSphereCylinderImpl& i
   e.truth_text = std::string(e.truth_hit ? "hit" : "miss") + " (path " + truth.text + ")";
   e.disagree = e.prod_hit != e.truth_hit;
   e.near_boundary = !(truth.signed_distance.lo > band || truth.signed_distance.hi < -band);
+  if (peer_t && e.truth_hit && *peer_t >= 0 && *peer_t <= 1) {
+    // The exact first touch (engine), for |t_peer - t_true|: the gap alone
+    // cannot see a t past a first crossing that was missed.
+    const oracle::ImpactResult toi =
+        oracle::time_of_impact(oracle::make_shape(Sphere{c.a.c, c.a.r}), oracle::to_q(c.a.delta), cyl);
+    if (toi.kind == oracle::ImpactResult::Kind::Hit && toi.t.hi - toi.t.lo <= oracle::to_q(1e-12)) e.t_true = toi.t.mid();
+    if (toi.kind == oracle::ImpactResult::Kind::StartsInside) e.t_true = 0;
+    // The peer's t, by production's yardstick: the ball's gap at t; starting
+    // inside (touching included), how far the centre moved before t.
+    const oracle::QCylinder qc = oracle::to_q(c.b);
+    const QVec x = centre_at(c, *peer_t);
+    if ((oracle::signed_distance(qc, a) - oracle::point(r)).hi <= 0) {
+      const QVec d = x - a;
+      e.peer.t_err = rel_up(oracle::sqrt_interval(oracle::dot(d, d)).hi, e.scale);
+    } else {
+      const QInterval gap = oracle::signed_distance(qc, x) - oracle::point(r);
+      const Q lo = gap.lo < 0 ? -gap.lo : gap.lo, hi = gap.hi < 0 ? -gap.hi : gap.hi;
+      e.peer.t_err = rel_up(lo > hi ? lo : hi, e.scale);
+    }
+  }
   if (e.disagree) {
     e.margin = std::fabs(e.signed_distance) / e.scale;
     e.excused = e.near_boundary;

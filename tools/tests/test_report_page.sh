@@ -3,8 +3,9 @@
 # campaign (fixed seed) whose FCL disagreements are drawn, the page rendered
 # in headless Chromium (screenshot and DOM), and checked: it renders with no
 # console message, the screenshot is a real image, and the
-# page holds the report's parts (the query's table, histograms, the drawn
-# counterexamples in three views each).
+# page holds the report's parts (the precision table with FCL's rows, the
+# queries' sections, histograms, the drawn disagreements in three views
+# each, every one with the oracle's witness and FCL's answer).
 # usage: test_report_page.sh GEOMCHECK OUT_DIR
 set -u
 tool=$1 out=$2
@@ -12,7 +13,7 @@ browser=$(command -v chromium || command -v chromium-browser || true)
 if [ -z "$browser" ]; then echo "SKIP: no chromium (apt-get install chromium)"; exit 77; fi
 rm -rf "$out"; mkdir -p "$out"
 fail() { echo "FAIL: $*"; exit 1; }
-"$tool" campaign --seed 20261121 --cases 1500 --query cast_segment_cylinder --no-progress --out "$out/report" \
+"$tool" campaign --seed 20261121 --cases 600 --query cast_segment_cylinder --query collide_cylinder_capsule --no-progress --out "$out/report" \
   > "$out/campaign.log" 2>&1 || { cat "$out/campaign.log"; fail "campaign failed"; }
 page="$out/report/report.html"
 flags=(--headless --no-sandbox --disable-gpu --disable-quic --no-first-run --disable-background-networking
@@ -27,10 +28,26 @@ size=$(stat -c %s "$out/report.png")
 [ "$size" -gt 20000 ] || fail "the screenshot is only $size bytes: a blank page?"
 # The page has no script: any console line (an error, a failed load) is a defect.
 if grep -E "CONSOLE|Uncaught|Failed to load" "$out/chromium.log"; then fail "the page logged to the console (above)"; fi
-grep -q "<h2 id=\"cast_segment_cylinder\">" "$out/dom.html" || fail "no section for the query"
+for q in cast_segment_cylinder collide_cylinder_capsule; do
+  grep -q "<h2 id=\"$q\">" "$out/dom.html" || fail "no section for $q"
+done
+grep -q "<h2 id=\"precision\">" "$out/dom.html" || fail "no precision table"
+for col in depth normal point distance; do
+  grep -q "<th>$col</th>" "$out/dom.html" || fail "the precision table has no $col column"
+done
+fcl_rows=$(grep -o "<td class=\"l\">FCL</td>" "$out/dom.html" | wc -l)
+[ "$fcl_rows" -eq 2 ] || fail "$fcl_rows FCL rows in the precision table (2 expected)"
 figures=$(grep -o "<figure class=\"cx\">" "$out/dom.html" | wc -l)
 views=$(grep -o "<title>[a-z]* view</title>" "$out/dom.html" | wc -l)
 [ "$figures" -gt 0 ] || fail "no counterexample drawn (FCL's cast disagreements are expected at this seed)"
 [ "$views" -eq $((3 * figures)) ] || fail "$figures figures but $views views (three each expected)"
 grep -q "log10 histogram" "$out/dom.html" || fail "no histogram"
-echo "report page: $figures counterexamples drawn in $views views, screenshot $out/report.png ($size bytes), no console errors"
+# Every drawing carries the oracle's witness and FCL's answer in its legend,
+# and at this seed both kinds of witness geometry appear.
+witnesses=$(grep -o "&#9679; oracle: \|● oracle: " "$out/dom.html" | wc -l)
+fcl_marks=$(grep -o "&#9679; FCL: \|● FCL: " "$out/dom.html" | wc -l)
+[ "$witnesses" -eq "$figures" ] || fail "$figures figures but $witnesses oracle witnesses"
+[ "$fcl_marks" -eq "$figures" ] || fail "$figures figures but $fcl_marks FCL answers"
+grep -q "oracle: nearest points" "$out/dom.html" || fail "no nearest-points witness drawn"
+grep -q "oracle: first touch S(t)\|oracle: overlapping, depth" "$out/dom.html" || fail "no first-touch or penetration witness drawn"
+echo "report page: $figures disagreements drawn in $views views ($witnesses oracle witnesses, $fcl_marks FCL answers), screenshot $out/report.png ($size bytes), no console errors"

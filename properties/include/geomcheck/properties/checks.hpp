@@ -97,14 +97,29 @@ struct Evaluation {
   std::string extra_failure;     ///< a non-numeric failure found while evaluating
   std::string truth_text;        ///< oracle answer, human readable
   std::string prod_text;         ///< production answer, human readable
+  /// Collide queries, separated: the certified distance (midpoint of an
+  /// enclosure at most 1e-12 * scale wide); NaN otherwise.
+  double distance = NAN;
+  /// Another engine's contact (FCL's), held to the same yardstick as
+  /// production's when evaluate() is given one: depth, normal (overlap
+  /// along it beyond the true depth) and point (outside either shape)
+  /// errors, multiples of `scale`; NaN where not measured (no hit, no truth
+  /// precise enough, a zero normal). Casts and sweeps: t error as for
+  /// production (the gap of the segment point or ball at the peer's t, or,
+  /// starting inside, how far it moved before t).
+  struct PeerScore {
+    double depth_err = NAN, normal_err = NAN, point_err = NAN, unit_err = NAN, t_err = NAN;
+  } peer;
 };
 
-Evaluation evaluate(const CylinderSphereCase& c, const CylinderSphereImpl& impl = kProductionCylinderSphere);
-Evaluation evaluate(const SegmentCylinderCase& c, const CastSegmentCylinderImpl& impl = kProductionCastSegmentCylinder);
-Evaluation evaluate(const CylinderCapsuleCase& c, const CylinderCapsuleImpl& impl = kProductionCylinderCapsule);
-Evaluation evaluate(const SweepCylinderCase& c, const SweepSphereCylinderImpl& impl = kProductionSweepSphereCylinder);
-Evaluation evaluate(const CylinderObbCase& c, const CylinderObbImpl& impl = kProductionCylinderObb);
-Evaluation evaluate(const CylinderTriangleCase& c, const CylinderTriangleImpl& impl = kProductionCylinderTriangle);
+// `peer` (collide: a contact; cast, sweep: a t), when given, is scored into
+// Evaluation::peer against the same truth (computed once).
+Evaluation evaluate(const CylinderSphereCase& c, const CylinderSphereImpl& impl = kProductionCylinderSphere, const Contact* peer = nullptr);
+Evaluation evaluate(const SegmentCylinderCase& c, const CastSegmentCylinderImpl& impl = kProductionCastSegmentCylinder, const double* peer_t = nullptr);
+Evaluation evaluate(const CylinderCapsuleCase& c, const CylinderCapsuleImpl& impl = kProductionCylinderCapsule, const Contact* peer = nullptr);
+Evaluation evaluate(const SweepCylinderCase& c, const SweepSphereCylinderImpl& impl = kProductionSweepSphereCylinder, const double* peer_t = nullptr);
+Evaluation evaluate(const CylinderObbCase& c, const CylinderObbImpl& impl = kProductionCylinderObb, const Contact* peer = nullptr);
+Evaluation evaluate(const CylinderTriangleCase& c, const CylinderTriangleImpl& impl = kProductionCylinderTriangle, const Contact* peer = nullptr);
 
 /// Compares an evaluation with the query's tolerances (tolerances.hpp).
 CheckResult judge(QueryId id, const Evaluation& e);
