@@ -22,6 +22,7 @@
 #include "geomcheck/properties/tolerances.hpp"
 #include "peer.hpp"
 #include "suites.hpp"
+#include "teeth_variants.hpp"
 
 namespace geomcheck {
 
@@ -117,6 +118,32 @@ struct QueryReport {
   Tolerances tol{};
 };
 
+// The known-wrong variants per implementation type.
+std::vector<const CylinderSphereImpl*> variants_of(const CylinderSphereImpl*) { return {&teeth::kCapsuleForCylinder}; }
+std::vector<const CastSegmentCylinderImpl*> variants_of(const CastSegmentCylinderImpl*) {
+  return {&teeth::kInfiniteCylinder, &teeth::kEricsonPrinted};
+}
+std::vector<const CylinderCapsuleImpl*> variants_of(const CylinderCapsuleImpl*) { return {&teeth::kCapsuleCapsule}; }
+std::vector<const SweepSphereCylinderImpl*> variants_of(const SweepSphereCylinderImpl*) {
+  return {&teeth::kSweepNoCornerStage, &teeth::kSweepTalkRimPoint};
+}
+std::vector<const CylinderObbImpl*> variants_of(const CylinderObbImpl*) { return {&teeth::kBoxAsCapsule, &teeth::kBoxTalkRays}; }
+std::vector<const CylinderTriangleImpl*> variants_of(const CylinderTriangleImpl*) { return {&teeth::kTriangleNoCapStage}; }
+
+// An implementation's answer, drawn in red.
+template <class Impl>
+draw::Answer answer_of(const CylinderSphereCase& c, const Impl& impl) { return draw::answer_of(impl.collide(c.a, c.b), impl.name); }
+template <class Impl>
+draw::Answer answer_of(const CylinderCapsuleCase& c, const Impl& impl) { return draw::answer_of(impl.collide(c.a, c.b), impl.name); }
+template <class Impl>
+draw::Answer answer_of(const CylinderObbCase& c, const Impl& impl) { return draw::answer_of(impl.collide(c.a, c.b), impl.name); }
+template <class Impl>
+draw::Answer answer_of(const CylinderTriangleCase& c, const Impl& impl) { return draw::answer_of(impl.collide(c.a, c.b), impl.name); }
+template <class Impl>
+draw::Answer answer_of(const SegmentCylinderCase& c, const Impl& impl) { return draw::answer_of(impl.cast(c.a, c.b), impl.name); }
+template <class Impl>
+draw::Answer answer_of(const SweepCylinderCase& c, const Impl& impl) { return draw::answer_of(impl.sweep(c.a, c.b), impl.name); }
+
 // FCL's answer, drawn beside production's (purple).
 template <class Case>
 draw::Mark fcl_mark(const Case& c, const PeerAnswer& p) {
@@ -139,6 +166,10 @@ draw::Mark fcl_mark(const Case& c, const PeerAnswer& p) {
 template <QueryId Q>
 QueryReport run_query(const CampaignOptions& opt, const std::filesystem::path& out_dir, int threads) {
   using Case = typename Suite<Q>::Case;
+  using Impl = typename Suite<Q>::Impl;
+  const Impl* impl = &production(Case{});
+  for (const Impl* v : variants_of(impl))
+    if (opt.variant == v->name) impl = v;
   QueryReport rep;
   rep.name = info(Q).name;
   rep.summary = info(Q).summary;
@@ -156,7 +187,7 @@ QueryReport run_query(const CampaignOptions& opt, const std::filesystem::path& o
     int sink = 0;
     const int reps = 5;
     for (int r = 0; r < reps; ++r)
-      for (const auto& c : cases) sink += Suite<Q>::hit(c.first);
+      for (const auto& c : cases) sink += Suite<Q>::hit(c.first, *impl);
     const double ns = std::chrono::duration<double, std::nano>(Clock::now() - t0).count();
     rep.prod_ns = ns / (reps * std::max<std::size_t>(1, cases.size()));
     if (sink == -1) std::puts("");
@@ -178,8 +209,8 @@ QueryReport run_query(const CampaignOptions& opt, const std::filesystem::path& o
       r.index = i;
       r.tag = cases[i].second;
       r.fcl = peer(cases[i].first);
-      r.e = evaluate_with_peer(cases[i].first, r.fcl);
-      r.failure = check_all(cases[i].first);
+      r.e = evaluate_with_peer(cases[i].first, r.fcl, *impl);
+      r.failure = check_all(cases[i].first, *impl);
       r.run = true;
       ++done;
     }
@@ -231,6 +262,7 @@ QueryReport run_query(const CampaignOptions& opt, const std::filesystem::path& o
         ++rep.fcl_ok;
         // Every FCL disagreement beyond the band is saved as a case file;
         // the first few of each kind are drawn.
+        const draw::Answer ans = answer_of(cases[r.index].first, *impl);
         auto save_fcl = [&](const char* kind, const std::string& answer) {
           const std::filesystem::path dir = out_dir / "fcl-disagreements" / rep.name;
           std::filesystem::create_directories(dir);
@@ -248,7 +280,7 @@ QueryReport run_query(const CampaignOptions& opt, const std::filesystem::path& o
             rep.fcl_drawings.push_back(draw::views(
                 cases[r.index].first.a, cases[r.index].first.b,
                 html(std::string("case ") + name + ": " + answer + " (" + r.fcl.text + "); oracle: " + e.truth_text),
-                {fcl_mark(cases[r.index].first, r.fcl)}));
+                {fcl_mark(cases[r.index].first, r.fcl)}, &ans));
         };
         if (r.fcl.hit != e.truth_hit) {
           ++rep.fcl_disagree;
@@ -277,22 +309,31 @@ QueryReport run_query(const CampaignOptions& opt, const std::filesystem::path& o
     if (r.failure) {
       ++rep.check_failures;
       rep.failures_by_property[r.failure->property]++;
-      if (rep.counterexamples.size() < 50) {
-        std::filesystem::create_directories(cx_dir);
-        char name[64];
-        std::snprintf(name, sizeof name, "%05d-%s.case", r.index, r.failure->property.c_str());
-        const auto path = cx_dir / name;
-        CaseFile f = from_case<Q>(cases[r.index].first,
-                                  "campaign seed=" + std::to_string(opt.seed) + " case=" + std::to_string(r.index),
-                                  "", r.failure->property + ": " + r.failure->detail);
-        f.oracle_verdict = info(Q).kind == QueryKind::Collide ? oracle::to_string(e.verdict) : (e.truth_hit ? "hit" : "miss");
-        std::string err;
-        if (save_case(path, f, err)) rep.counterexamples.push_back(path.string());
-        if (rep.drawings.size() < 12)
-          rep.drawings.push_back(draw::views(cases[r.index].first.a, cases[r.index].first.b,
-                                             html(std::string("case ") + name + ": " + r.failure->property + ": " +
-                                                  r.failure->detail + "; oracle: " + e.truth_text)));
-      }
+      // Every counterexample is saved and drawn (a page beside its case
+      // file); the report shows the first 12 drawings inline.
+      std::filesystem::create_directories(cx_dir);
+      char name[64];
+      std::snprintf(name, sizeof name, "%05d-%s.case", r.index, r.failure->property.c_str());
+      const auto path = cx_dir / name;
+      CaseFile f = from_case<Q>(cases[r.index].first,
+                                "campaign seed=" + std::to_string(opt.seed) + " case=" + std::to_string(r.index),
+                                "", r.failure->property + ": " + r.failure->detail);
+      f.oracle_verdict = info(Q).kind == QueryKind::Collide ? oracle::to_string(e.verdict) : (e.truth_hit ? "hit" : "miss");
+      std::string err;
+      if (save_case(path, f, err)) rep.counterexamples.push_back(path.string());
+      else std::fprintf(stderr, "[campaign] cannot save %s: %s\n", path.string().c_str(), err.c_str());
+      const draw::Answer ans = answer_of(cases[r.index].first, *impl);
+      const std::string drawing = draw::views(cases[r.index].first.a, cases[r.index].first.b,
+                                              html(std::string("case ") + name + ": " + r.failure->property + ": " +
+                                                   r.failure->detail + "; oracle: " + e.truth_text),
+                                              {}, &ans);
+      std::ofstream page(std::filesystem::path(path).replace_extension(".html"));
+      page << "<!doctype html><html lang='en'><head><meta charset='utf-8'><title>" << html(name)
+           << "</title><style>body{font-family:sans-serif;margin:2em}figcaption{font-size:12px;margin:4px 0}"
+              ".legend{font-size:12px}</style></head><body>"
+           << drawing << "<p>" << html(impl->name) << " fails this case; <code>geomcheck replay " << html(path.string())
+           << "</code> replays it against production.</p></body></html>\n";
+      if (rep.drawings.size() < 12) rep.drawings.push_back(drawing);
     }
   }
   rep.oracle_us = rep.cases ? elapsed * 1e6 * threads / rep.cases : NAN;
@@ -335,6 +376,15 @@ int campaign_cases(const CampaignOptions& opt, const char* id) {
              : 100000;
 }
 
+std::vector<std::pair<std::string, std::string>> campaign_variants() {
+  std::vector<std::pair<std::string, std::string>> out;
+  for_each_query([&](auto q) {
+    constexpr QueryId Q = decltype(q)::value;
+    for (const auto* v : variants_of(&production(typename Suite<Q>::Case{}))) out.emplace_back(v->name, info(Q).name);
+  });
+  return out;
+}
+
 int run_campaign(const CampaignOptions& opt) {
   namespace fs = std::filesystem;
   const fs::path out_dir(opt.out);
@@ -348,15 +398,23 @@ int run_campaign(const CampaignOptions& opt) {
   for_each_query([&](auto q) {
     constexpr QueryId Q = decltype(q)::value;
     if (!opt.queries.empty() && std::find(opt.queries.begin(), opt.queries.end(), info(Q).name) == opt.queries.end()) return;
+    if (!opt.variant.empty()) {
+      bool mine = false;
+      for (const auto* v : variants_of(&production(typename Suite<Q>::Case{}))) mine = mine || opt.variant == v->name;
+      if (!mine) return;
+    }
     reps.push_back(run_query<Q>(opt, out_dir, threads));
   });
 
   int beyond = 0;
   std::ofstream js(out_dir / "report.json");
-  const std::string rerun = "geomcheck campaign --seed " + std::to_string(opt.seed) +
-                            (opt.cases > 0 ? " --cases " + std::to_string(opt.cases) : std::string());
+  std::string rerun = "geomcheck campaign --seed " + std::to_string(opt.seed) +
+                      (opt.cases > 0 ? " --cases " + std::to_string(opt.cases) : std::string());
+  for (const auto& q : opt.queries) rerun += " --query " + q;
+  if (!opt.variant.empty()) rerun += " --variant " + opt.variant;
+  const std::string under_test = opt.variant.empty() ? "production" : opt.variant + " (a known-wrong variant)";
   js << "{\n  \"tool\": \"geomcheck\",\n  \"seed\": " << opt.seed << ",\n  \"cases_per_query\": " << jstr(per_query)
-     << ",\n  \"replay\": " << jstr(rerun)
+     << ",\n  \"replay\": " << jstr(rerun) << ",\n  \"implementation\": " << jstr(under_test)
      << ",\n  \"queries\": [\n";
   for (std::size_t i = 0; i < reps.size(); ++i) {
     QueryReport& r = reps[i];
@@ -412,7 +470,8 @@ int run_campaign(const CampaignOptions& opt) {
        "figure.cx svg{margin-right:6px}figcaption{font-size:12px;margin:4px 0;word-break:break-all}"
        ".legend{font-size:12px;margin:2px 0}</style></head><body>"
        "<h1>geomcheck campaign report</h1><p>seed <code>"
-    << opt.seed << "</code>, " << html(per_query) << ". Errors are multiples of the case scale "
+    << opt.seed << "</code>, " << html(per_query) << ", implementation under test: <b>" << html(under_test)
+    << "</b>. Errors are multiples of the case scale "
        "(largest coordinate magnitude or extent). Rerun: <code>" << html(rerun) << "</code></p>";
   // FCL as a subject: production and FCL, a row each, per query.
   h << "<h2 id='precision'>Precision table: production and FCL against the exact oracle</h2>"
@@ -488,9 +547,13 @@ int run_campaign(const CampaignOptions& opt) {
     if (!r.failures_by_property.empty()) {
       h << "<h3>failures</h3><ul>";
       for (const auto& [k, v] : r.failures_by_property) h << "<li>" << html(k) << ": " << v << "</li>";
-      h << "</ul><p>counterexamples (replay with <code>geomcheck replay FILE</code>):</p><ul>";
-      for (const auto& c : r.counterexamples) h << "<li><code>" << html(c) << "</code></li>";
-      h << "</ul><h3>counterexamples drawn (first " << r.drawings.size() << ")</h3>";
+      h << "</ul><p>counterexamples (replay with <code>geomcheck replay FILE</code>; each drawn in the "
+           ".html beside it):</p><ul>";
+      for (std::size_t k = 0; k < r.counterexamples.size() && k < 50; ++k)
+        h << "<li><code>" << html(r.counterexamples[k]) << "</code></li>";
+      if (r.counterexamples.size() > 50)
+        h << "<li>and " << r.counterexamples.size() - 50 << " more under <code>counterexamples/" << r.name << "/</code></li>";
+      h << "</ul><h3>counterexamples drawn (first " << r.drawings.size() << " of " << r.counterexamples.size() << ")</h3>";
       for (const auto& d : r.drawings) h << d;
     }
     if (!r.fcl_drawings.empty()) {

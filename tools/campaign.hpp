@@ -5,6 +5,7 @@
 
 #include <cstdint>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace geomcheck {
@@ -17,7 +18,13 @@ struct CampaignOptions {
   std::string out = "reports/out";
   std::vector<std::string> queries;  ///< empty = all
   bool progress = true;
+  /// A known-wrong variant (properties/tests/teeth_variants.hpp) run in
+  /// production's place: only its query runs. Empty = production.
+  std::string variant;
 };
+
+/// The known-wrong variants' names, each with its query id.
+std::vector<std::pair<std::string, std::string>> campaign_variants();
 
 /// Cases run for query `id`: opt.cases when given, else 100000, or 10000
 /// for the queries whose oracle is the certified engine (about 10 ms a case

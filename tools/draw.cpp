@@ -254,15 +254,17 @@ std::string fmt(double x) {
   std::snprintf(b, sizeof b, "%.6g", x);
   return b;
 }
-Answer from_contact(const Contact& k) {
-  return {k.hit, k.point, k.normal,
-          k.hit ? "production: contact, depth " + fmt(k.depth) + " (point and normal)" : "production: no contact"};
-}
-Answer from_cast(const CastHit& h) {
-  return {h.hit, h.point, h.normal, h.hit ? "production: hit at t = " + fmt(h.t) + " (point and normal)" : "production: miss"};
-}
-
 }  // namespace
+
+Answer answer_of(const Contact& k, const std::string& who) {
+  return {k.hit, k.point, k.normal,
+          k.hit ? who + ": contact, depth " + fmt(k.depth) + " (point and normal)" : who + ": no contact"};
+}
+Answer answer_of(const CastHit& h, const std::string& who) {
+  return {h.hit, h.point, h.normal, h.hit ? who + ": hit at t = " + fmt(h.t) + " (point and normal)" : who + ": miss"};
+}
+Answer from_contact(const Contact& k) { return answer_of(k, "production"); }
+Answer from_cast(const CastHit& h) { return answer_of(h, "production"); }
 
 Answer production_answer(const Cylinder& a, const Sphere& b) { return from_contact(collide(a, b)); }
 Answer production_answer(const Segment& a, const Cylinder& b) { return from_cast(cast(a, b)); }
@@ -378,20 +380,21 @@ std::vector<Mark> oracle_witness(const MovingSphere& m, const Cylinder& c) {
 }
 
 template <class A, class B>
-std::string views(const A& a, const B& b, const std::string& title, const std::vector<Mark>& extra) {
+std::string views(const A& a, const B& b, const std::string& title, const std::vector<Mark>& extra,
+                  const Answer* answer) {
   const Figure shapes[2] = {figure(a), figure(b)};
-  const Answer ans = production_answer(a, b);
+  const Answer ans = answer ? *answer : production_answer(a, b);
   std::vector<Mark> marks{{Mark::Kind::PointNormal, ans.hit ? ans.point : kNowhere, ans.normal, 0, "#d00", ans.label}};
   for (const Mark& m : oracle_witness(a, b)) marks.push_back(m);
   marks.insert(marks.end(), extra.begin(), extra.end());
   return render(shapes, marks, title);
 }
 
-template std::string views(const Cylinder&, const Sphere&, const std::string&, const std::vector<Mark>&);
-template std::string views(const Segment&, const Cylinder&, const std::string&, const std::vector<Mark>&);
-template std::string views(const Cylinder&, const Capsule&, const std::string&, const std::vector<Mark>&);
-template std::string views(const MovingSphere&, const Cylinder&, const std::string&, const std::vector<Mark>&);
-template std::string views(const Cylinder&, const Obb&, const std::string&, const std::vector<Mark>&);
-template std::string views(const Cylinder&, const Triangle&, const std::string&, const std::vector<Mark>&);
+template std::string views(const Cylinder&, const Sphere&, const std::string&, const std::vector<Mark>&, const Answer*);
+template std::string views(const Segment&, const Cylinder&, const std::string&, const std::vector<Mark>&, const Answer*);
+template std::string views(const Cylinder&, const Capsule&, const std::string&, const std::vector<Mark>&, const Answer*);
+template std::string views(const MovingSphere&, const Cylinder&, const std::string&, const std::vector<Mark>&, const Answer*);
+template std::string views(const Cylinder&, const Obb&, const std::string&, const std::vector<Mark>&, const Answer*);
+template std::string views(const Cylinder&, const Triangle&, const std::string&, const std::vector<Mark>&, const Answer*);
 
 }  // namespace geomcheck::draw

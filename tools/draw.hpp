@@ -25,6 +25,9 @@ Answer production_answer(const Cylinder& a, const Capsule& b);
 Answer production_answer(const MovingSphere& a, const Cylinder& b);
 Answer production_answer(const Cylinder& a, const Obb& b);
 Answer production_answer(const Cylinder& a, const Triangle& b);
+/// Any implementation's answer; `who` heads the label ("production", a variant's name).
+Answer answer_of(const Contact& k, const std::string& who);
+Answer answer_of(const CastHit& h, const std::string& who);
 
 /// Something drawn over the shapes.
 struct Mark {
@@ -56,7 +59,9 @@ std::vector<Mark> oracle_witness(const Cylinder& a, const Triangle& b);
 /// (red), the oracle's witness (green) and `extra` marks, fitted to all of
 /// them; `title` heads the figure. Non-finite coordinates are left out (a
 /// figure with nothing finite says so).
+/// `answer`: the implementation's answer drawn in red (default: production's).
 template <class A, class B>
-std::string views(const A& a, const B& b, const std::string& title, const std::vector<Mark>& extra = {});
+std::string views(const A& a, const B& b, const std::string& title, const std::vector<Mark>& extra = {},
+                  const Answer* answer = nullptr);
 
 }  // namespace geomcheck::draw

@@ -26,12 +26,16 @@ const char* kUsage =
     "\n"
     "commands:\n"
     "  campaign [--cases N] [--seconds S] [--seed N] [--threads N] [--out DIR] [--query ID]...\n"
+    "           [--variant NAME] [--no-progress]\n"
     "        Differential campaign of every registered query: production vs the exact\n"
     "        oracle vs FCL on the targeted generators. Writes DIR/report.json and\n"
-    "        DIR/report.html (default DIR: reports/out) and every failing case under\n"
-    "        DIR/counterexamples/. Exit status 1 when anything failed.\n"
+    "        DIR/report.html (default DIR: reports/out), every failing case and its\n"
+    "        drawing under DIR/counterexamples/, every FCL disagreement beyond the\n"
+    "        band under DIR/fcl-disagreements/. Exit status 1 when anything failed.\n"
     "        Defaults: --cases 100000 per query (10000 for the queries whose oracle is\n"
     "        the certified engine), --seed 20261121, all cores.\n"
+    "        --variant NAME runs a known-wrong variant of one query in production's\n"
+    "        place (what a failing campaign looks like; --variant help lists them).\n"
     "  replay [--quiet] PATH...\n"
     "        Replays case files (or every *.case under a directory): production, the\n"
     "        exact oracle and FCL side by side, the verdict margin and every property\n"
@@ -233,6 +237,17 @@ int cmd_campaign(const std::vector<std::string>& args) {
       else if (a == "--out") opt.out = num(i);
       else if (a == "--query") opt.queries.push_back(info(need_query(num(i))).name);
       else if (a == "--no-progress") opt.progress = false;
+      else if (a == "--variant") {
+        opt.variant = num(i);
+        if (opt.variant == "help") {
+          for (const auto& [v, q] : campaign_variants()) std::printf("%s (%s)\n", v.c_str(), q.c_str());
+          std::exit(0);
+        }
+        bool known = false;
+        std::string names;
+        for (const auto& [v, q] : campaign_variants()) known = known || v == opt.variant, names += "\n  " + v + " (" + q + ")";
+        if (!known) usage_error("campaign: unknown variant " + opt.variant + "; the known-wrong variants are:" + names);
+      }
       else usage_error("campaign: unknown option " + a);
     }
   } catch (const std::exception&) {

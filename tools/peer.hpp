@@ -3,6 +3,7 @@
 
 #include <string>
 #include <type_traits>
+#include <utility>
 
 #include "geomcheck/oracles/fcl_adapter.hpp"
 #include "geomcheck/properties/checks.hpp"
@@ -43,13 +44,15 @@ inline const CylinderTriangleImpl& production(const CylinderTriangleCase&) { ret
 inline const CastSegmentCylinderImpl& production(const SegmentCylinderCase&) { return kProductionCastSegmentCylinder; }
 inline const SweepSphereCylinderImpl& production(const SweepCylinderCase&) { return kProductionSweepSphereCylinder; }
 
-template <class Case>
-Evaluation evaluate_with_peer(const Case& c, const PeerAnswer& p) {
+/// `impl` (default: production) evaluated with FCL's answer scored against
+/// the same truth.
+template <class Case, class Impl = std::decay_t<decltype(production(std::declval<Case>()))>>
+Evaluation evaluate_with_peer(const Case& c, const PeerAnswer& p, const Impl& impl = production(Case{})) {
   const bool answered = p.supported && p.ok;
   if constexpr (std::is_same_v<Case, SegmentCylinderCase> || std::is_same_v<Case, SweepCylinderCase>) {
-    return evaluate(c, production(c), answered && p.hit ? &p.t : nullptr);
+    return evaluate(c, impl, answered && p.hit ? &p.t : nullptr);
   } else {
-    return evaluate(c, production(c), answered ? &p.contact : nullptr);
+    return evaluate(c, impl, answered ? &p.contact : nullptr);
   }
 }
 

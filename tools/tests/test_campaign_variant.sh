@@ -1,0 +1,33 @@
+#!/usr/bin/env bash
+# geomcheck — a failing campaign, end to end: a known-wrong variant
+# (capsule-capsule: the cylinder's caps rounded) runs in production's place
+# (fixed seed). The campaign must exit 1, save every failing case with its
+# drawing (three views, the variant's answer, the oracle's witness), list
+# them in the report, and each case must replay as a pass against
+# production (the failure is the variant's, not production's).
+# usage: test_campaign_variant.sh GEOMCHECK OUT_DIR
+set -u
+tool=$1 out=$2
+rm -rf "$out"; mkdir -p "$out"
+fail() { echo "FAIL: $*"; exit 1; }
+"$tool" campaign --seed 20261121 --cases 300 --variant capsule-capsule --no-progress --out "$out/report" \
+  > "$out/campaign.log" 2>&1
+status=$?
+[ "$status" -eq 1 ] || { cat "$out/campaign.log"; fail "exit status $status (1 expected: the variant is wrong)"; }
+grep -q "FAILURES found" "$out/campaign.log" || fail "the campaign did not say it found failures"
+dir="$out/report/counterexamples/collide_cylinder_capsule"
+cases=$(ls "$dir"/*.case 2>/dev/null | wc -l)
+[ "$cases" -gt 0 ] || fail "no counterexample saved"
+failures=$(python3 -c "import json,sys; q=json.load(open(sys.argv[1]))['queries']; print(sum(x['check_failures'] for x in q), len(q))" "$out/report/report.json")
+[ "$failures" = "$cases 1" ] || fail "report.json says '$failures' (check failures, queries), $cases case files saved"
+grep -q '"implementation": "capsule-capsule' "$out/report/report.json" || fail "report.json does not name the variant"
+for c in "$dir"/*.case; do
+  page="${c%.case}.html"
+  [ -s "$page" ] || fail "no drawing beside $c"
+  [ "$(grep -o "<title>[a-z]* view</title>" "$page" | wc -l)" -eq 3 ] || fail "$page: not three views"
+  grep -q "capsule-capsule: " "$page" || fail "$page: the variant's answer is not drawn"
+  grep -q "oracle: " "$page" || fail "$page: no oracle witness"
+done
+"$tool" replay --quiet "$dir" > "$out/replay.log" 2>&1 || { cat "$out/replay.log"; fail "production fails a case only the variant should fail"; }
+grep -q "counterexamples drawn" "$out/report/report.html" || fail "the report draws no counterexample"
+echo "variant campaign: $cases counterexamples saved and drawn, all replay as passes against production"
