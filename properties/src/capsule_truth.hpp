@@ -3,9 +3,14 @@
 // certified engine (internal to properties/).
 #pragma once
 
+#include <cmath>
+#include <functional>
+#include <optional>
 #include <string>
 
+#include "geomcheck/oracles/cylinder_sphere.hpp"
 #include "geomcheck/oracles/engine.hpp"
+#include "geomcheck/results.hpp"
 
 namespace geomcheck {
 
@@ -52,6 +57,24 @@ double nearest_to_zero(const oracle::QInterval& x, double scale);
 
 /// Overlap of A and B measured along unit(n): (h_A(n) + h_B(-n)) / |n|, certified.
 oracle::QInterval overlap_along(const oracle::ConvexShape& a, const oracle::ConvexShape& b, const oracle::QVec& n);
+
+/// One contact (production's or a peer's) scored against a polytope pair's
+/// truth (cylinder against a box or a triangle): unit-normal error; with the
+/// truth overlapping, depth and normal errors against the certified EPA
+/// enclosure of the penetration depth (computed once into `pd`; where it is
+/// wider than 1% of `depth_bound` the errors are the distance from the
+/// enclosure, a certain lower bound, and `*wide` is set); the point's error
+/// from the cylinder's certified signed distance and `outside_b(point)`, an
+/// upper bound of its distance outside B. Multiples of `scale`; NaN where not
+/// measured.
+struct ContactErrors {
+  double unit = NAN, depth = NAN, normal = NAN, point = NAN;
+};
+ContactErrors score_polytope_contact(const Contact& k, bool truth_hit, const PolytopeTruth& truth,
+                                     const oracle::QCylinder& qcyl, const oracle::ConvexShape& cyl,
+                                     const oracle::ConvexShape& shape, double scale, double depth_bound,
+                                     std::optional<oracle::PenetrationResult>& pd,
+                                     const std::function<oracle::Q(Vec3)>& outside_b, std::string* wide);
 
 /// Certified signed distance of a point from the capsule pq, r (< 0 inside).
 oracle::QInterval capsule_signed_distance(const oracle::QVec& p, const oracle::QVec& q, const oracle::Q& r,

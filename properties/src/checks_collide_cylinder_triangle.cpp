@@ -126,48 +126,18 @@ Evaluation evaluate(const CylinderTriangleCase& c, const CylinderTriangleImpl& i
   if (truth.verdict == Verdict::Separated &&
       truth.signed_distance.hi - truth.signed_distance.lo <= times_scale(1e-12, e.scale))
     e.distance = truth.signed_distance.mid();
-  // EPA runs once, for whichever contact needs it first.
-  std::optional<oracle::PenetrationResult> pd_cache;
-  auto penetration_once = [&]() -> const oracle::PenetrationResult& {
-    if (!pd_cache) pd_cache = oracle::penetration(cyl, tri, 1e-20);
-    return *pd_cache;
-  };
-  bool noted = false;
-  // One contact (production's or the peer's) against the truth.
-  auto score = [&](const Contact& k, double& unit_err, double& depth_err, double& normal_err, double& point_err) {
-    if (!k.hit || !finite_contact(k)) return;
-    unit_err = std::fabs(length(k.normal) - 1);
-    if (!e.truth_hit) return;
-    // The penetration depth, certified (EPA): the header claims depth
-    // and normal minimal. Where EPA cannot narrow the enclosure below the
-    // bound (it stops at its iteration caps), the errors are taken as the
-    // distance from production's value to the enclosure: certain, a
-    // lower bound, so a failure is always production's.
-    if (truth.verdict == Verdict::Overlapping) {
-      const oracle::PenetrationResult& pd = penetration_once();
-      if (pd.overlapping && std::isfinite(oracle::to_double(pd.depth.hi))) {
-        const bool narrow = pd.depth.hi - pd.depth.lo <= times_scale(0.01 * tol.depth, e.scale);
-        const Q v = oracle::to_q(k.depth);
-        if (narrow) depth_err = rel_error(pd.depth, k.depth, e.scale);
-        else depth_err = v > pd.depth.hi ? rel_up(v - pd.depth.hi, e.scale) : (v < pd.depth.lo ? rel_up(pd.depth.lo - v, e.scale) : 0.0);
-        if (max_abs(k.normal) > 0) {
-          const QInterval along = overlap_along(cyl, tri, oracle::to_q(k.normal));
-          const Q excess = narrow ? along.hi - pd.depth.lo : along.lo - pd.depth.hi;
-          normal_err = excess > 0 ? rel_up(excess, e.scale) : 0.0;
-        }
-        if (!narrow && !noted) noted = true, e.truth_text += "; penetration depth " + oracle::to_string(pd.depth) + " (EPA enclosure wider than the bound)";
-      }
-    }
-    // The point: its distance from the cylinder (certified) and from the
-    // triangle (exact, rounded up at the square root).
-    const QVec x = oracle::to_q(k.point);
-    const QInterval da = oracle::signed_distance(oracle::to_q(c.a), x);
-    const Q db_hi = triangle_distance_up(c.b, k.point);
-    const Q out = da.hi > db_hi ? da.hi : db_hi;
-    point_err = out > 0 ? rel_up(out, e.scale) : 0.0;
-  };
-  score(ct, e.unit_err, e.depth_err, e.normal_err, e.point_err);
-  if (peer) score(*peer, e.peer.unit_err, e.peer.depth_err, e.peer.normal_err, e.peer.point_err);
+  // Production's contact and the peer's against the same truth (EPA once).
+  std::optional<oracle::PenetrationResult> pd;
+  const oracle::QCylinder qcyl = oracle::to_q(c.a);
+  const std::function<Q(Vec3)> outside_b = [&](Vec3 x) { return triangle_distance_up(c.b, x); };
+  std::string wide;
+  const ContactErrors mine = score_polytope_contact(ct, e.truth_hit, truth, qcyl, cyl, tri, e.scale, tol.depth, pd, outside_b, &wide);
+  e.unit_err = mine.unit, e.depth_err = mine.depth, e.normal_err = mine.normal, e.point_err = mine.point;
+  if (peer) {
+    const ContactErrors theirs = score_polytope_contact(*peer, e.truth_hit, truth, qcyl, cyl, tri, e.scale, tol.depth, pd, outside_b, &wide);
+    e.peer.unit_err = theirs.unit, e.peer.depth_err = theirs.depth, e.peer.normal_err = theirs.normal, e.peer.point_err = theirs.point;
+  }
+  e.truth_text += wide;
   return e;
 }
 
