@@ -245,7 +245,7 @@ QueryReport run_query(const CampaignOptions& opt, const std::filesystem::path& o
     ++rep.valid;
     rep.prod_hits += e.prod_hit;
     rep.truth_hits += e.truth_hit;
-    rep.verdicts[info(Q).kind == QueryKind::Collide ? oracle::to_string(e.verdict) : (e.truth_hit ? "hit" : "miss")]++;
+    rep.verdicts[verdict_word(Q, e)]++;
     if (e.disagree) {
       ++rep.disagree;
       if (e.excused) ++rep.excused;
@@ -262,7 +262,6 @@ QueryReport run_query(const CampaignOptions& opt, const std::filesystem::path& o
         ++rep.fcl_ok;
         // Every FCL disagreement beyond the band is saved as a case file;
         // the first few of each kind are drawn.
-        const draw::Answer ans = answer_of(cases[r.index].first, *impl);
         auto save_fcl = [&](const char* kind, const std::string& answer) {
           const std::filesystem::path dir = out_dir / "fcl-disagreements" / rep.name;
           std::filesystem::create_directories(dir);
@@ -270,17 +269,18 @@ QueryReport run_query(const CampaignOptions& opt, const std::filesystem::path& o
           std::snprintf(name, sizeof name, "%05d-fcl-%s.case", r.index, kind);
           CaseFile f = from_case<Q>(cases[r.index].first,
                                     "campaign seed=" + std::to_string(opt.seed) + " case=" + std::to_string(r.index),
-                                    e.truth_hit ? (info(Q).kind == QueryKind::Collide ? oracle::to_string(e.verdict) : "hit")
-                                                : (info(Q).kind == QueryKind::Collide ? "separated" : "miss"),
+                                    verdict_word(Q, e),
                                     "FCL: " + r.fcl.text + "; oracle: " + e.truth_text);
           std::string err;
           if (save_case(dir / name, f, err)) rep.fcl_cases.push_back((dir / name).string());
           else std::fprintf(stderr, "[campaign] cannot save %s: %s\n", (dir / name).string().c_str(), err.c_str());
-          if (rep.fcl_drawn[kind]++ < 3)
+          if (rep.fcl_drawn[kind]++ < 3) {
+            const draw::Answer ans = answer_of(cases[r.index].first, *impl);
             rep.fcl_drawings.push_back(draw::views(
                 cases[r.index].first.a, cases[r.index].first.b,
                 html(std::string("case ") + name + ": " + answer + " (" + r.fcl.text + "); oracle: " + e.truth_text),
                 {fcl_mark(cases[r.index].first, r.fcl)}, &ans));
+          }
         };
         if (r.fcl.hit != e.truth_hit) {
           ++rep.fcl_disagree;
@@ -289,9 +289,6 @@ QueryReport run_query(const CampaignOptions& opt, const std::filesystem::path& o
             save_fcl(r.fcl.hit ? "false-hit" : "missed-hit", r.fcl.hit ? "FCL hit" : "FCL no hit");
           }
         }
-        if (std::isfinite(r.fcl.distance) && (r.fcl.distance < 0) != e.truth_hit && !e.near_boundary)
-          save_fcl(r.fcl.distance < 0 ? "distance-says-meet" : "distance-says-apart",
-                   r.fcl.distance < 0 ? "FCL's distance: they meet" : "FCL's distance: separated");
         rep.fcl_depth.add(e.peer.depth_err);
         rep.fcl_normal.add(e.peer.normal_err);
         rep.fcl_point.add(e.peer.point_err);
@@ -300,7 +297,11 @@ QueryReport run_query(const CampaignOptions& opt, const std::filesystem::path& o
           rep.fcl_t.add(std::fabs(r.fcl.t - e.t_true));
         if (std::isfinite(r.fcl.distance)) {
           ++rep.fcl_distance_asked;
-          if ((r.fcl.distance < 0) != e.truth_hit && !e.near_boundary) ++rep.fcl_distance_beyond;
+          if ((r.fcl.distance < 0) != e.truth_hit && !e.near_boundary) {
+            ++rep.fcl_distance_beyond;
+            save_fcl(r.fcl.distance < 0 ? "distance-says-meet" : "distance-says-apart",
+                     r.fcl.distance < 0 ? "FCL's distance: they meet" : "FCL's distance: separated");
+          }
           if (r.fcl.distance >= 0 && std::isfinite(e.distance))
             rep.fcl_distance.add(std::fabs(r.fcl.distance - e.distance) / e.scale);
         }
@@ -318,7 +319,7 @@ QueryReport run_query(const CampaignOptions& opt, const std::filesystem::path& o
       CaseFile f = from_case<Q>(cases[r.index].first,
                                 "campaign seed=" + std::to_string(opt.seed) + " case=" + std::to_string(r.index),
                                 "", r.failure->property + ": " + r.failure->detail);
-      f.oracle_verdict = info(Q).kind == QueryKind::Collide ? oracle::to_string(e.verdict) : (e.truth_hit ? "hit" : "miss");
+      f.oracle_verdict = verdict_word(Q, e);
       std::string err;
       if (save_case(path, f, err)) rep.counterexamples.push_back(path.string());
       else std::fprintf(stderr, "[campaign] cannot save %s: %s\n", path.string().c_str(), err.c_str());

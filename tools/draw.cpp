@@ -339,20 +339,19 @@ std::vector<Mark> engine_witness(const oracle::ConvexShape& a, const oracle::Con
 }
 
 template <class B>
-std::vector<Mark> collide_witness(const Cylinder& a, const B& b) {
+std::vector<Mark> collide_witness(const Cylinder& a, const B& b, const Vec3* hint) {
   if (!is_valid(a) || !is_valid(b)) return {{Mark::Kind::PointNormal, kNowhere, Vec3{}, 0, kOracleColour, "oracle: invalid input"}};
-  const Answer ans = production_answer(a, b);
-  return engine_witness(oracle::make_shape(a), oracle::make_shape(b), &a, ans.hit ? &ans.point : nullptr);
+  return engine_witness(oracle::make_shape(a), oracle::make_shape(b), &a, hint);
 }
 
 }  // namespace
 
-std::vector<Mark> oracle_witness(const Cylinder& a, const Sphere& b) { return collide_witness(a, b); }
-std::vector<Mark> oracle_witness(const Cylinder& a, const Capsule& b) { return collide_witness(a, b); }
-std::vector<Mark> oracle_witness(const Cylinder& a, const Obb& b) { return collide_witness(a, b); }
-std::vector<Mark> oracle_witness(const Cylinder& a, const Triangle& b) { return collide_witness(a, b); }
+std::vector<Mark> oracle_witness(const Cylinder& a, const Sphere& b, const Vec3* hint) { return collide_witness(a, b, hint); }
+std::vector<Mark> oracle_witness(const Cylinder& a, const Capsule& b, const Vec3* hint) { return collide_witness(a, b, hint); }
+std::vector<Mark> oracle_witness(const Cylinder& a, const Obb& b, const Vec3* hint) { return collide_witness(a, b, hint); }
+std::vector<Mark> oracle_witness(const Cylinder& a, const Triangle& b, const Vec3* hint) { return collide_witness(a, b, hint); }
 
-std::vector<Mark> oracle_witness(const Segment& s, const Cylinder& c) {
+std::vector<Mark> oracle_witness(const Segment& s, const Cylinder& c, const Vec3*) {
   if (!is_valid(s) || !is_valid(c)) return {{Mark::Kind::PointNormal, kNowhere, Vec3{}, 0, kOracleColour, "oracle: invalid input"}};
   const oracle::CastTruth t = oracle::solve_cast(s, c);
   if (!t.hit) return {{Mark::Kind::PointNormal, kNowhere, Vec3{}, 0, kOracleColour, "oracle: miss"}};
@@ -361,7 +360,7 @@ std::vector<Mark> oracle_witness(const Segment& s, const Cylinder& c) {
            std::string("oracle: first touch S(t), t = ") + fmt(tm) + " (" + oracle::to_string(t.feature) + ")"}};
 }
 
-std::vector<Mark> oracle_witness(const MovingSphere& m, const Cylinder& c) {
+std::vector<Mark> oracle_witness(const MovingSphere& m, const Cylinder& c, const Vec3*) {
   if (!is_valid(m) || !is_valid(c)) return {{Mark::Kind::PointNormal, kNowhere, Vec3{}, 0, kOracleColour, "oracle: invalid input"}};
   const oracle::ImpactResult r =
       oracle::time_of_impact(oracle::make_shape(Sphere{m.c, m.r}), oracle::to_q(m.delta), oracle::make_shape(c));
@@ -385,7 +384,7 @@ std::string views(const A& a, const B& b, const std::string& title, const std::v
   const Figure shapes[2] = {figure(a), figure(b)};
   const Answer ans = answer ? *answer : production_answer(a, b);
   std::vector<Mark> marks{{Mark::Kind::PointNormal, ans.hit ? ans.point : kNowhere, ans.normal, 0, "#d00", ans.label}};
-  for (const Mark& m : oracle_witness(a, b)) marks.push_back(m);
+  for (const Mark& m : oracle_witness(a, b, ans.hit ? &ans.point : nullptr)) marks.push_back(m);
   marks.insert(marks.end(), extra.begin(), extra.end());
   return render(shapes, marks, title);
 }

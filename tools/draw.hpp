@@ -47,13 +47,14 @@ struct Mark {
 /// common point; overlapping, a common point and the minimal translation
 /// of B (depth along the penetration direction); a cast, the first touch
 /// S(t); a sweep, the ball at its first touch. Empty for invalid input or
-/// when the oracle cannot say.
-std::vector<Mark> oracle_witness(const Cylinder& a, const Sphere& b);
-std::vector<Mark> oracle_witness(const Segment& a, const Cylinder& b);
-std::vector<Mark> oracle_witness(const Cylinder& a, const Capsule& b);
-std::vector<Mark> oracle_witness(const MovingSphere& a, const Cylinder& b);
-std::vector<Mark> oracle_witness(const Cylinder& a, const Obb& b);
-std::vector<Mark> oracle_witness(const Cylinder& a, const Triangle& b);
+/// when the oracle cannot say. `hint`: a point worth trying as the certified
+/// common point (the drawn answer's).
+std::vector<Mark> oracle_witness(const Cylinder& a, const Sphere& b, const Vec3* hint = nullptr);
+std::vector<Mark> oracle_witness(const Segment& a, const Cylinder& b, const Vec3* hint = nullptr);
+std::vector<Mark> oracle_witness(const Cylinder& a, const Capsule& b, const Vec3* hint = nullptr);
+std::vector<Mark> oracle_witness(const MovingSphere& a, const Cylinder& b, const Vec3* hint = nullptr);
+std::vector<Mark> oracle_witness(const Cylinder& a, const Obb& b, const Vec3* hint = nullptr);
+std::vector<Mark> oracle_witness(const Cylinder& a, const Triangle& b, const Vec3* hint = nullptr);
 
 /// Three views of shapes A (blue) and B (orange), production's answer
 /// (red), the oracle's witness (green) and `extra` marks, fitted to all of

@@ -80,7 +80,7 @@ bool replay_one(const fs::path& path, bool quiet) {
     const CheckResult failure = check_all(c);
     const Tolerances tol = tolerances(Q);
     bool filed_ok = true;
-    std::string truth_word = info(Q).kind == QueryKind::Collide ? oracle::to_string(e.verdict) : (e.truth_hit ? "hit" : "miss");
+    std::string truth_word = verdict_word(Q, e);
     if (!e.valid) truth_word = "invalid";
     if (!f.oracle_verdict.empty() && e.valid && f.oracle_verdict != truth_word) filed_ok = false;
     const bool pass = !failure && filed_ok;

@@ -121,6 +121,12 @@ Evaluation evaluate(const SweepCylinderCase& c, const SweepSphereCylinderImpl& i
 Evaluation evaluate(const CylinderObbCase& c, const CylinderObbImpl& impl = kProductionCylinderObb, const Contact* peer = nullptr);
 Evaluation evaluate(const CylinderTriangleCase& c, const CylinderTriangleImpl& impl = kProductionCylinderTriangle, const Contact* peer = nullptr);
 
+/// The oracle's verdict in the words of case files' `oracle-verdict`:
+/// collide queries overlapping / touching / separated, casts hit / miss.
+inline std::string verdict_word(QueryId id, const Evaluation& e) {
+  return info(id).kind == QueryKind::Collide ? oracle::to_string(e.verdict) : (e.truth_hit ? "hit" : "miss");
+}
+
 /// Compares an evaluation with the query's tolerances (tolerances.hpp).
 CheckResult judge(QueryId id, const Evaluation& e);
 
