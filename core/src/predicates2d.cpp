@@ -11,12 +11,6 @@ namespace geomcheck {
 
 namespace {
 
-constexpr double kEps = 0x1p-53;  // half an ulp of 1
-constexpr double kCcwErrBoundA = (3.0 + 16.0 * kEps) * kEps;
-constexpr double kIccErrBoundA = (10.0 + 96.0 * kEps) * kEps;
-// Below this the filter's relative bounds could be spoiled by underflow.
-constexpr double kFilterFloor = 0x1p-900;
-
 // ---- expansion arithmetic (Shewchuk 1997): components nonoverlapping, in
 // increasing magnitude, zeros eliminated; the value is their exact sum.
 using Expansion = std::vector<double>;
@@ -107,6 +101,103 @@ bool scaling(std::initializer_list<double> xs, int max_span, int& shift) {
   return hi - lo <= max_span;
 }
 
+// ---- stage B on fixed-size arrays (Shewchuk's scale_expansion_zeroelim and
+// fast_expansion_sum_zeroelim): no allocation. Exact when the inputs are
+// exact differences whose magnitudes keep every partial product and error
+// term away from overflow and underflow (checked by exact_moderate).
+int scale_zeroelim(int elen, const double* e, double b, double* h) {
+  double q, hh, p1, p0, s;
+  two_prod(e[0], b, q, hh);
+  int hi = 0;
+  if (hh != 0) h[hi++] = hh;
+  for (int i = 1; i < elen; ++i) {
+    two_prod(e[i], b, p1, p0);
+    two_sum(q, p0, s, hh);
+    if (hh != 0) h[hi++] = hh;
+    fast_two_sum(p1, s, q, hh);
+    if (hh != 0) h[hi++] = hh;
+  }
+  if (q != 0 || hi == 0) h[hi++] = q;
+  return hi;
+}
+int sum_zeroelim(int elen, const double* e, int flen, const double* f, double* h) {
+  double q, qnew, hh;
+  double enow = e[0], fnow = f[0];
+  int ei = 0, fi = 0, hi = 0;
+  if ((fnow > enow) == (fnow > -enow)) {
+    q = enow;
+    enow = ++ei < elen ? e[ei] : 0;
+  } else {
+    q = fnow;
+    fnow = ++fi < flen ? f[fi] : 0;
+  }
+  if (ei < elen && fi < flen) {
+    if ((fnow > enow) == (fnow > -enow)) {
+      fast_two_sum(enow, q, qnew, hh);
+      enow = ++ei < elen ? e[ei] : 0;
+    } else {
+      fast_two_sum(fnow, q, qnew, hh);
+      fnow = ++fi < flen ? f[fi] : 0;
+    }
+    q = qnew;
+    if (hh != 0) h[hi++] = hh;
+    while (ei < elen && fi < flen) {
+      if ((fnow > enow) == (fnow > -enow)) {
+        two_sum(q, enow, qnew, hh);
+        enow = ++ei < elen ? e[ei] : 0;
+      } else {
+        two_sum(q, fnow, qnew, hh);
+        fnow = ++fi < flen ? f[fi] : 0;
+      }
+      q = qnew;
+      if (hh != 0) h[hi++] = hh;
+    }
+  }
+  while (ei < elen) {
+    two_sum(q, enow, qnew, hh);
+    enow = ++ei < elen ? e[ei] : 0;
+    q = qnew;
+    if (hh != 0) h[hi++] = hh;
+  }
+  while (fi < flen) {
+    two_sum(q, fnow, qnew, hh);
+    fnow = ++fi < flen ? f[fi] : 0;
+    q = qnew;
+    if (hh != 0) h[hi++] = hh;
+  }
+  if (q != 0 || hi == 0) h[hi++] = q;
+  return hi;
+}
+int sign_of_array(int n, const double* e) {
+  const double top = e[n - 1];
+  return top > 0 ? 1 : (top < 0 ? -1 : 0);
+}
+// a - b as one double, and whether that is exact and 0 or within
+// [2^-120, 2^120] in magnitude.
+inline bool exact_moderate(double a, double b, double& d) {
+  double err;
+  two_sum(a, -b, d, err);
+  const double m = std::fabs(d);
+  return err == 0 && (d == 0 || (m >= 0x1p-120 && m <= 0x1p120));
+}
+// e (n components) times x times x, plus the same for y: the lifted terms.
+int lift_times(const double* bc, int n, double x, double y, double* out) {
+  double t1[8], t2[16], t3[8], t4[16];
+  const int l1 = scale_zeroelim(n, bc, x, t1);
+  const int l2 = scale_zeroelim(l1, t1, x, t2);
+  const int l3 = scale_zeroelim(n, bc, y, t3);
+  const int l4 = scale_zeroelim(l3, t3, y, t4);
+  return sum_zeroelim(l2, t2, l4, t4, out);
+}
+// p*q - r*s exactly (four components at most).
+int two_products_diff(double p, double q, double r, double s, double* out) {
+  double a[2], b[2];
+  two_prod(p, q, a[1], a[0]);
+  two_prod(r, s, b[1], b[0]);
+  b[0] = -b[0], b[1] = -b[1];
+  return sum_zeroelim(2, a, 2, b, out);
+}
+
 using Rational = boost::multiprecision::cpp_rational;
 
 int sign_of(const Rational& q) { return q > 0 ? 1 : (q < 0 ? -1 : 0); }
@@ -114,6 +205,34 @@ int sign_of(const Rational& q) { return q > 0 ? 1 : (q < 0 ? -1 : 0); }
 }  // namespace
 
 namespace detail {
+
+int orient2d_stage_b(Vec2 a, Vec2 b, Vec2 c) {
+  double acx, acy, bcx, bcy;
+  if (!exact_moderate(a.x, c.x, acx) || !exact_moderate(a.y, c.y, acy) || !exact_moderate(b.x, c.x, bcx) ||
+      !exact_moderate(b.y, c.y, bcy))
+    return 2;
+  double e[4];
+  const int n = two_products_diff(acx, bcy, acy, bcx, e);
+  return sign_of_array(n, e);
+}
+
+int incircle_stage_b(Vec2 a, Vec2 b, Vec2 c, Vec2 d) {
+  double adx, ady, bdx, bdy, cdx, cdy;
+  if (!exact_moderate(a.x, d.x, adx) || !exact_moderate(a.y, d.y, ady) || !exact_moderate(b.x, d.x, bdx) ||
+      !exact_moderate(b.y, d.y, bdy) || !exact_moderate(c.x, d.x, cdx) || !exact_moderate(c.y, d.y, cdy))
+    return 2;
+  double bc[4], ca[4], ab[4];
+  const int nbc = two_products_diff(bdx, cdy, cdx, bdy, bc);
+  const int nca = two_products_diff(cdx, ady, adx, cdy, ca);
+  const int nab = two_products_diff(adx, bdy, bdx, ady, ab);
+  double adet[32], bdet[32], cdet[32], abdet[64], fin[96];
+  const int na = lift_times(bc, nbc, adx, ady, adet);
+  const int nb = lift_times(ca, nca, bdx, bdy, bdet);
+  const int nc = lift_times(ab, nab, cdx, cdy, cdet);
+  const int nabd = sum_zeroelim(na, adet, nb, bdet, abdet);
+  const int n = sum_zeroelim(nabd, abdet, nc, cdet, fin);
+  return sign_of_array(n, fin);
+}
 
 int orient2d_expansion(Vec2 a, Vec2 b, Vec2 c) {
   // Degree 2: partial products stay far from underflow within 300 binades.
@@ -156,34 +275,20 @@ int incircle_rational(Vec2 a, Vec2 b, Vec2 c, Vec2 d) {
   return sign_of(alift * (bdx * cdy - cdx * bdy) + blift * (cdx * ady - adx * cdy) + clift * (adx * bdy - bdx * ady));
 }
 
+int orient2d_exact(Vec2 a, Vec2 b, Vec2 c) {
+  const int sb = orient2d_stage_b(a, b, c);
+  if (sb != 2) return sb;
+  const int e = orient2d_expansion(a, b, c);
+  return e != 2 ? e : orient2d_rational(a, b, c);
+}
+
+int incircle_exact(Vec2 a, Vec2 b, Vec2 c, Vec2 d) {
+  const int sb = incircle_stage_b(a, b, c, d);
+  if (sb != 2) return sb;
+  const int e = incircle_expansion(a, b, c, d);
+  return e != 2 ? e : incircle_rational(a, b, c, d);
+}
+
 }  // namespace detail
-
-int orient2d(Vec2 a, Vec2 b, Vec2 c) {
-  const double detleft = (a.x - c.x) * (b.y - c.y);
-  const double detright = (a.y - c.y) * (b.x - c.x);
-  const double det = detleft - detright;
-  const double detsum = std::fabs(detleft) + std::fabs(detright);
-  const double bound = kCcwErrBoundA * detsum;
-  if (detsum >= kFilterFloor && (det > bound || -det > bound)) return det > 0 ? 1 : -1;
-  const int e = detail::orient2d_expansion(a, b, c);
-  return e != 2 ? e : detail::orient2d_rational(a, b, c);
-}
-
-int incircle(Vec2 a, Vec2 b, Vec2 c, Vec2 d) {
-  const double adx = a.x - d.x, bdx = b.x - d.x, cdx = c.x - d.x;
-  const double ady = a.y - d.y, bdy = b.y - d.y, cdy = c.y - d.y;
-  const double bdxcdy = bdx * cdy, cdxbdy = cdx * bdy;
-  const double cdxady = cdx * ady, adxcdy = adx * cdy;
-  const double adxbdy = adx * bdy, bdxady = bdx * ady;
-  const double alift = adx * adx + ady * ady, blift = bdx * bdx + bdy * bdy, clift = cdx * cdx + cdy * cdy;
-  const double det = alift * (bdxcdy - cdxbdy) + blift * (cdxady - adxcdy) + clift * (adxbdy - bdxady);
-  const double permanent = (std::fabs(bdxcdy) + std::fabs(cdxbdy)) * alift +
-                           (std::fabs(cdxady) + std::fabs(adxcdy)) * blift +
-                           (std::fabs(adxbdy) + std::fabs(bdxady)) * clift;
-  const double bound = kIccErrBoundA * permanent;
-  if (permanent >= kFilterFloor && (det > bound || -det > bound)) return det > 0 ? 1 : -1;
-  const int e = detail::incircle_expansion(a, b, c, d);
-  return e != 2 ? e : detail::incircle_rational(a, b, c, d);
-}
 
 }  // namespace geomcheck

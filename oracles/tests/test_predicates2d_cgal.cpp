@@ -10,9 +10,20 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
 #include <cmath>
+#include <cstdio>
+#include <ostream>
 #include <vector>
 
 #include "geomcheck/predicates2d.hpp"
+
+namespace geomcheck {
+// Counterexamples print bit-exact (hex floats).
+inline void showValue(const Vec2& p, std::ostream& os) {
+  char buf[96];
+  std::snprintf(buf, sizeof buf, "(%a, %a)", p.x, p.y);
+  os << buf;
+}
+}  // namespace geomcheck
 
 namespace {
 
@@ -96,6 +107,9 @@ RC_GTEST_PROP(Predicates2d, OrientationIsExact, ()) {
   RC_ASSERT(geomcheck::detail::orient2d_rational(p[0], p[1], p[2]) == cgal_orient(p[0], p[1], p[2]));
   const int e = geomcheck::detail::orient2d_expansion(p[0], p[1], p[2]);
   RC_ASSERT(e == 2 || e == cgal_orient(p[0], p[1], p[2]));
+  const int b = geomcheck::detail::orient2d_stage_b(p[0], p[1], p[2]);
+  RC_CLASSIFY(b != 2, "stage B applies");
+  RC_ASSERT(b == 2 || b == want);
 }
 
 RC_GTEST_PROP(Predicates2d, InCircleIsExact, ()) {
@@ -109,6 +123,9 @@ RC_GTEST_PROP(Predicates2d, InCircleIsExact, ()) {
   RC_ASSERT(geomcheck::detail::incircle_rational(p[0], p[1], p[2], p[3]) == want);
   const int e = geomcheck::detail::incircle_expansion(p[0], p[1], p[2], p[3]);
   RC_ASSERT(e == 2 || e == want);
+  const int b = geomcheck::detail::incircle_stage_b(p[0], p[1], p[2], p[3]);
+  RC_CLASSIFY(b != 2, "stage B applies");
+  RC_ASSERT(b == 2 || b == want);
 }
 
 // Symmetries the exact signs must have: cyclic shifts keep them, a swap
@@ -164,6 +181,23 @@ TEST(Predicates2d, ExactZeros) {
   const Vec2 a{1e-300, 0}, b{1e300, 1e-300}, c{-1e300, 1e300};
   EXPECT_EQ(geomcheck::orient2d(a, b, c), cgal_orient(a, b, c));
   EXPECT_EQ(geomcheck::detail::orient2d_expansion(a, b, c), 2);
+}
+
+// Found by InCircleIsExact (RC_PARAMS="max_success=30000 seed=7"): with the
+// fourth point near 2^-932 as the pivot, a product of two differences
+// underflowed and was then multiplied by a lift near 2^630, while the
+// permanent stayed far above the old floor, so the filter answered -1 where
+// the determinant is positive.
+TEST(Predicates2d, FilterUnderflowTimesLift) {
+  const Vec2 p0{-0x1.5284444444444p-993, -0x1.f90cede62433ap-991};
+  const Vec2 p1{-0x1.5284444444447p+315, -0x1.f90cede62433dp+317};
+  const Vec2 p2{-0x1.2bcd2e52e52e5p-932, -0x1.00f1c71c71c72p-930};
+  const Vec2 p3{-0x1.47e09c09c09c1p-146, -0x1.b4de62433b798p-144};
+  const int want = cgal_incircle(p3, p0, p1, p2);
+  ASSERT_EQ(want, 1);
+  EXPECT_EQ(geomcheck::detail::incircle_rational(p3, p0, p1, p2), want);
+  EXPECT_EQ(geomcheck::incircle(p3, p0, p1, p2), want);
+  EXPECT_EQ(geomcheck::incircle(p0, p1, p2, p3), cgal_incircle(p0, p1, p2, p3));
 }
 
 }  // namespace

@@ -6,15 +6,21 @@
 //      iccerrboundA, which cover the rounding of the differences as well);
 //      it answers when the computed value is farther from zero than the
 //      bound and nothing overflowed or underflowed;
-//   2. otherwise exact expansion arithmetic (error-free sums and products,
+//   2. when the filter fails and the coordinate differences are exact and of
+//      moderate magnitude (integer grids, nearby points: the common
+//      degenerate input), Shewchuk's stage B on fixed-size expansions, which
+//      is then exact;
+//   3. otherwise exact expansion arithmetic (error-free sums and products,
 //      products by fma) on the points scaled by one power of two, when the
 //      magnitudes of the involved coordinates span few enough binades that
 //      no partial product can overflow or lose bits to underflow;
-//   3. otherwise exact rationals (boost::multiprecision::cpp_rational),
+//   4. otherwise exact rationals (boost::multiprecision::cpp_rational),
 //      which cover any mix of magnitudes (1e300 beside 1e-300).
 // The caller checks finiteness (non-finite input has no exact answer: the
 // result is then unspecified but the call returns).
 #pragma once
+
+#include <cmath>
 
 namespace geomcheck {
 
@@ -24,17 +30,65 @@ struct Vec2 {
 inline bool operator==(Vec2 a, Vec2 b) { return a.x == b.x && a.y == b.y; }
 inline bool operator!=(Vec2 a, Vec2 b) { return !(a == b); }
 
+namespace detail {
+inline constexpr double kPredEps = 0x1p-53;  // half an ulp of 1
+inline constexpr double kCcwErrBoundA = (3.0 + 16.0 * kPredEps) * kPredEps;
+inline constexpr double kIccErrBoundA = (10.0 + 96.0 * kPredEps) * kPredEps;
+// orient2d: below this sum the filter's relative bound could be spoiled by
+// an underflowing product (whose absolute error, under 2^-1075, is then
+// far below the bound).
+inline constexpr double kFilterFloor = 0x1p-900;
+// incircle: products of differences are multiplied again by lifts, so an
+// underflowing product is not negligible however large the permanent; the
+// filter answers only when every non-zero difference is at least this
+// large, which keeps every product of four of them normal.
+inline constexpr double kIncircleDiffFloor = 0x1p-255;
+inline bool incircle_filter_safe(double v) { return v == 0 || std::fabs(v) >= kIncircleDiffFloor; }
+/// The exact stages behind the filter (out of line: rarely reached).
+int orient2d_exact(Vec2 a, Vec2 b, Vec2 c);
+int incircle_exact(Vec2 a, Vec2 b, Vec2 c, Vec2 d);
+}  // namespace detail
+
 /// Sign of det [b - a, c - a]: +1 when a, b, c turn counter-clockwise, -1
 /// clockwise, 0 collinear (or coincident points). Exact.
-int orient2d(Vec2 a, Vec2 b, Vec2 c);
+inline int orient2d(Vec2 a, Vec2 b, Vec2 c) {
+  const double detleft = (a.x - c.x) * (b.y - c.y);
+  const double detright = (a.y - c.y) * (b.x - c.x);
+  const double det = detleft - detright;
+  const double detsum = std::fabs(detleft) + std::fabs(detright);
+  const double bound = detail::kCcwErrBoundA * detsum;
+  if (detsum >= detail::kFilterFloor && (det > bound || -det > bound)) return det > 0 ? 1 : -1;
+  return detail::orient2d_exact(a, b, c);
+}
 
 /// For a, b, c counter-clockwise: +1 when d is strictly inside their
 /// circumcircle, -1 strictly outside, 0 on it (the sign flips for a
 /// clockwise triangle; 0 for collinear a, b, c means d is on their line or
 /// the determinant vanishes). Exact.
-int incircle(Vec2 a, Vec2 b, Vec2 c, Vec2 d);
+inline int incircle(Vec2 a, Vec2 b, Vec2 c, Vec2 d) {
+  const double adx = a.x - d.x, bdx = b.x - d.x, cdx = c.x - d.x;
+  const double ady = a.y - d.y, bdy = b.y - d.y, cdy = c.y - d.y;
+  const double bdxcdy = bdx * cdy, cdxbdy = cdx * bdy;
+  const double cdxady = cdx * ady, adxcdy = adx * cdy;
+  const double adxbdy = adx * bdy, bdxady = bdx * ady;
+  const double alift = adx * adx + ady * ady, blift = bdx * bdx + bdy * bdy, clift = cdx * cdx + cdy * cdy;
+  const double det = alift * (bdxcdy - cdxbdy) + blift * (cdxady - adxcdy) + clift * (adxbdy - bdxady);
+  const double permanent = (std::fabs(bdxcdy) + std::fabs(cdxbdy)) * alift +
+                           (std::fabs(cdxady) + std::fabs(adxcdy)) * blift +
+                           (std::fabs(adxbdy) + std::fabs(bdxady)) * clift;
+  const double bound = detail::kIccErrBoundA * permanent;
+  if ((det > bound || -det > bound) && detail::incircle_filter_safe(adx) && detail::incircle_filter_safe(ady) &&
+      detail::incircle_filter_safe(bdx) && detail::incircle_filter_safe(bdy) && detail::incircle_filter_safe(cdx) &&
+      detail::incircle_filter_safe(cdy))
+    return det > 0 ? 1 : -1;
+  return detail::incircle_exact(a, b, c, d);
+}
 
 namespace detail {
+/// Stage B alone (2 = not applicable: a difference is inexact or its
+/// magnitude is outside [2^-120, 2^120]).
+int orient2d_stage_b(Vec2 a, Vec2 b, Vec2 c);
+int incircle_stage_b(Vec2 a, Vec2 b, Vec2 c, Vec2 d);
 /// The exact stages alone (tests compare them with each other and with an
 /// independent exact kernel): expansions (nullopt-like 2 when the range of
 /// magnitudes does not allow them), and rationals.
