@@ -11,6 +11,7 @@
 #include "campaign.hpp"
 #include "geomcheck/casefile.hpp"
 #include "geomcheck/fuzz_decode.hpp"
+#include "geomcheck/pointset_file.hpp"
 #include "geomcheck/properties/checks.hpp"
 #include "geomcheck/properties/tolerances.hpp"
 #include "geomcheck/shape_traits.hpp"
@@ -39,7 +40,9 @@ const char* kUsage =
     "  replay [--quiet] PATH...\n"
     "        Replays case files (or every *.case under a directory): production, the\n"
     "        exact oracle and FCL side by side, the verdict margin and every property\n"
-    "        check. Exit status 1 when any case fails a check.\n"
+    "        check. A point-set file (query delaunay_2d) is parsed and its filed verdict\n"
+    "        checked against the kind of its points. Exit status 1 when any case fails\n"
+    "        a check.\n"
     "  from-fuzz QUERY CRASH_FILE [-o OUT.case]\n"
     "        Turns a libFuzzer input of QUERY's fuzz target into a case file.\n"
     "  from-rapidcheck QUERY TEXT_FILE|- [-o OUT.case]\n"
@@ -61,8 +64,41 @@ std::string shapes_text(const CaseFile& f) {
   return o.str();
 }
 
+// True when the file is a point-set file (query delaunay_2d).
+bool is_point_set_file(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return is_point_set_text(text.str());
+}
+
+// Replays one point-set file: it parses, and its filed verdict is the kind
+// of its points (classify_point_set); returns true when both hold.
+bool replay_point_set(const fs::path& path, bool quiet) {
+  const PointSetParseResult pr = load_point_set(path);
+  if (!pr.ok()) {
+    std::printf("%s\n  ERROR %s\n", path.string().c_str(), pr.error.c_str());
+    return false;
+  }
+  const PointSetFile& f = pr.value;
+  const std::string_view kind = classify_point_set(f.points);
+  const bool pass = f.oracle_verdict.empty() || f.oracle_verdict == kind;
+  if (quiet && pass) {
+    std::printf("PASS %s\n", path.string().c_str());
+    return true;
+  }
+  std::printf("%s %s\n  query: %s\n  points: %zu\n", pass ? "PASS" : "FAIL", path.string().c_str(), kDelaunayQueryName,
+              f.points.size());
+  if (!f.found_by.empty()) std::printf("  found by: %s\n", f.found_by.c_str());
+  std::printf("  kind of the point set: %.*s\n", static_cast<int>(kind.size()), kind.data());
+  if (!f.oracle_verdict.empty())
+    std::printf("  filed oracle verdict: %s%s\n", f.oracle_verdict.c_str(), pass ? "" : "  <-- the points are of another kind");
+  return pass;
+}
+
 // Replays one case; returns true when every check passes.
 bool replay_one(const fs::path& path, bool quiet) {
+  if (is_point_set_file(path)) return replay_point_set(path, quiet);
   const ParseResult pr = load_case(path);
   if (!pr.ok()) {
     std::printf("%s\n  ERROR %s\n", path.string().c_str(), pr.error.c_str());

@@ -198,6 +198,57 @@ int two_products_diff(double p, double q, double r, double s, double* out) {
   return sum_zeroelim(2, a, 2, b, out);
 }
 
+// ---- exact in doubles: the filter's own evaluation, each operation checked
+// to be error-free (a zero fma residual or two_sum tail) and normal, so the
+// computed determinant is the exact one. Catches small integer grids and
+// their power-of-two scalings (the common degenerate input) at little cost.
+inline bool exact_diff(double a, double b, double& d) {
+  double err;
+  two_sum(a, -b, d, err);
+  return err == 0 && std::isfinite(d);
+}
+inline bool exact_prod(double a, double b, double& p) {
+  p = a * b;
+  // Zero only from a zero factor; otherwise the residual must vanish and p
+  // be large enough that a non-zero residual would have been representable.
+  return p == 0 ? (a == 0 || b == 0) : (std::fma(a, b, -p) == 0 && std::fabs(p) >= 0x1p-960);
+}
+inline bool exact_add(double a, double b, double& s) {
+  double err;
+  two_sum(a, b, s, err);
+  return err == 0 && std::isfinite(s);
+}
+bool orient2d_in_doubles(Vec2 a, Vec2 b, Vec2 c, int& sign) {
+  double acx, acy, bcx, bcy, l, r, det;
+  if (!exact_diff(a.x, c.x, acx) || !exact_diff(a.y, c.y, acy) || !exact_diff(b.x, c.x, bcx) ||
+      !exact_diff(b.y, c.y, bcy) || !exact_prod(acx, bcy, l) || !exact_prod(acy, bcx, r) || !exact_add(l, -r, det))
+    return false;
+  sign = det > 0 ? 1 : (det < 0 ? -1 : 0);
+  return true;
+}
+bool incircle_in_doubles(Vec2 a, Vec2 b, Vec2 c, Vec2 d, int& sign) {
+  double adx, ady, bdx, bdy, cdx, cdy;
+  if (!exact_diff(a.x, d.x, adx) || !exact_diff(a.y, d.y, ady) || !exact_diff(b.x, d.x, bdx) ||
+      !exact_diff(b.y, d.y, bdy) || !exact_diff(c.x, d.x, cdx) || !exact_diff(c.y, d.y, cdy))
+    return false;
+  // One 2x2 minor and one lift, exactly.
+  const auto minor = [](double p, double q, double r, double s, double& m) {
+    double x, y;
+    return exact_prod(p, q, x) && exact_prod(r, s, y) && exact_add(x, -y, m);
+  };
+  const auto lift = [](double x, double y, double& l) {
+    double xx, yy;
+    return exact_prod(x, x, xx) && exact_prod(y, y, yy) && exact_add(xx, yy, l);
+  };
+  double bc, ca, ab, al, bl, cl, t1, t2, t3, s12, det;
+  if (!minor(bdx, cdy, cdx, bdy, bc) || !minor(cdx, ady, adx, cdy, ca) || !minor(adx, bdy, bdx, ady, ab) ||
+      !lift(adx, ady, al) || !lift(bdx, bdy, bl) || !lift(cdx, cdy, cl) || !exact_prod(al, bc, t1) ||
+      !exact_prod(bl, ca, t2) || !exact_prod(cl, ab, t3) || !exact_add(t1, t2, s12) || !exact_add(s12, t3, det))
+    return false;
+  sign = det > 0 ? 1 : (det < 0 ? -1 : 0);
+  return true;
+}
+
 using Rational = boost::multiprecision::cpp_rational;
 
 int sign_of(const Rational& q) { return q > 0 ? 1 : (q < 0 ? -1 : 0); }
@@ -276,6 +327,8 @@ int incircle_rational(Vec2 a, Vec2 b, Vec2 c, Vec2 d) {
 }
 
 int orient2d_exact(Vec2 a, Vec2 b, Vec2 c) {
+  int sd;
+  if (orient2d_in_doubles(a, b, c, sd)) return sd;
   const int sb = orient2d_stage_b(a, b, c);
   if (sb != 2) return sb;
   const int e = orient2d_expansion(a, b, c);
@@ -283,6 +336,8 @@ int orient2d_exact(Vec2 a, Vec2 b, Vec2 c) {
 }
 
 int incircle_exact(Vec2 a, Vec2 b, Vec2 c, Vec2 d) {
+  int sd;
+  if (incircle_in_doubles(a, b, c, d, sd)) return sd;
   const int sb = incircle_stage_b(a, b, c, d);
   if (sb != 2) return sb;
   const int e = incircle_expansion(a, b, c, d);

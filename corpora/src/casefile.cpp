@@ -2,6 +2,8 @@
 #include "geomcheck/casefile.hpp"
 
 #include "bits.hpp"
+#include "case_text.hpp"
+#include "geomcheck/pointset_file.hpp"
 
 #include <algorithm>
 #include <cerrno>
@@ -24,7 +26,6 @@ constexpr std::uint64_t kSignBit = std::uint64_t{1} << 63;
 using detail::bits_of;
 using detail::from_bits;
 
-bool is_blank(char ch) { return ch == ' ' || ch == '\t'; }
 bool is_hex_digit(char ch) {
   return (ch >= '0' && ch <= '9') || (ch >= 'a' && ch <= 'f') || (ch >= 'A' && ch <= 'F');
 }
@@ -41,13 +42,34 @@ bool iequals(std::string_view x, std::string_view y) {
   return true;
 }
 
+bool is_blank(char ch) { return ch == ' ' || ch == '\t'; }
+
+}  // namespace
+
+// --- the shared text conventions (case_text.hpp) ------------------------------
+
+namespace detail {
+
+std::optional<std::string> control_byte_error(std::string_view line) {
+  for (char ch : line) {
+    const auto u = static_cast<unsigned char>(ch);
+    if ((u < 0x20 && ch != '\t') || u == 0x7f) {
+      static const char* hex = "0123456789abcdef";
+      std::string b = "0x";
+      b += hex[u >> 4];
+      b += hex[u & 15];
+      return "control byte " + b + " in the line (only tab is allowed)";
+    }
+  }
+  return std::nullopt;
+}
+
 std::string_view trim(std::string_view s) {
   while (!s.empty() && is_blank(s.front())) s.remove_prefix(1);
   while (!s.empty() && is_blank(s.back())) s.remove_suffix(1);
   return s;
 }
 
-/// Next blank-separated token of `rest` (advancing it), empty at the end.
 std::string_view next_token(std::string_view& rest) {
   std::size_t i = 0;
   while (i < rest.size() && is_blank(rest[i])) ++i;
@@ -58,7 +80,6 @@ std::string_view next_token(std::string_view& rest) {
   return tok;
 }
 
-/// A token for an error message: quoted, at most 40 bytes, non-ASCII escaped.
 std::string quote_token(std::string_view s) {
   static const char* hex = "0123456789abcdef";
   std::string out = "'";
@@ -78,7 +99,11 @@ std::string quote_token(std::string_view s) {
   return out;
 }
 
-enum class NumStatus { Ok, Malformed, OutOfRange, BadNanPayload };
+std::optional<std::string> trailing_text_error(std::string_view rest, const char* after) {
+  const std::string_view t = next_token(rest);
+  if (t.empty() || t[0] == '#') return std::nullopt;
+  return "unexpected text " + quote_token(t) + " after " + after;
+}
 
 NumStatus parse_number(std::string_view s, double& out) {
   if (s.empty()) return NumStatus::Malformed;
@@ -128,9 +153,6 @@ NumStatus parse_number(std::string_view s, double& out) {
   return NumStatus::Ok;
 }
 
-// --- text escapes -----------------------------------------------------------
-
-/// Escapes TEXT so that it stays on one line and survives the parser's trim.
 std::string escape_text(std::string_view s) {
   static const char* hex = "0123456789abcdef";
   std::string out;
@@ -155,7 +177,6 @@ std::string escape_text(std::string_view s) {
   return out;
 }
 
-/// Undoes escape_text; false (with `what`) on a bad escape.
 bool unescape_text(std::string_view s, std::string& out, std::string& what) {
   out.clear();
   for (std::size_t i = 0; i < s.size(); ++i) {
@@ -188,6 +209,167 @@ bool unescape_text(std::string_view s, std::string& out, std::string& what) {
   }
   return true;
 }
+
+std::optional<std::string> header_error(std::string_view key, std::string_view rest, int& version) {
+  if (key != "geomcheck-case")
+    return "expected 'geomcheck-case " + std::to_string(kCaseFileVersion) + "' as the first statement, got " +
+           quote_token(key);
+  const std::string_view v = next_token(rest);
+  if (v.empty() || v[0] == '#') return std::string("missing version after 'geomcheck-case'");
+  int parsed = 0;
+  const auto r = std::from_chars(v.data(), v.data() + v.size(), parsed);
+  if (r.ec != std::errc() || r.ptr != v.data() + v.size() || v[0] == '-' || v[0] == '+')
+    return "malformed version " + quote_token(v);
+  if (parsed != kCaseFileVersion)
+    return "unsupported case-file version " + std::to_string(parsed) + " (this build reads version " +
+           std::to_string(kCaseFileVersion) + ")";
+  if (auto e = trailing_text_error(rest, "the version")) return e;
+  version = parsed;
+  return std::nullopt;
+}
+
+std::string unterminated_error(int line_count, bool header_seen) {
+  if (!header_seen)
+    return line_count == 0 ? "empty file, expected 'geomcheck-case " + std::to_string(kCaseFileVersion) + "'"
+                           : "no 'geomcheck-case' header line";
+  return "missing 'end' at the end of the file";
+}
+
+std::string too_large_error(std::size_t bytes, std::size_t limit) {
+  return "file too large (" + std::to_string(bytes) + " bytes, limit " + std::to_string(limit) + ")";
+}
+
+std::optional<std::string> MetaLines::read(std::string_view key, std::string_view rest, int line) {
+  if (key == "oracle-verdict") {
+    if (have_verdict) return std::string("duplicate 'oracle-verdict' line");
+    const std::string_view v = next_token(rest);
+    if (v.empty() || v[0] == '#') return std::string("missing verdict after 'oracle-verdict'");
+    if (auto e = trailing_text_error(rest, "the verdict")) return e;
+    oracle_verdict = std::string(v);
+    have_verdict = true;
+    verdict_line = line;
+    return std::nullopt;
+  }
+  // found-by / note: the rest of the line is TEXT.
+  std::string text, what;
+  if (!unescape_text(trim(rest), text, what)) return "in " + quote_token(key) + ": " + what;
+  if (key == "found-by") {
+    if (have_found_by) return std::string("duplicate 'found-by' line");
+    found_by = std::move(text);
+    have_found_by = true;
+    return std::nullopt;
+  }
+  if (have_note) note += '\n';
+  note += text;
+  have_note = true;
+  return std::nullopt;
+}
+
+void write_header(std::string& out, int version, std::string_view query_name) {
+  out += "# geomcheck case file\n";
+  out += "geomcheck-case " + std::to_string(version) + "\n";
+  out += "query ";
+  out += query_name;
+  out += '\n';
+}
+
+void write_meta(std::string& out, const std::string& found_by, const std::string& oracle_verdict,
+                const std::string& note) {
+  if (!found_by.empty()) out += "found-by " + escape_text(found_by) + "\n";
+  if (!oracle_verdict.empty()) out += "oracle-verdict " + escape_text(oracle_verdict) + "\n";
+  if (!note.empty()) {
+    std::size_t pos = 0;
+    for (;;) {
+      const std::size_t nl = note.find('\n', pos);
+      const std::string_view part =
+          std::string_view(note).substr(pos, nl == std::string::npos ? std::string::npos : nl - pos);
+      out += part.empty() ? "note\n" : "note " + escape_text(part) + "\n";
+      if (nl == std::string::npos) break;
+      pos = nl + 1;
+    }
+  }
+}
+
+void write_commented_lines(std::string& out, const std::vector<std::string>& lhs,
+                           const std::vector<std::string>& rhs) {
+  std::size_t width = 0;
+  for (const auto& h : lhs) width = std::max(width, h.size());
+  for (std::size_t i = 0; i < lhs.size(); ++i) {
+    out += lhs[i];
+    if (i < rhs.size() && !rhs[i].empty()) {
+      out.append(width - lhs[i].size() + 3, ' ');
+      out += "# " + rhs[i];
+    }
+    out += '\n';
+  }
+}
+
+bool read_case_text(const std::filesystem::path& path, std::size_t limit, std::string& text, std::string& error,
+                    int& error_line) {
+  error_line = 0;
+  std::ifstream in(path, std::ios::binary);
+  if (!in) {
+    error = "cannot open case file '" + path.string() + "': " + std::strerror(errno);
+    return false;
+  }
+  text.clear();
+  char buf[4096];
+  while (in && text.size() <= limit) {
+    in.read(buf, sizeof buf);
+    text.append(buf, static_cast<std::size_t>(in.gcount()));
+  }
+  if (in.bad()) {
+    error = "cannot read case file '" + path.string() + "'";
+    return false;
+  }
+  if (text.size() > limit) {
+    std::error_code ec;
+    const auto bytes = std::filesystem::file_size(path, ec);
+    error = path.string() + ": line 1: file too large (" +
+            (ec ? "more than " + std::to_string(limit) : std::to_string(bytes)) + " bytes, limit " +
+            std::to_string(limit) + ")";
+    error_line = 1;
+    return false;
+  }
+  return true;
+}
+
+bool save_text(const std::filesystem::path& path, const std::string& text, std::string& error) {
+  std::filesystem::path tmp = path;
+  tmp += ".tmp";
+  {
+    std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
+    if (!out) {
+      error = "cannot create '" + tmp.string() + "': " + std::strerror(errno);
+      return false;
+    }
+    out.write(text.data(), static_cast<std::streamsize>(text.size()));
+    out.flush();
+    if (!out) {
+      error = "cannot write '" + tmp.string() + "'";
+      std::error_code ec;
+      std::filesystem::remove(tmp, ec);
+      return false;
+    }
+  }
+  std::error_code ec;
+  std::filesystem::rename(tmp, path, ec);
+  if (ec) {
+    error = "cannot rename '" + tmp.string() + "' to '" + path.string() + "': " + ec.message();
+    std::filesystem::remove(tmp, ec);
+    return false;
+  }
+  return true;
+}
+
+}  // namespace detail
+
+namespace {
+
+using detail::NumStatus;
+using detail::next_token;
+using detail::parse_number;
+using detail::quote_token;
 
 // --- shape kinds ------------------------------------------------------------
 
@@ -247,8 +429,7 @@ class Parser {
   ParseResult run() {
     ParseResult res;
     if (text_.size() > kMaxCaseFileBytes) {
-      fail(1, "file too large (" + std::to_string(text_.size()) + " bytes, limit " +
-                  std::to_string(kMaxCaseFileBytes) + ")");
+      fail(1, detail::too_large_error(text_.size(), kMaxCaseFileBytes));
     } else {
       parse_lines();
     }
@@ -257,6 +438,9 @@ class Parser {
       res.error_line = error_line_;
       return res;
     }
+    case_.found_by = std::move(meta_.found_by);
+    case_.oracle_verdict = std::move(meta_.oracle_verdict);
+    case_.note = std::move(meta_.note);
     res.value = std::move(case_);
     return res;
   }
@@ -273,38 +457,13 @@ class Parser {
   }
 
   void parse_lines() {
-    std::size_t pos = 0;
-    if (text_.substr(0, 3) == "\xEF\xBB\xBF") pos = 3;  // a UTF-8 byte-order mark
-    int line_no = 0;
-    while (pos < text_.size()) {
-      std::size_t nl = text_.find('\n', pos);
-      if (nl == std::string_view::npos) nl = text_.size();
-      std::string_view line = text_.substr(pos, nl - pos);
-      pos = nl + 1;
-      ++line_no;
-      if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
-      if (!statement(line, line_no)) return;
-    }
-    const int last = line_no == 0 ? 1 : line_no;
-    if (stage_ == Stage::Header) {
-      fail(last, line_no == 0 ? "empty file, expected 'geomcheck-case " + std::to_string(kCaseFileVersion) + "'"
-                              : "no 'geomcheck-case' header line");
-      return;
-    }
-    if (stage_ != Stage::Done) fail(last, "missing 'end' at the end of the file");
+    const int lines = detail::for_each_line(text_, [this](std::string_view line, int n) { return statement(line, n); });
+    if (!error_.empty() || stage_ == Stage::Done) return;
+    fail(lines == 0 ? 1 : lines, detail::unterminated_error(lines, stage_ != Stage::Header));
   }
 
   bool statement(std::string_view line, int n) {
-    for (char ch : line) {
-      const auto u = static_cast<unsigned char>(ch);
-      if ((u < 0x20 && ch != '\t') || u == 0x7f) {
-        static const char* hex = "0123456789abcdef";
-        std::string b = "0x";
-        b += hex[u >> 4];
-        b += hex[u & 15];
-        return fail(n, "control byte " + b + " in the line (only tab is allowed)");
-      }
-    }
+    if (auto e = detail::control_byte_error(line)) return fail(n, *e);
     std::string_view rest = line;
     const std::string_view key = next_token(rest);
     if (key.empty() || key[0] == '#') return true;  // blank or comment line
@@ -312,26 +471,13 @@ class Parser {
     if (stage_ == Stage::Done) return fail(n, "unexpected " + quote_token(key) + " after 'end'");
 
     if (stage_ == Stage::Header) {
-      if (key != "geomcheck-case")
-        return fail(n, "expected 'geomcheck-case " + std::to_string(kCaseFileVersion) +
-                           "' as the first statement, got " + quote_token(key));
-      const std::string_view v = next_token(rest);
-      if (v.empty() || v[0] == '#') return fail(n, "missing version after 'geomcheck-case'");
-      int version = 0;
-      const auto r = std::from_chars(v.data(), v.data() + v.size(), version);
-      if (r.ec != std::errc() || r.ptr != v.data() + v.size() || v[0] == '-' || v[0] == '+')
-        return fail(n, "malformed version " + quote_token(v));
-      if (version != kCaseFileVersion)
-        return fail(n, "unsupported case-file version " + std::to_string(version) + " (this build reads version " +
-                           std::to_string(kCaseFileVersion) + ")");
-      if (!no_trailing(rest, n, "the version")) return false;
-      case_.version = version;
+      if (auto e = detail::header_error(key, rest, case_.version)) return fail(n, *e);
       stage_ = Stage::Meta;
       return true;
     }
 
     if (key == "geomcheck-case") return fail(n, "duplicate 'geomcheck-case' line");
-    if (key == "query" || key == "found-by" || key == "oracle-verdict" || key == "note") {
+    if (key == "query" || detail::MetaLines::is_text_meta(key)) {
       if (stage_ == Stage::Shapes) return fail(n, quote_token(key) + " must come before the first 'shape'");
       return meta(key, rest, n);
     }
@@ -354,9 +500,8 @@ class Parser {
   }
 
   bool no_trailing(std::string_view rest, int n, const char* after) {
-    const std::string_view t = next_token(rest);
-    if (t.empty() || t[0] == '#') return true;
-    return fail(n, "unexpected text " + quote_token(t) + " after " + after);
+    if (auto e = detail::trailing_text_error(rest, after)) return fail(n, *e);
+    return true;
   }
 
   bool meta(std::string_view key, std::string_view rest, int n) {
@@ -364,6 +509,9 @@ class Parser {
       if (have_query_) return fail(n, "duplicate 'query' line");
       const std::string_view id = next_token(rest);
       if (id.empty() || id[0] == '#') return fail(n, "missing query id after 'query'");
+      if (id == kDelaunayQueryName)
+        return fail(n, "query " + std::string(kDelaunayQueryName) +
+                           " is a point-set case (see pointset_file.hpp: parse it with parse_point_set)");
       const auto q = query_from_name(id);
       if (!q) return fail(n, "unknown query " + quote_token(id) + " (known: " + known_query_list() + ")");
       if (!no_trailing(rest, n, "the query id")) return false;
@@ -371,28 +519,7 @@ class Parser {
       have_query_ = true;
       return true;
     }
-    if (key == "oracle-verdict") {
-      if (have_verdict_) return fail(n, "duplicate 'oracle-verdict' line");
-      const std::string_view v = next_token(rest);
-      if (v.empty() || v[0] == '#') return fail(n, "missing verdict after 'oracle-verdict'");
-      if (!no_trailing(rest, n, "the verdict")) return false;
-      case_.oracle_verdict = std::string(v);
-      have_verdict_ = true;
-      verdict_line_ = n;
-      return true;
-    }
-    // found-by / note: the rest of the line is TEXT.
-    std::string text, what;
-    if (!unescape_text(trim(rest), text, what)) return fail(n, "in " + quote_token(key) + ": " + what);
-    if (key == "found-by") {
-      if (have_found_by_) return fail(n, "duplicate 'found-by' line");
-      case_.found_by = std::move(text);
-      have_found_by_ = true;
-      return true;
-    }
-    if (have_note_) case_.note += '\n';
-    case_.note += text;
-    have_note_ = true;
+    if (auto e = meta_.read(key, rest, n)) return fail(n, *e);
     return true;
   }
 
@@ -403,8 +530,8 @@ class Parser {
     if (stage_ == Stage::Meta) {
       if (!have_query_) return fail(n, "'shape' before the 'query' line");
       const QueryKind qk = info(case_.query).kind;
-      if (have_verdict_ && !is_known_verdict(qk, case_.oracle_verdict))
-        return fail(verdict_line_, "unknown oracle verdict " + quote_token(case_.oracle_verdict) + " for query " +
+      if (meta_.have_verdict && !is_known_verdict(qk, meta_.oracle_verdict))
+        return fail(meta_.verdict_line, "unknown oracle verdict " + quote_token(meta_.oracle_verdict) + " for query " +
                                        info(case_.query).name + " (known: " + verdict_list(qk) + ")");
       stage_ = Stage::Shapes;
     } else {
@@ -486,8 +613,8 @@ class Parser {
   int error_line_ = 0;
   CaseFile case_;
   Stage stage_ = Stage::Header;
-  bool have_query_ = false, have_found_by_ = false, have_verdict_ = false, have_note_ = false;
-  int verdict_line_ = 0;
+  detail::MetaLines meta_;
+  bool have_query_ = false;
   int shape_index_ = -1;
   int shape_line_ = 0;
   ShapeLayout layout_;
@@ -582,26 +709,12 @@ std::optional<double> parse_double(std::string_view token) {
 }
 
 std::string write_case(const CaseFile& c) {
-  std::string out = "# geomcheck case file\n";
-  out += "geomcheck-case " + std::to_string(c.version) + "\n";
+  std::string out;
   const bool registered = is_registered(c.query);
-  out += "query ";
-  out += registered ? std::string(info(c.query).name)
-                    : "unregistered-query-" + std::to_string(static_cast<long long>(c.query));
-  out += '\n';
-  if (!c.found_by.empty()) out += "found-by " + escape_text(c.found_by) + "\n";
-  if (!c.oracle_verdict.empty()) out += "oracle-verdict " + escape_text(c.oracle_verdict) + "\n";
-  if (!c.note.empty()) {
-    std::size_t pos = 0;
-    for (;;) {
-      const std::size_t nl = c.note.find('\n', pos);
-      const std::string_view part =
-          std::string_view(c.note).substr(pos, nl == std::string::npos ? std::string::npos : nl - pos);
-      out += part.empty() ? "note\n" : "note " + escape_text(part) + "\n";
-      if (nl == std::string::npos) break;
-      pos = nl + 1;
-    }
-  }
+  detail::write_header(out, c.version,
+                       registered ? std::string(info(c.query).name)
+                                  : "unregistered-query-" + std::to_string(static_cast<long long>(c.query)));
+  detail::write_meta(out, c.found_by, c.oracle_verdict, c.note);
   const std::vector<double>* vals[2] = {&c.a, &c.b};
   for (int w = 0; w < 2; ++w) {
     const ShapeLayout l = registered ? query_shape(c.query, w) : ShapeLayout{};
@@ -628,16 +741,7 @@ std::string write_case(const CaseFile& c) {
       lhs.push_back(std::move(h));
       rhs.push_back(std::move(d));
     }
-    std::size_t width = 0;
-    for (const auto& h : lhs) width = std::max(width, h.size());
-    for (std::size_t f = 0; f < lhs.size(); ++f) {
-      out += lhs[f];
-      if (!rhs[f].empty()) {
-        out.append(width - lhs[f].size() + 3, ' ');
-        out += "# " + rhs[f];
-      }
-      out += '\n';
-    }
+    detail::write_commented_lines(out, lhs, rhs);
   }
   out += "end\n";
   return out;
@@ -647,30 +751,8 @@ ParseResult parse_case(std::string_view text) { return Parser(text).run(); }
 
 ParseResult load_case(const std::filesystem::path& path) {
   ParseResult res;
-  std::ifstream in(path, std::ios::binary);
-  if (!in) {
-    res.error = "cannot open case file '" + path.string() + "': " + std::strerror(errno);
-    return res;
-  }
   std::string text;
-  char buf[4096];
-  while (in && text.size() <= kMaxCaseFileBytes) {
-    in.read(buf, sizeof buf);
-    text.append(buf, static_cast<std::size_t>(in.gcount()));
-  }
-  if (in.bad()) {
-    res.error = "cannot read case file '" + path.string() + "'";
-    return res;
-  }
-  if (text.size() > kMaxCaseFileBytes) {
-    std::error_code ec;
-    const auto bytes = std::filesystem::file_size(path, ec);
-    res.error = path.string() + ": line 1: file too large (" +
-                (ec ? "more than " + std::to_string(kMaxCaseFileBytes) : std::to_string(bytes)) + " bytes, limit " +
-                std::to_string(kMaxCaseFileBytes) + ")";
-    res.error_line = 1;
-    return res;
-  }
+  if (!detail::read_case_text(path, kMaxCaseFileBytes, text, res.error, res.error_line)) return res;
   res = parse_case(text);
   if (!res.ok()) res.error = path.string() + ": " + res.error;
   return res;
@@ -681,32 +763,7 @@ bool save_case(const std::filesystem::path& path, const CaseFile& c, std::string
     error = "refusing to write '" + path.string() + "': " + *e;
     return false;
   }
-  const std::string text = write_case(c);
-  std::filesystem::path tmp = path;
-  tmp += ".tmp";
-  {
-    std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-    if (!out) {
-      error = "cannot create '" + tmp.string() + "': " + std::strerror(errno);
-      return false;
-    }
-    out.write(text.data(), static_cast<std::streamsize>(text.size()));
-    out.flush();
-    if (!out) {
-      error = "cannot write '" + tmp.string() + "'";
-      std::error_code ec;
-      std::filesystem::remove(tmp, ec);
-      return false;
-    }
-  }
-  std::error_code ec;
-  std::filesystem::rename(tmp, path, ec);
-  if (ec) {
-    error = "cannot rename '" + tmp.string() + "' to '" + path.string() + "': " + ec.message();
-    std::filesystem::remove(tmp, ec);
-    return false;
-  }
-  return true;
+  return detail::save_text(path, write_case(c), error);
 }
 
 }  // namespace geomcheck

@@ -48,6 +48,13 @@ CASE
 expect_rc 1 "replay of a case filed with a wrong verdict" "$tool" replay "$tmp/wrong.case"
 grep -q "the oracle now says otherwise" "$tmp/out" && ok || bad "wrong filed verdict is pointed out"
 
+# A point-set seed (query delaunay_2d) replays; with a wrong filed verdict it fails.
+expect_rc 0 "replay of a point-set seed" "$tool" replay "$src/corpora/seeds/delaunay_2d/square-cocircular.case"
+grep -q "kind of the point set: triangulated" "$tmp/out" && ok || bad "replay shows the kind of the point set"
+sed 's/^oracle-verdict triangulated$/oracle-verdict collinear/' "$src/corpora/seeds/delaunay_2d/square-cocircular.case" > "$tmp/ps.case"
+expect_rc 1 "replay of a point set filed with a wrong verdict" "$tool" replay "$tmp/ps.case"
+grep -q "the points are of another kind" "$tmp/out" && ok || bad "wrong filed point-set verdict is pointed out"
+
 # from-rapidcheck: a printed counterexample becomes a case that replays.
 echo 'Falsifiable... (cylinder{p=(0x0p+0, 0x0p+0, 0x0p+0), q=(0x0p+0, 0x0p+0, 0x1p+1), r=0x1p+0}, sphere{c=(0x1p+1, 0x0p+0, 0x1p+0), r=0x1p+0}, "side")' > "$tmp/rc.txt"
 expect_rc 0 "from-rapidcheck" "$tool" from-rapidcheck collide_cylinder_sphere "$tmp/rc.txt" -o "$tmp/rc.case"

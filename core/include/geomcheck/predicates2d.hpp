@@ -22,6 +22,13 @@
 
 #include <cmath>
 
+// The filters sit in the inner loops of the triangulation: inlined there.
+#if defined(__GNUC__)
+#define GEOMCHECK_PREDICATE_INLINE inline __attribute__((always_inline))
+#else
+#define GEOMCHECK_PREDICATE_INLINE inline
+#endif
+
 namespace geomcheck {
 
 struct Vec2 {
@@ -51,7 +58,7 @@ int incircle_exact(Vec2 a, Vec2 b, Vec2 c, Vec2 d);
 
 /// Sign of det [b - a, c - a]: +1 when a, b, c turn counter-clockwise, -1
 /// clockwise, 0 collinear (or coincident points). Exact.
-inline int orient2d(Vec2 a, Vec2 b, Vec2 c) {
+GEOMCHECK_PREDICATE_INLINE int orient2d(Vec2 a, Vec2 b, Vec2 c) {
   const double detleft = (a.x - c.x) * (b.y - c.y);
   const double detright = (a.y - c.y) * (b.x - c.x);
   const double det = detleft - detright;
@@ -65,7 +72,7 @@ inline int orient2d(Vec2 a, Vec2 b, Vec2 c) {
 /// circumcircle, -1 strictly outside, 0 on it (the sign flips for a
 /// clockwise triangle; 0 for collinear a, b, c means d is on their line or
 /// the determinant vanishes). Exact.
-inline int incircle(Vec2 a, Vec2 b, Vec2 c, Vec2 d) {
+GEOMCHECK_PREDICATE_INLINE int incircle(Vec2 a, Vec2 b, Vec2 c, Vec2 d) {
   const double adx = a.x - d.x, bdx = b.x - d.x, cdx = c.x - d.x;
   const double ady = a.y - d.y, bdy = b.y - d.y, cdy = c.y - d.y;
   const double bdxcdy = bdx * cdy, cdxbdy = cdx * bdy;

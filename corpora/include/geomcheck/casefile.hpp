@@ -7,7 +7,8 @@
 // comment, so a file reproduces a case bit for bit and a person can still
 // read it. Files live in corpora/seeds/<query-id>/ (hand cases, fuzz seeds)
 // and corpora/regressions/<query-id>/NNNN-<slug>.case (counterexamples,
-// never deleted).
+// never deleted). The Delaunay query's inputs (point lists, not a registered
+// pair of shapes) use the sibling format of pointset_file.hpp.
 //
 // Format, version 1. Lines end in LF (a CR before the LF is ignored); blank
 // lines and lines whose first non-blank character is '#' are ignored
