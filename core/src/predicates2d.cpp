@@ -249,9 +249,42 @@ bool incircle_in_doubles(Vec2 a, Vec2 b, Vec2 c, Vec2 d, int& sign) {
   return true;
 }
 
-using Rational = boost::multiprecision::cpp_rational;
+// ---- the last stage: every finite double is m * 2^e with an integer m of
+// at most 53 bits; scaled by 2^-emin (the smallest exponent among the
+// inputs) every coordinate is an integer, and the determinants, being
+// homogeneous, keep their signs. Integer arithmetic, no normalisation.
+using Int = boost::multiprecision::cpp_int;
 
-int sign_of(const Rational& q) { return q > 0 ? 1 : (q < 0 ? -1 : 0); }
+int sign_of(const Int& q) { return q > 0 ? 1 : (q < 0 ? -1 : 0); }
+
+class Scaled {
+ public:
+  Scaled(std::initializer_list<double> xs) {
+    int emin = 0;
+    bool any = false;
+    for (double x : xs) {
+      if (x == 0) continue;
+      int ex;
+      std::frexp(x, &ex);
+      emin = any ? std::min(emin, ex - 53) : ex - 53;
+      any = true;
+    }
+    for (double x : xs) {
+      if (x == 0) {
+        v_.emplace_back(0);
+        continue;
+      }
+      int ex;
+      const double f = std::frexp(x, &ex);
+      Int m(static_cast<long long>(std::ldexp(f, 53)));  // exact: |f| in [0.5, 1)
+      v_.push_back(m << (ex - 53 - emin));
+    }
+  }
+  const Int& operator[](std::size_t i) const { return v_[i]; }
+
+ private:
+  std::vector<Int> v_;
+};
 
 }  // namespace
 
@@ -313,17 +346,17 @@ int incircle_expansion(Vec2 a, Vec2 b, Vec2 c, Vec2 d) {
 }
 
 int orient2d_rational(Vec2 a, Vec2 b, Vec2 c) {
-  const Rational acx = Rational(a.x) - Rational(c.x), acy = Rational(a.y) - Rational(c.y);
-  const Rational bcx = Rational(b.x) - Rational(c.x), bcy = Rational(b.y) - Rational(c.y);
-  return sign_of(acx * bcy - acy * bcx);
+  const Scaled s({a.x, a.y, b.x, b.y, c.x, c.y});
+  const Int acx = s[0] - s[4], acy = s[1] - s[5], bcx = s[2] - s[4], bcy = s[3] - s[5];
+  return sign_of(Int(acx * bcy - acy * bcx));
 }
 
 int incircle_rational(Vec2 a, Vec2 b, Vec2 c, Vec2 d) {
-  const Rational adx = Rational(a.x) - Rational(d.x), ady = Rational(a.y) - Rational(d.y);
-  const Rational bdx = Rational(b.x) - Rational(d.x), bdy = Rational(b.y) - Rational(d.y);
-  const Rational cdx = Rational(c.x) - Rational(d.x), cdy = Rational(c.y) - Rational(d.y);
-  const Rational alift = adx * adx + ady * ady, blift = bdx * bdx + bdy * bdy, clift = cdx * cdx + cdy * cdy;
-  return sign_of(alift * (bdx * cdy - cdx * bdy) + blift * (cdx * ady - adx * cdy) + clift * (adx * bdy - bdx * ady));
+  const Scaled s({a.x, a.y, b.x, b.y, c.x, c.y, d.x, d.y});
+  const Int adx = s[0] - s[6], ady = s[1] - s[7], bdx = s[2] - s[6], bdy = s[3] - s[7];
+  const Int cdx = s[4] - s[6], cdy = s[5] - s[7];
+  const Int alift = adx * adx + ady * ady, blift = bdx * bdx + bdy * bdy, clift = cdx * cdx + cdy * cdy;
+  return sign_of(Int(alift * (bdx * cdy - cdx * bdy) + blift * (cdx * ady - adx * cdy) + clift * (adx * bdy - bdx * ady)));
 }
 
 int orient2d_exact(Vec2 a, Vec2 b, Vec2 c) {

@@ -14,7 +14,8 @@
 //      products by fma) on the points scaled by one power of two, when the
 //      magnitudes of the involved coordinates span few enough binades that
 //      no partial product can overflow or lose bits to underflow;
-//   4. otherwise exact rationals (boost::multiprecision::cpp_rational),
+//   4. otherwise exact big integers (boost::multiprecision::cpp_int) on the
+//      coordinates scaled to integers by one power of two,
 //      which cover any mix of magnitudes (1e300 beside 1e-300).
 // The caller checks finiteness (non-finite input has no exact answer: the
 // result is then unspecified but the call returns).
@@ -98,7 +99,8 @@ int orient2d_stage_b(Vec2 a, Vec2 b, Vec2 c);
 int incircle_stage_b(Vec2 a, Vec2 b, Vec2 c, Vec2 d);
 /// The exact stages alone (tests compare them with each other and with an
 /// independent exact kernel): expansions (nullopt-like 2 when the range of
-/// magnitudes does not allow them), and rationals.
+/// magnitudes does not allow them), and the big-integer stage (named
+/// *_rational: the exact stage that covers every finite input).
 int orient2d_expansion(Vec2 a, Vec2 b, Vec2 c);  ///< 2 = not applicable
 int incircle_expansion(Vec2 a, Vec2 b, Vec2 c, Vec2 d);  ///< 2 = not applicable
 int orient2d_rational(Vec2 a, Vec2 b, Vec2 c);
