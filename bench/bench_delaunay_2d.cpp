@@ -146,7 +146,9 @@ class Capture : public benchmark::ConsoleReporter {
     for (const Run& r : rs) {
       if (r.error_occurred || r.run_type != Run::RT_Iteration) continue;
       const auto peak = r.counters.find("peak_MB");
-      runs[r.benchmark_name()] = {r.GetAdjustedRealTime(), peak == r.counters.end() ? 0.0 : double(peak->second)};
+      std::string name = r.benchmark_name();
+      name = name.substr(0, name.find("/min_time"));
+      runs[name] = {r.GetAdjustedRealTime(), peak == r.counters.end() ? 0.0 : double(peak->second)};
     }
     ConsoleReporter::ReportRuns(rs);
   }
