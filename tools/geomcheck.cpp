@@ -11,6 +11,8 @@
 #include "campaign.hpp"
 #include "geomcheck/casefile.hpp"
 #include "geomcheck/fuzz_decode.hpp"
+#include "geomcheck/delaunay_2d.hpp"
+#include "geomcheck/oracles/delaunay_2d.hpp"
 #include "geomcheck/pointset_file.hpp"
 #include "geomcheck/properties/checks.hpp"
 #include "geomcheck/properties/tolerances.hpp"
@@ -72,8 +74,11 @@ bool is_point_set_file(const fs::path& path) {
   return is_point_set_text(text.str());
 }
 
-// Replays one point-set file: it parses, and its filed verdict is the kind
-// of its points (classify_point_set); returns true when both hold.
+// Replays one point-set file: it parses, its filed verdict is the kind of
+// its points (classify_point_set), and production's triangulation passes
+// the exact validity checker and agrees with CGAL's (up to cocircular
+// choices); non-finite input must be rejected naming the first bad index.
+// Returns true when all of that holds.
 bool replay_point_set(const fs::path& path, bool quiet) {
   const PointSetParseResult pr = load_point_set(path);
   if (!pr.ok()) {
@@ -82,7 +87,22 @@ bool replay_point_set(const fs::path& path, bool quiet) {
   }
   const PointSetFile& f = pr.value;
   const std::string_view kind = classify_point_set(f.points);
-  const bool pass = f.oracle_verdict.empty() || f.oracle_verdict == kind;
+  const bool verdict_ok = f.oracle_verdict.empty() || f.oracle_verdict == kind;
+  std::string production, problem;
+  try {
+    const DelaunayTriangulation t = delaunay_2d(f.points);
+    production = t.summary();
+    if (kind == "rejected") problem = "non-finite input accepted";
+    if (problem.empty()) problem = oracle::check_delaunay(f.points, t);
+    if (problem.empty()) problem = oracle::compare_with_cgal(f.points, t);
+  } catch (const DelaunayInputError& e) {
+    production = std::string("rejected: ") + e.what();
+    if (kind != "rejected") problem = "finite input rejected";
+  } catch (const std::exception& e) {
+    production = std::string("threw: ") + e.what();
+    problem = production;
+  }
+  const bool pass = verdict_ok && problem.empty();
   if (quiet && pass) {
     std::printf("PASS %s\n", path.string().c_str());
     return true;
@@ -92,7 +112,9 @@ bool replay_point_set(const fs::path& path, bool quiet) {
   if (!f.found_by.empty()) std::printf("  found by: %s\n", f.found_by.c_str());
   std::printf("  kind of the point set: %.*s\n", static_cast<int>(kind.size()), kind.data());
   if (!f.oracle_verdict.empty())
-    std::printf("  filed oracle verdict: %s%s\n", f.oracle_verdict.c_str(), pass ? "" : "  <-- the points are of another kind");
+    std::printf("  filed oracle verdict: %s%s\n", f.oracle_verdict.c_str(), verdict_ok ? "" : "  <-- the points are of another kind");
+  std::printf("  production: %s\n", production.c_str());
+  std::printf("  oracles (exact validity, CGAL): %s\n", problem.empty() ? "agree" : problem.c_str());
   return pass;
 }
 

@@ -147,6 +147,7 @@ std::string check_delaunay(const std::vector<Vec2>& pts, const DelaunayTriangula
   }
 
   // The boundary is one cycle, convex, with the hull's corners.
+  if (next_on_boundary.empty()) return "no boundary edges";
   const std::uint32_t start = next_on_boundary.begin()->first;
   std::vector<std::uint32_t> cycle;
   for (std::uint32_t v = start;;) {
@@ -194,16 +195,25 @@ std::string check_delaunay(const std::vector<Vec2>& pts, const DelaunayTriangula
   return "";
 }
 
-std::vector<Tri> cgal_delaunay(const std::vector<Vec2>& pts) {
-  using Vb = CGAL::Triangulation_vertex_base_with_info_2<std::uint32_t, K>;
-  using Tds = CGAL::Triangulation_data_structure_2<Vb>;
-  using DT = CGAL::Delaunay_triangulation_2<K, Tds>;
+namespace {
+using Vb = CGAL::Triangulation_vertex_base_with_info_2<std::uint32_t, K>;
+using Tds = CGAL::Triangulation_data_structure_2<Vb>;
+using DT = CGAL::Delaunay_triangulation_2<K, Tds>;
+
+// CGAL's triangulation of the distinct points, each vertex carrying its
+// smallest input index.
+void build_cgal(const std::vector<Vec2>& pts, DT& dt) {
   const std::vector<std::uint32_t> rep = representatives(pts);
   std::vector<std::pair<P2, std::uint32_t>> in;
   for (std::uint32_t i = 0; i < pts.size(); ++i)
     if (rep[i] == i) in.emplace_back(cg(pts[i]), i);
-  DT dt;
   dt.insert(in.begin(), in.end());
+}
+}  // namespace
+
+std::vector<Tri> cgal_delaunay(const std::vector<Vec2>& pts) {
+  DT dt;
+  build_cgal(pts, dt);
   std::vector<Tri> out;
   if (dt.dimension() < 2) return out;
   for (auto f = dt.finite_faces_begin(); f != dt.finite_faces_end(); ++f)
@@ -213,15 +223,8 @@ std::vector<Tri> cgal_delaunay(const std::vector<Vec2>& pts) {
 }
 
 std::string compare_with_cgal(const std::vector<Vec2>& pts, const DelaunayTriangulation& t) {
-  using Vb = CGAL::Triangulation_vertex_base_with_info_2<std::uint32_t, K>;
-  using Tds = CGAL::Triangulation_data_structure_2<Vb>;
-  using DT = CGAL::Delaunay_triangulation_2<K, Tds>;
-  const std::vector<std::uint32_t> rep = representatives(pts);
-  std::vector<std::pair<P2, std::uint32_t>> in;
-  for (std::uint32_t i = 0; i < pts.size(); ++i)
-    if (rep[i] == i) in.emplace_back(cg(pts[i]), i);
   DT dt;
-  dt.insert(in.begin(), in.end());
+  build_cgal(pts, dt);
   std::set<Tri> theirs;
   if (dt.dimension() == 2)
     for (auto f = dt.finite_faces_begin(); f != dt.finite_faces_end(); ++f)
