@@ -28,11 +28,11 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
-#include <limits>
 #include <string>
 #include <vector>
 
 #include "geomcheck/delaunay_2d.hpp"
+#include "geomcheck/fuzz_decode.hpp"
 #include "geomcheck/oracles/delaunay_2d.hpp"
 #include "geomcheck/pointset_file.hpp"
 
@@ -46,12 +46,6 @@ using geomcheck::Vec2;
   f.note = why;
   std::fprintf(stderr, "fuzz_delaunay_2d: %s\n%s", why.c_str(), geomcheck::write_point_set(f).c_str());
   std::abort();
-}
-
-double nudge(double v, int ulps) {
-  for (; ulps > 0; --ulps) v = std::nextafter(v, std::numeric_limits<double>::infinity());
-  for (; ulps < 0; ++ulps) v = std::nextafter(v, -std::numeric_limits<double>::infinity());
-  return v;
 }
 
 std::vector<Vec2> structured(std::uint8_t mode, FuzzedDataProvider& in) {
@@ -100,8 +94,8 @@ std::vector<Vec2> structured(std::uint8_t mode, FuzzedDataProvider& in) {
   }
   if (in.ConsumeBool())
     for (Vec2& q : p) {
-      q.x = nudge(q.x, in.ConsumeIntegralInRange(-3, 3));
-      q.y = nudge(q.y, in.ConsumeIntegralInRange(-3, 3));
+      q.x = geomcheck::fuzz::nudge(q.x, in.ConsumeIntegralInRange(-3, 3));
+      q.y = geomcheck::fuzz::nudge(q.y, in.ConsumeIntegralInRange(-3, 3));
     }
   const bool per_point = (mode & 0x80) != 0;
   int e = in.ConsumeIntegralInRange(-1070, 1000);

@@ -131,18 +131,12 @@ std::vector<const CylinderObbImpl*> variants_of(const CylinderObbImpl*) { return
 std::vector<const CylinderTriangleImpl*> variants_of(const CylinderTriangleImpl*) { return {&teeth::kTriangleNoCapStage}; }
 
 // An implementation's answer, drawn in red.
-template <class Impl>
-draw::Answer answer_of(const CylinderSphereCase& c, const Impl& impl) { return draw::answer_of(impl.collide(c.a, c.b), impl.name); }
-template <class Impl>
-draw::Answer answer_of(const CylinderCapsuleCase& c, const Impl& impl) { return draw::answer_of(impl.collide(c.a, c.b), impl.name); }
-template <class Impl>
-draw::Answer answer_of(const CylinderObbCase& c, const Impl& impl) { return draw::answer_of(impl.collide(c.a, c.b), impl.name); }
-template <class Impl>
-draw::Answer answer_of(const CylinderTriangleCase& c, const Impl& impl) { return draw::answer_of(impl.collide(c.a, c.b), impl.name); }
-template <class Impl>
-draw::Answer answer_of(const SegmentCylinderCase& c, const Impl& impl) { return draw::answer_of(impl.cast(c.a, c.b), impl.name); }
-template <class Impl>
-draw::Answer answer_of(const SweepCylinderCase& c, const Impl& impl) { return draw::answer_of(impl.sweep(c.a, c.b), impl.name); }
+template <class Case, class Impl>
+draw::Answer answer_of(const Case& c, const Impl& impl) {
+  if constexpr (std::is_same_v<Case, SegmentCylinderCase>) return draw::answer_of(impl.cast(c.a, c.b), impl.name);
+  else if constexpr (std::is_same_v<Case, SweepCylinderCase>) return draw::answer_of(impl.sweep(c.a, c.b), impl.name);
+  else return draw::answer_of(impl.collide(c.a, c.b), impl.name);
+}
 
 // FCL's answer, drawn beside production's (purple).
 template <class Case>

@@ -29,82 +29,10 @@ inline void two_prod(double a, double b, double& x, double& y) {
   y = std::fma(a, b, -x);
 }
 
-Expansion grow(const Expansion& e, double b) {
-  Expansion h;
-  h.reserve(e.size() + 1);
-  double q = b;
-  for (double ei : e) {
-    double s, err;
-    two_sum(q, ei, s, err);
-    if (err != 0) h.push_back(err);
-    q = s;
-  }
-  if (q != 0) h.push_back(q);
-  return h;
-}
-Expansion sum(Expansion e, const Expansion& f) {
-  for (double fi : f) e = grow(e, fi);
-  return e;
-}
-Expansion negate(Expansion e) {
-  for (double& x : e) x = -x;
-  return e;
-}
-Expansion scale(const Expansion& e, double b) {
-  Expansion h;
-  if (e.empty() || b == 0) return h;
-  h.reserve(2 * e.size());
-  double q, hh;
-  two_prod(e[0], b, q, hh);
-  if (hh != 0) h.push_back(hh);
-  for (std::size_t i = 1; i < e.size(); ++i) {
-    double p1, p0, s;
-    two_prod(e[i], b, p1, p0);
-    two_sum(q, p0, s, hh);
-    if (hh != 0) h.push_back(hh);
-    fast_two_sum(p1, s, q, hh);
-    if (hh != 0) h.push_back(hh);
-  }
-  if (q != 0) h.push_back(q);
-  return h;
-}
-Expansion mult(const Expansion& e, const Expansion& f) {
-  Expansion r;
-  for (double fi : f) r = sum(std::move(r), scale(e, fi));
-  return r;
-}
-Expansion diff(double a, double b) {  // a - b, exactly
-  double x, y;
-  two_sum(a, -b, x, y);
-  Expansion e;
-  if (y != 0) e.push_back(y);
-  if (x != 0) e.push_back(x);
-  return e;
-}
-int sign(const Expansion& e) { return e.empty() ? 0 : (e.back() > 0 ? 1 : -1); }
-
-// The power of two that brings the largest coordinate into [0.5, 1), and
-// whether the magnitudes span at most `max_span` binades (zeros aside).
-bool scaling(std::initializer_list<double> xs, int max_span, int& shift) {
-  int hi = -100000, lo = 100000;
-  for (double x : xs) {
-    if (x == 0) continue;
-    int ex;
-    std::frexp(x, &ex);
-    hi = std::max(hi, ex), lo = std::min(lo, ex);
-  }
-  if (hi < lo) {  // all zero
-    shift = 0;
-    return true;
-  }
-  shift = -hi;
-  return hi - lo <= max_span;
-}
-
-// ---- stage B on fixed-size arrays (Shewchuk's scale_expansion_zeroelim and
-// fast_expansion_sum_zeroelim): no allocation. Exact when the inputs are
-// exact differences whose magnitudes keep every partial product and error
-// term away from overflow and underflow (checked by exact_moderate).
+// Shewchuk's scale_expansion_zeroelim and fast_expansion_sum_zeroelim on
+// arrays (inputs of at least one component; a zero result is one 0
+// component). Stage B calls them on fixed-size arrays, the general stage
+// through the vector wrappers below.
 int scale_zeroelim(int elen, const double* e, double b, double* h) {
   double q, hh, p1, p0, s;
   two_prod(e[0], b, q, hh);
@@ -168,6 +96,61 @@ int sum_zeroelim(int elen, const double* e, int flen, const double* f, double* h
   if (q != 0 || hi == 0) h[hi++] = q;
   return hi;
 }
+// Vector wrappers (an empty vector is zero).
+Expansion trimmed(Expansion h, int n) {
+  h.resize(n == 1 && h[0] == 0 ? 0 : static_cast<std::size_t>(n));
+  return h;
+}
+Expansion sum(const Expansion& e, const Expansion& f) {
+  if (e.empty()) return f;
+  if (f.empty()) return e;
+  Expansion h(e.size() + f.size());
+  const int n = sum_zeroelim(static_cast<int>(e.size()), e.data(), static_cast<int>(f.size()), f.data(), h.data());
+  return trimmed(std::move(h), n);
+}
+Expansion negate(Expansion e) {
+  for (double& x : e) x = -x;
+  return e;
+}
+Expansion scale(const Expansion& e, double b) {
+  if (e.empty() || b == 0) return {};
+  Expansion h(2 * e.size());
+  const int n = scale_zeroelim(static_cast<int>(e.size()), e.data(), b, h.data());
+  return trimmed(std::move(h), n);
+}
+Expansion mult(const Expansion& e, const Expansion& f) {
+  Expansion r;
+  for (double fi : f) r = sum(r, scale(e, fi));
+  return r;
+}
+Expansion diff(double a, double b) {  // a - b, exactly
+  double x, y;
+  two_sum(a, -b, x, y);
+  Expansion e;
+  if (y != 0) e.push_back(y);
+  if (x != 0) e.push_back(x);
+  return e;
+}
+int sign(const Expansion& e) { return e.empty() ? 0 : (e.back() > 0 ? 1 : -1); }
+
+// The power of two that brings the largest coordinate into [0.5, 1), and
+// whether the magnitudes span at most `max_span` binades (zeros aside).
+bool scaling(std::initializer_list<double> xs, int max_span, int& shift) {
+  int hi = -100000, lo = 100000;
+  for (double x : xs) {
+    if (x == 0) continue;
+    int ex;
+    std::frexp(x, &ex);
+    hi = std::max(hi, ex), lo = std::min(lo, ex);
+  }
+  if (hi < lo) {  // all zero
+    shift = 0;
+    return true;
+  }
+  shift = -hi;
+  return hi - lo <= max_span;
+}
+
 int sign_of_array(int n, const double* e) {
   const double top = e[n - 1];
   return top > 0 ? 1 : (top < 0 ? -1 : 0);

@@ -130,4 +130,21 @@ ContactErrors score_polytope_contact(const Contact& k, bool truth_hit, const Pol
   return out;
 }
 
+void score_polytope_contacts(Evaluation& e, const Contact& mine, const Contact* peer, const PolytopeTruth& truth,
+                             const oracle::QCylinder& qcyl, const oracle::ConvexShape& cyl,
+                             const oracle::ConvexShape& shape, double depth_bound,
+                             const std::function<Q(Vec3)>& outside_b) {
+  std::optional<oracle::PenetrationResult> pd;
+  std::string wide;
+  const ContactErrors m = score_polytope_contact(mine, e.truth_hit, truth, qcyl, cyl, shape, e.scale, depth_bound, pd,
+                                                 outside_b, &wide);
+  e.unit_err = m.unit, e.depth_err = m.depth, e.normal_err = m.normal, e.point_err = m.point;
+  if (peer) {
+    const ContactErrors t = score_polytope_contact(*peer, e.truth_hit, truth, qcyl, cyl, shape, e.scale, depth_bound,
+                                                   pd, outside_b, &wide);
+    e.peer.unit_err = t.unit, e.peer.depth_err = t.depth, e.peer.normal_err = t.normal, e.peer.point_err = t.point;
+  }
+  e.truth_text += wide;
+}
+
 }  // namespace geomcheck

@@ -10,6 +10,7 @@
 
 #include "geomcheck/oracles/cylinder_sphere.hpp"
 #include "geomcheck/oracles/engine.hpp"
+#include "geomcheck/properties/checks.hpp"
 #include "geomcheck/results.hpp"
 
 namespace geomcheck {
@@ -75,6 +76,14 @@ ContactErrors score_polytope_contact(const Contact& k, bool truth_hit, const Pol
                                      const oracle::ConvexShape& shape, double scale, double depth_bound,
                                      std::optional<oracle::PenetrationResult>& pd,
                                      const std::function<oracle::Q(Vec3)>& outside_b, std::string* wide);
+
+/// Production's contact and, when given, the peer's, each scored by
+/// score_polytope_contact against the same truth (EPA at most once), into
+/// e's error fields and e.peer's; a wide enclosure is noted in e.truth_text.
+void score_polytope_contacts(Evaluation& e, const Contact& mine, const Contact* peer, const PolytopeTruth& truth,
+                             const oracle::QCylinder& qcyl, const oracle::ConvexShape& cyl,
+                             const oracle::ConvexShape& shape, double depth_bound,
+                             const std::function<oracle::Q(Vec3)>& outside_b);
 
 /// Certified signed distance of a point from the capsule pq, r (< 0 inside).
 oracle::QInterval capsule_signed_distance(const oracle::QVec& p, const oracle::QVec& q, const oracle::Q& r,

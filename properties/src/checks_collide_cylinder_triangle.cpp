@@ -127,17 +127,9 @@ Evaluation evaluate(const CylinderTriangleCase& c, const CylinderTriangleImpl& i
       truth.signed_distance.hi - truth.signed_distance.lo <= times_scale(1e-12, e.scale))
     e.distance = truth.signed_distance.mid();
   // Production's contact and the peer's against the same truth (EPA once).
-  std::optional<oracle::PenetrationResult> pd;
   const oracle::QCylinder qcyl = oracle::to_q(c.a);
   const std::function<Q(Vec3)> outside_b = [&](Vec3 x) { return triangle_distance_up(c.b, x); };
-  std::string wide;
-  const ContactErrors mine = score_polytope_contact(ct, e.truth_hit, truth, qcyl, cyl, tri, e.scale, tol.depth, pd, outside_b, &wide);
-  e.unit_err = mine.unit, e.depth_err = mine.depth, e.normal_err = mine.normal, e.point_err = mine.point;
-  if (peer) {
-    const ContactErrors theirs = score_polytope_contact(*peer, e.truth_hit, truth, qcyl, cyl, tri, e.scale, tol.depth, pd, outside_b, &wide);
-    e.peer.unit_err = theirs.unit, e.peer.depth_err = theirs.depth, e.peer.normal_err = theirs.normal, e.peer.point_err = theirs.point;
-  }
-  e.truth_text += wide;
+  score_polytope_contacts(e, ct, peer, truth, qcyl, cyl, tri, tol.depth, outside_b);
   return e;
 }
 

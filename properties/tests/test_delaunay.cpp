@@ -26,6 +26,7 @@
 #include "geomcheck/detail/delaunay_build.hpp"
 #include "geomcheck/oracles/delaunay_2d.hpp"
 #include "geomcheck/pointset_file.hpp"
+#include "generators.hpp"
 #include "support.hpp"
 
 namespace geomcheck {
@@ -45,12 +46,6 @@ using Points = std::vector<Vec2>;
 // ---- generators ------------------------------------------------------------
 
 double unit(std::uint64_t bits) { return static_cast<double>(bits >> 11) * 0x1p-53; }  // [0, 1), 53 bits
-
-double nudge(double v, int ulps) {
-  for (; ulps > 0; --ulps) v = std::nextafter(v, std::numeric_limits<double>::infinity());
-  for (; ulps < 0; ++ulps) v = std::nextafter(v, -std::numeric_limits<double>::infinity());
-  return v;
-}
 
 rc::Gen<Points> uniform_points(double scale) {
   return rc::gen::map(rc::gen::container<std::vector<std::pair<std::uint64_t, std::uint64_t>>>(
@@ -123,8 +118,8 @@ rc::Gen<Points> collinear_points(bool almost) {
     if (almost) {
       const std::size_t i = *rc::gen::inRange<std::size_t>(0, p.size());
       const int u = *rc::gen::element(-3, -2, -1, 1, 2, 3);
-      if (*rc::gen::arbitrary<bool>()) p[i].x = nudge(p[i].x, u);
-      else p[i].y = nudge(p[i].y, u);
+      if (*rc::gen::arbitrary<bool>()) p[i].x = geomcheck::gen::nudge(p[i].x, u);
+      else p[i].y = geomcheck::gen::nudge(p[i].y, u);
     }
     return p;
   });
@@ -139,8 +134,8 @@ rc::Gen<Points> near_duplicate_points() {
     const int k = *rc::gen::inRange(1, 60);
     for (int i = 0; i < k; ++i) {
       Vec2 q = base[*rc::gen::inRange<std::size_t>(0, base.size())];
-      q.x = nudge(q.x, *rc::gen::inRange(-2, 3));
-      q.y = nudge(q.y, *rc::gen::inRange(-2, 3));
+      q.x = geomcheck::gen::nudge(q.x, *rc::gen::inRange(-2, 3));
+      q.y = geomcheck::gen::nudge(q.y, *rc::gen::inRange(-2, 3));
       p.push_back(q);
     }
     return p;
@@ -166,22 +161,26 @@ rc::Gen<Points> ulp_perturbed_points() {
     }
     const int spread = *rc::gen::inRange(0, 4);
     for (Vec2& q : p) {
-      q.x = nudge(q.x, *rc::gen::inRange(-spread, spread + 1));
-      q.y = nudge(q.y, *rc::gen::inRange(-spread, spread + 1));
+      q.x = geomcheck::gen::nudge(q.x, *rc::gen::inRange(-spread, spread + 1));
+      q.y = geomcheck::gen::nudge(q.y, *rc::gen::inRange(-spread, spread + 1));
     }
     return p;
   });
 }
 
-// Huge (2^900..2^1000), tiny (2^-1000..2^-900, subnormals included) and
+// Huge (2^900..2^1000), tiny (2^-1070..2^-900, subnormals included) and
 // mixes of both.
 rc::Gen<Points> extreme_points() {
   return rc::gen::exec([] {
     const int mode = *rc::gen::inRange(0, 3);
     Points p = *rc::gen::oneOf(uniform_points(1.0), grid_points(), ulp_perturbed_points());
+    // The base set brought below 1 in magnitude first, so that 2^1000 cannot overflow.
+    double top = 0;
+    for (const Vec2& q : p) top = std::max({top, std::fabs(q.x), std::fabs(q.y)});
+    const int base = top > 0 ? std::ilogb(top) + 1 : 0;
     for (std::size_t i = 0; i < p.size(); ++i) {
       const bool huge = mode == 0 || (mode == 2 && i % 2 == 0);
-      const int e = huge ? *rc::gen::inRange(900, 1000) : *rc::gen::inRange(-1070, -900);
+      const int e = (huge ? *rc::gen::inRange(900, 1000) : *rc::gen::inRange(-1070, -900)) - base;
       p[i] = {std::ldexp(p[i].x, e), std::ldexp(p[i].y, e)};
     }
     return p;
@@ -229,46 +228,71 @@ std::string save_points(const Points& p, const std::string& name, const std::str
   return path.string();
 }
 
-// Runs the property; on failure saves the shrunk input and names the replay.
-void run(const std::string& name, const std::function<std::string(const Points&)>& check,
-         rc::Gen<std::pair<Points, std::string>> gen = any_points()) {
-  std::optional<Points> failing;
-  std::string why;
-  std::map<std::string, int> mix;
+// One property run: every case drawn from `gen` (resized to the nominal
+// size: rc::gen::inRange scales its range with the size, and every
+// exponent, grid size and ulp offset should be reachable whatever max_size
+// says), `check` returning "" or what is wrong.
+struct Outcome {
+  bool failed = false;
+  int cases = 0;          ///< cases run up to and including the first failure
+  std::string why;        ///< the shrunk counterexample's problem
+  std::string text;       ///< RapidCheck's report
+  Points input;           ///< the shrunk counterexample
+  std::map<std::string, int> mix;  ///< cases by generator
+};
+
+Outcome check_points(const std::string& name, const rc::Gen<std::pair<Points, std::string>>& gen,
+                     const std::function<std::string(const Points&)>& check) {
+  Outcome out;
   rc::detail::TestMetadata meta;
   meta.id = name;
   meta.description = name;
   const auto& config = rc::detail::configuration();
+  const auto sized = rc::gen::resize(rc::kNominalSize, gen);
   const auto result = rc::detail::checkTestable(
       [&] {
-        const auto drawn = *gen;
+        const auto drawn = *sized;
         RC_TAG(drawn.second);
-        ++mix[drawn.second];
+        ++out.mix[drawn.second];
         const std::string w = check(drawn.first);
         if (!w.empty()) {
-          failing = drawn.first;
-          why = w;
+          out.input = drawn.first;  // the last failure seen is the shrunk one
+          out.why = w;
           RC_FAIL(w);
         }
       },
       meta, config.testParams, geomcheck::listener(), config.reproduce);
-  std::string line;
-  for (auto& [k, v] : mix) line += " " + k + "=" + std::to_string(v);
-  std::printf("%s: cases by generator:%s\n", name.c_str(), line.c_str());
   rc::detail::SuccessResult ok;
+  rc::detail::FailureResult failure;
   if (result.match(ok)) {
-    std::printf("%s: %d cases passed (seed %llu)\n", name.c_str(), ok.numSuccess,
-                static_cast<unsigned long long>(config.testParams.seed));
-    return;
+    out.cases = ok.numSuccess;
+    return out;
   }
+  out.failed = true;
+  if (result.match(failure)) out.cases = failure.numSuccess + 1;
   std::ostringstream os;
   rc::detail::printResultMessage(result, os);
-  const std::string text = os.str();
-  const std::string path = failing ? save_points(*failing, name, why) : "(no input)";
-  ADD_FAILURE() << name << ": " << why << "\n" << text << "\n  saved: " << path
+  out.text = os.str();
+  return out;
+}
+
+// Runs the property on production; on failure saves the shrunk input and
+// names the replay.
+void run(const std::string& name, const std::function<std::string(const Points&)>& check,
+         rc::Gen<std::pair<Points, std::string>> gen = any_points()) {
+  const Outcome o = check_points(name, gen, check);
+  std::string line;
+  for (auto& [k, v] : o.mix) line += " " + k + "=" + std::to_string(v);
+  std::printf("%s: cases by generator:%s\n", name.c_str(), line.c_str());
+  const unsigned long long seed = rc::detail::configuration().testParams.seed;
+  if (!o.failed) {
+    std::printf("%s: %d cases passed (seed %llu)\n", name.c_str(), o.cases, seed);
+    return;
+  }
+  const std::string path = save_points(o.input, name, o.why);
+  ADD_FAILURE() << name << ": " << o.why << "\n" << o.text << "\n  saved: " << path
                 << "\n  replay: " GEOMCHECK_TOOL_PATH " replay " << path
-                << "\n  rerun:  RC_PARAMS=\"" << (std::getenv("RC_PARAMS") ? std::getenv("RC_PARAMS") : "")
-                << "\" ctest -R test_delaunay";
+                << "\n  rerun:  RC_PARAMS=\"seed=" << seed << "\" ctest -R test_delaunay";
 }
 
 std::string valid(const Points& p) {
@@ -439,6 +463,124 @@ TEST(Delaunay2d, SeedsAndRegressionsReplay) {
   EXPECT_GT(files, 0);
 }
 
+// ---- the checker can fail ---------------------------------------------------
+
+// Neighbours recomputed from the triangles (after a test has edited them).
+void relink(DelaunayTriangulation& t) {
+  std::map<std::pair<std::uint32_t, std::uint32_t>, std::uint32_t> owner;
+  for (std::uint32_t i = 0; i < t.triangles.size(); ++i)
+    for (int k = 0; k < 3; ++k) owner[{t.triangles[i][(k + 1) % 3], t.triangles[i][(k + 2) % 3]}] = i;
+  t.neighbors.assign(t.triangles.size(), {DelaunayTriangulation::kNone, DelaunayTriangulation::kNone,
+                                          DelaunayTriangulation::kNone});
+  for (std::uint32_t i = 0; i < t.triangles.size(); ++i)
+    for (int k = 0; k < 3; ++k) {
+      const auto it = owner.find({t.triangles[i][(k + 2) % 3], t.triangles[i][(k + 1) % 3]});
+      if (it != owner.end()) t.neighbors[i][k] = it->second;
+    }
+}
+
+TEST(Delaunay2dOracle, CheckerCatchesCorruptedTriangulations) {
+  // A valid triangulation of 40 points with no four cocircular (uniform
+  // doubles), then one corruption at a time; each must be reported.
+  std::mt19937_64 rng(20261124);
+  Points p;
+  for (int i = 0; i < 40; ++i) p.push_back({unit(rng()), unit(rng())});
+  p.push_back(p[7]);  // one duplicate
+  const DelaunayTriangulation good = geomcheck::delaunay_2d(p);
+  ASSERT_EQ(geomcheck::oracle::check_delaunay(p, good), "");
+  ASSERT_EQ(geomcheck::oracle::compare_with_cgal(p, good), "");
+  const auto expect_caught = [&](const DelaunayTriangulation& bad, const char* what, const char* words) {
+    const std::string v = geomcheck::oracle::check_delaunay(p, bad);
+    EXPECT_NE(v.find(words), std::string::npos) << what << ": checker said \"" << v << "\"";
+  };
+  {  // a clockwise triangle
+    DelaunayTriangulation t = good;
+    std::swap(t.triangles[3][1], t.triangles[3][2]);
+    relink(t);
+    expect_caught(t, "clockwise triangle", "not counter-clockwise");
+  }
+  {  // an interior edge flipped: still a triangulation, no longer Delaunay
+    DelaunayTriangulation t = good;
+    bool flipped = false;
+    for (std::uint32_t i = 0; i < t.triangles.size() && !flipped; ++i)
+      for (int k = 0; k < 3 && !flipped; ++k) {
+        const std::uint32_t j = t.neighbors[i][k];
+        if (j == DelaunayTriangulation::kNone) continue;
+        const std::uint32_t c = t.triangles[i][k], a = t.triangles[i][(k + 1) % 3], b = t.triangles[i][(k + 2) % 3];
+        std::uint32_t d = 0;
+        for (std::uint32_t v : t.triangles[j])
+          if (v != a && v != b) d = v;
+        // Convex quad c, a, d, b: the flipped pair is counter-clockwise.
+        if (geomcheck::orient2d(p[c], p[a], p[d]) > 0 && geomcheck::orient2d(p[d], p[b], p[c]) > 0) {
+          t.triangles[i] = {c, a, d};
+          t.triangles[j] = {d, b, c};
+          flipped = true;
+        }
+      }
+    ASSERT_TRUE(flipped);
+    relink(t);
+    expect_caught(t, "flipped edge", "not locally Delaunay");
+  }
+  {  // a triangle missing
+    DelaunayTriangulation t = good;
+    t.triangles.erase(t.triangles.begin() + 5);
+    relink(t);
+    EXPECT_NE(geomcheck::oracle::check_delaunay(p, t), "") << "missing triangle";
+  }
+  {  // a triangle twice
+    DelaunayTriangulation t = good;
+    t.triangles.push_back(t.triangles[0]);
+    t.neighbors.push_back(t.neighbors[0]);
+    expect_caught(t, "duplicated triangle", "in two triangles");
+  }
+  {  // neighbours not mutual
+    DelaunayTriangulation t = good;
+    for (auto& n : t.neighbors[0])
+      if (n != DelaunayTriangulation::kNone) {
+        n = (n + 1) % static_cast<std::uint32_t>(t.triangles.size());
+        break;
+      }
+    EXPECT_NE(geomcheck::oracle::check_delaunay(p, t), "") << "wrong neighbour";
+  }
+  {  // the duplicate not merged into the smallest index
+    DelaunayTriangulation t = good;
+    t.vertex_of[40] = 40;
+    expect_caught(t, "vertex_of", "vertex_of[40]");
+  }
+  {  // a wrong dimension, a wrong hull count
+    DelaunayTriangulation t = good;
+    t.dimension = geomcheck::DelaunayDimension::line;
+    expect_caught(t, "dimension", "dimension");
+    t = good;
+    t.hull_edges += 1;
+    expect_caught(t, "hull_edges", "hull_edges");
+  }
+  {  // a point left out of the triangulation (its triangles merged away)
+    Points q = p;
+    q.push_back({0.5, 0.5});
+    EXPECT_NE(geomcheck::oracle::check_delaunay(q, good), "") << "extra input point";
+  }
+  {  // CGAL's comparison: a flipped, relinked triangulation differs from CGAL
+    DelaunayTriangulation t = good;
+    for (std::uint32_t i = 0; i < t.triangles.size(); ++i)
+      for (int k = 0; k < 3; ++k) {
+        const std::uint32_t j = t.neighbors[i][k];
+        if (j == DelaunayTriangulation::kNone) continue;
+        const std::uint32_t c = t.triangles[i][k], a = t.triangles[i][(k + 1) % 3], b = t.triangles[i][(k + 2) % 3];
+        std::uint32_t d = 0;
+        for (std::uint32_t v : t.triangles[j])
+          if (v != a && v != b) d = v;
+        if (geomcheck::orient2d(p[c], p[a], p[d]) > 0 && geomcheck::orient2d(p[d], p[b], p[c]) > 0) {
+          t.triangles[i] = {c, a, d};
+          t.triangles[j] = {d, b, c};
+          relink(t);
+          EXPECT_NE(geomcheck::oracle::compare_with_cgal(p, t).find("not CGAL's"), std::string::npos);
+          return;
+        }
+      }
+  }
+}
+
 // ---- teeth -----------------------------------------------------------------
 
 // The same construction on the plain double evaluation of the determinants.
@@ -457,35 +599,15 @@ struct PlainPredicates {
   }
 };
 
-// Runs the plain variant on one generator until the checker or the
-// structure catches it; returns the case count and the first finding, or
-// nullopt when all cases passed.
-std::optional<std::pair<int, std::string>> teeth_run(const std::string& mode, const rc::Gen<Points>& gen) {
-  int cases = 0;
-  std::string first;
-  rc::detail::TestMetadata meta;
-  meta.id = meta.description = "teeth-plain-predicates-" + mode;
-  const auto& config = rc::detail::configuration();
-  const auto result = rc::detail::checkTestable(
-      [&] {
-        const Points p = *gen;
-        ++cases;
-        std::string why;
-        try {
-          const DelaunayTriangulation t = geomcheck::detail::DelaunayBuilder<PlainPredicates>().run(p.data(), p.size());
-          why = geomcheck::oracle::check_delaunay(p, t);
-        } catch (const geomcheck::DelaunayFailure& e) {
-          why = std::string("threw: ") + e.what();
-        }
-        if (!why.empty()) {
-          if (first.empty()) first = why;
-          RC_FAIL(why);
-        }
-      },
-      meta, config.testParams, geomcheck::listener(), config.reproduce);
-  rc::detail::FailureResult failure;
-  if (!result.match(failure)) return std::nullopt;
-  return std::make_pair(failure.numSuccess + 1, first);
+// The plain variant through the checker: "" or what is wrong (an invalid
+// triangulation, or the structure breaking).
+std::string plain_variant_problem(const Points& p) {
+  try {
+    const DelaunayTriangulation t = geomcheck::detail::DelaunayBuilder<PlainPredicates>().run(p.data(), p.size());
+    return geomcheck::oracle::check_delaunay(p, t);
+  } catch (const geomcheck::DelaunayFailure& e) {
+    return std::string("threw: ") + e.what();
+  }
 }
 
 TEST(Delaunay2dTeeth, PlainDoublePredicatesAreCaught) {
@@ -496,16 +618,18 @@ TEST(Delaunay2dTeeth, PlainDoublePredicatesAreCaught) {
   // only the overflowing huge-tiny one.
   int caught = 0;
   for (const Mode& m : modes()) {
-    const auto r = teeth_run(m.name, m.gen);
-    if (r) {
-      ++caught;
-      std::printf("plain double predicates, %s: caught at case %d: %s\n", m.name, r->first, r->second.c_str());
-    } else {
-      std::printf("plain double predicates, %s: not caught\n", m.name);
-    }
     const std::string name = m.name;
+    const Outcome o = check_points("teeth-plain-predicates-" + name,
+                                   rc::gen::map(m.gen, [name](Points p) { return std::make_pair(std::move(p), name); }),
+                                   plain_variant_problem);
+    if (o.failed) {
+      ++caught;
+      std::printf("plain double predicates, %s: caught at case %d: %s\n", m.name, o.cases, o.why.c_str());
+    } else {
+      std::printf("plain double predicates, %s: not caught in %d cases\n", m.name, o.cases);
+    }
     if (name == "ulp-perturbed" || name == "almost-collinear" || name == "huge-tiny") {
-      EXPECT_TRUE(r.has_value()) << "the plain-double variant passed every " << m.name << " case";
+      EXPECT_TRUE(o.failed) << "the plain-double variant passed every " << m.name << " case";
     }
   }
   EXPECT_GE(caught, 3);

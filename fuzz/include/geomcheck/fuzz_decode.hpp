@@ -39,13 +39,17 @@ inline Mode mode_of(const std::uint8_t* data, std::size_t size) {
   return size > 0 && (data[0] & 1) ? Mode::Structured : Mode::Raw;
 }
 
-inline double structured_value(FuzzedDataProvider& p) {
-  // Halves of small integers, nudged by up to 4 ulps.
-  double v = 0.5 * p.ConsumeIntegralInRange<int>(-40, 40);
-  int k = p.ConsumeIntegralInRange<int>(-4, 4);
+/// v moved by k ulps (towards +inf for k > 0).
+inline double nudge(double v, int k) {
   for (; k > 0; --k) v = std::nextafter(v, INFINITY);
   for (; k < 0; ++k) v = std::nextafter(v, -INFINITY);
   return v;
+}
+
+inline double structured_value(FuzzedDataProvider& p) {
+  // Halves of small integers, nudged by up to 4 ulps.
+  const double v = 0.5 * p.ConsumeIntegralInRange<int>(-40, 40);
+  return nudge(v, p.ConsumeIntegralInRange<int>(-4, 4));
 }
 
 /// Every value of a shape drawn, then exact moves applied field by field.

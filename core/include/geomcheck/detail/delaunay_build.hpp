@@ -201,7 +201,7 @@ class DelaunayBuilder {
   std::uint32_t& ax(std::uint32_t c) { return tri_[c / 3].a[c % 3]; }
   std::uint32_t ax(std::uint32_t c) const { return tri_[c / 3].a[c % 3]; }
   std::vector<std::uint32_t> fan_corner_, fan_stamp_;  // per vertex (+ inf): the new triangle leaving it
-  std::vector<std::uint32_t> cavity_, stack_;
+  std::vector<std::uint32_t> cavity_, stack_, fan_;
   struct Boundary {
     std::uint32_t from, to, outside;
   };
@@ -214,7 +214,8 @@ class DelaunayBuilder {
   static std::uint32_t prev(std::uint32_t c) { return c % 3 == 0 ? c + 2 : c - 1; }
   bool ghost(std::uint32_t t) const { return tri_[t].v[0] == kInf || tri_[t].v[1] == kInf || tri_[t].v[2] == kInf; }
   std::uint32_t triangles() const { return static_cast<std::uint32_t>(tri_.size()); }
-  std::uint32_t slot(std::uint32_t i) { return i < fan_corner_.size() - 1 ? i : static_cast<std::uint32_t>(fan_corner_.size() - 1); }
+  // Index into the per-vertex arrays: the vertex, or the last slot for infinity.
+  std::uint32_t slot(std::uint32_t v) const { return v == kInf ? static_cast<std::uint32_t>(pts_.size()) : v; }
 
   // p strictly between x and y, all three collinear.
   static bool strictly_between(Vec2 x, Vec2 y, Vec2 p) {
@@ -272,9 +273,10 @@ class DelaunayBuilder {
       throw DelaunayFailure("delaunay_2d: the conflict region is not a disc (" + std::to_string(cavity_.size()) +
                             " triangles, " + std::to_string(boundary_.size()) + " boundary edges)");
     ++stamp_;
-    const std::size_t k = boundary_.size();
-    for (std::size_t j = 0; j < k; ++j) {
+    fan_.clear();
+    for (std::size_t j = 0; j < boundary_.size(); ++j) {
       const std::uint32_t t = j < cavity_.size() ? cavity_[j] : new_triangle();
+      fan_.push_back(t);
       const Boundary& e = boundary_[j];
       vx(3 * t) = e.from, vx(3 * t + 1) = e.to, vx(3 * t + 2) = apex;
       ax(3 * t + 2) = e.outside, ax(e.outside) = 3 * t + 2;
@@ -283,8 +285,7 @@ class DelaunayBuilder {
       fan_stamp_[s] = stamp_, fan_corner_[s] = 3 * t + 1;  // edge (apex, from) is opposite corner 1
       if (e.from != kInf && e.to != kInf) last_ = t;
     }
-    for (std::size_t j = 0; j < k; ++j) {
-      const std::uint32_t t = j < cavity_.size() ? cavity_[j] : triangles() - static_cast<std::uint32_t>(k - j);
+    for (const std::uint32_t t : fan_) {
       const std::uint32_t s = slot(vx(3 * t + 1));
       if (fan_stamp_[s] != stamp_) throw DelaunayFailure("delaunay_2d: the conflict region's boundary is not a cycle");
       const std::uint32_t other = fan_corner_[s];  // edge (to, apex) is opposite corner 0
