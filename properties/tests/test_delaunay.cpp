@@ -479,6 +479,27 @@ void relink(DelaunayTriangulation& t) {
     }
 }
 
+// Flips the first interior edge whose quadrilateral is strictly convex (the
+// flipped pair stays counter-clockwise), then relinks; false when none is.
+bool flip_some_edge(const Points& p, DelaunayTriangulation& t) {
+  for (std::uint32_t i = 0; i < t.triangles.size(); ++i)
+    for (int k = 0; k < 3; ++k) {
+      const std::uint32_t j = t.neighbors[i][k];
+      if (j == DelaunayTriangulation::kNone) continue;
+      const std::uint32_t c = t.triangles[i][k], a = t.triangles[i][(k + 1) % 3], b = t.triangles[i][(k + 2) % 3];
+      std::uint32_t d = 0;
+      for (std::uint32_t v : t.triangles[j])
+        if (v != a && v != b) d = v;
+      if (geomcheck::orient2d(p[c], p[a], p[d]) > 0 && geomcheck::orient2d(p[d], p[b], p[c]) > 0) {
+        t.triangles[i] = {c, a, d};
+        t.triangles[j] = {d, b, c};
+        relink(t);
+        return true;
+      }
+    }
+  return false;
+}
+
 TEST(Delaunay2dOracle, CheckerCatchesCorruptedTriangulations) {
   // A valid triangulation of 40 points with no four cocircular (uniform
   // doubles), then one corruption at a time; each must be reported.
@@ -501,24 +522,7 @@ TEST(Delaunay2dOracle, CheckerCatchesCorruptedTriangulations) {
   }
   {  // an interior edge flipped: still a triangulation, no longer Delaunay
     DelaunayTriangulation t = good;
-    bool flipped = false;
-    for (std::uint32_t i = 0; i < t.triangles.size() && !flipped; ++i)
-      for (int k = 0; k < 3 && !flipped; ++k) {
-        const std::uint32_t j = t.neighbors[i][k];
-        if (j == DelaunayTriangulation::kNone) continue;
-        const std::uint32_t c = t.triangles[i][k], a = t.triangles[i][(k + 1) % 3], b = t.triangles[i][(k + 2) % 3];
-        std::uint32_t d = 0;
-        for (std::uint32_t v : t.triangles[j])
-          if (v != a && v != b) d = v;
-        // Convex quad c, a, d, b: the flipped pair is counter-clockwise.
-        if (geomcheck::orient2d(p[c], p[a], p[d]) > 0 && geomcheck::orient2d(p[d], p[b], p[c]) > 0) {
-          t.triangles[i] = {c, a, d};
-          t.triangles[j] = {d, b, c};
-          flipped = true;
-        }
-      }
-    ASSERT_TRUE(flipped);
-    relink(t);
+    ASSERT_TRUE(flip_some_edge(p, t));
     expect_caught(t, "flipped edge", "not locally Delaunay");
   }
   {  // a triangle missing
@@ -560,24 +564,10 @@ TEST(Delaunay2dOracle, CheckerCatchesCorruptedTriangulations) {
     q.push_back({0.5, 0.5});
     EXPECT_NE(geomcheck::oracle::check_delaunay(q, good), "") << "extra input point";
   }
-  {  // CGAL's comparison: a flipped, relinked triangulation differs from CGAL
+  {  // CGAL's comparison: a flipped triangulation differs from CGAL's
     DelaunayTriangulation t = good;
-    for (std::uint32_t i = 0; i < t.triangles.size(); ++i)
-      for (int k = 0; k < 3; ++k) {
-        const std::uint32_t j = t.neighbors[i][k];
-        if (j == DelaunayTriangulation::kNone) continue;
-        const std::uint32_t c = t.triangles[i][k], a = t.triangles[i][(k + 1) % 3], b = t.triangles[i][(k + 2) % 3];
-        std::uint32_t d = 0;
-        for (std::uint32_t v : t.triangles[j])
-          if (v != a && v != b) d = v;
-        if (geomcheck::orient2d(p[c], p[a], p[d]) > 0 && geomcheck::orient2d(p[d], p[b], p[c]) > 0) {
-          t.triangles[i] = {c, a, d};
-          t.triangles[j] = {d, b, c};
-          relink(t);
-          EXPECT_NE(geomcheck::oracle::compare_with_cgal(p, t).find("not CGAL's"), std::string::npos);
-          return;
-        }
-      }
+    ASSERT_TRUE(flip_some_edge(p, t));
+    EXPECT_NE(geomcheck::oracle::compare_with_cgal(p, t).find("not CGAL's"), std::string::npos);
   }
 }
 
