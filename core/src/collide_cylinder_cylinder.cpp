@@ -162,23 +162,25 @@ struct Frame {
     return t1 + rA * sw + rB;
   }
 
-  // Newton on the angle from (c, s), keeping only steps that lower the
-  // overlap; the best (c, s) and its overlap.
+  // Two Newton steps on the angle from (c, s), each kept only if it lowers
+  // the overlap (halved once otherwise): the best (c, s) and its overlap.
+  // Measured against the oracle's penetration depth this leaves p99 of
+  // depth / PD at 1.006 (8 steps: 1.0001), for a third of the cost.
   double circle_min(bool perp_a, double& c, double& s) const {
     double d1, d2;
     double o = on_circle(perp_a, c, s, d1, d2);
-    for (int it = 0; it < 8; ++it) {
+    for (int it = 0; it < 2; ++it) {
       double step = d2 > 0 ? -d1 / d2 : (d1 > 0 ? -0.25 : 0.25);
       step = std::clamp(step, -0.5, 0.5);
       bool moved = false;
-      for (int k = 0; k < 4 && !moved; ++k, step *= 0.5) {
+      for (int k = 0; k < 2 && !moved; ++k, step *= 0.5) {
         const double l = std::sqrt(1 + step * step);
         const double c2 = (c - s * step) / l, s2 = (s + c * step) / l;
         double e1, e2;
         const double o2 = on_circle(perp_a, c2, s2, e1, e2);
         if (o2 < o) c = c2, s = s2, o = o2, d1 = e1, d2 = e2, moved = true;
       }
-      if (!moved || std::fabs(step) < 0x1p-30) break;
+      if (!moved) break;
     }
     return o;
   }
@@ -198,42 +200,65 @@ struct Frame {
     }
   }
 
-  // A point of both rectangles of slice yy (their common part's vertex
-  // centre), in (X, Z).
+  // A point of both rectangles of slice yy (the vertex centre of their
+  // common part, A's rectangle clipped by B's four sides), in (X, Z).
   void common_point(double yy, double& X, double& Z) const {
     const double ka = kA(yy), kb = kB(yy);
-    double px[12], pz[12], qx[12], qz[12];
+    // Cheap first: A's centre clamped into B, then B's centre clamped into
+    // A; either is in both whenever the rectangles cross (the usual case).
+    const double slack = 0x1p-40 * (std::fabs(Xp) + std::fabs(Xq) + std::fabs(Zp) + std::fabs(Zq) + LB + ka + kb);
+    const double amin = std::min(ap, aq), amax = std::max(ap, aq);
+    auto in_a = [&](double x, double zz) {
+      const double a = x * sX + zz * cZ, b = x * cZ - zz * sX;
+      return a >= amin - slack && a <= amax + slack && std::fabs(b - b0) <= ka + slack;
+    };
+    X = std::clamp(0.5 * (Xp + Xq), -kb, kb);
+    Z = std::clamp(0.5 * (Zp + Zq), 0.0, LB);
+    if (in_a(X, Z)) return;
+    {
+      const double zc = 0.5 * LB;
+      const double a = std::clamp(zc * cZ, amin, amax), b = std::clamp(-zc * sX, b0 - ka, b0 + ka);
+      const double x = a * sX + b * cZ, zz = a * cZ - b * sX;
+      if (std::fabs(x) <= kb + slack && zz >= -slack && zz <= LB + slack) {
+        X = std::clamp(x, -kb, kb), Z = std::clamp(zz, 0.0, LB);
+        return;
+      }
+    }
+    double buf[2][2][8];
+    double* px = buf[0][0];
+    double* pz = buf[0][1];
+    double* qx = buf[1][0];
+    double* qz = buf[1][1];
     int n = 4;
     const double nx = cZ * ka, nz = -sX * ka;
     px[0] = Xp + nx, pz[0] = Zp + nz;
     px[1] = Xq + nx, pz[1] = Zq + nz;
     px[2] = Xq - nx, pz[2] = Zq - nz;
     px[3] = Xp - nx, pz[3] = Zp - nz;
-    // Clip by B's rectangle: X <= kb, -X <= kb, Z <= LB, -Z <= 0.
-    auto clip = [&](int axis, double sign, double bound) {
+    // Clip by X <= kb, -X <= kb, Z <= LB, -Z <= 0 (Sutherland-Hodgman).
+    for (int side = 0; side < 4 && n > 0; ++side) {
+      const bool on_x = side < 2;
+      const double sign = (side & 1) ? -1.0 : 1.0;
+      const double bound = side == 0 || side == 1 ? kb : (side == 2 ? LB : 0.0);
+      const double* pa = on_x ? px : pz;
       int m = 0;
+      double vi = sign * pa[0] - bound;
       for (int i = 0; i < n; ++i) {
         const int j = i + 1 == n ? 0 : i + 1;
-        const double vi = sign * (axis == 0 ? px[i] : pz[i]) - bound;
-        const double vj = sign * (axis == 0 ? px[j] : pz[j]) - bound;
+        const double vj = sign * pa[j] - bound;
         if (vi <= 0) qx[m] = px[i], qz[m] = pz[i], ++m;
         if ((vi < 0 && vj > 0) || (vi > 0 && vj < 0)) {
-          const double s = vi / (vi - vj);
-          qx[m] = px[i] + s * (px[j] - px[i]);
-          qz[m] = pz[i] + s * (pz[j] - pz[i]);
-          if (axis == 0) qx[m] = sign * bound;
-          else qz[m] = sign * bound;
+          const double t = vi / (vi - vj);
+          qx[m] = on_x ? sign * bound : px[i] + t * (px[j] - px[i]);
+          qz[m] = on_x ? pz[i] + t * (pz[j] - pz[i]) : sign * bound;
           ++m;
         }
+        vi = vj;
       }
       n = m;
-      std::copy(qx, qx + m, px);
-      std::copy(qz, qz + m, pz);
-    };
-    clip(0, 1, kb);
-    clip(0, -1, kb);
-    clip(1, 1, LB);
-    clip(1, -1, 0);
+      std::swap(px, qx);
+      std::swap(pz, qz);
+    }
     if (n == 0) {
       // Touching to rounding: A's centre clamped into B's rectangle.
       X = std::clamp(0.5 * (Xp + Xq), -kb, kb);
