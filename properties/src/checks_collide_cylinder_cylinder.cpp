@@ -74,7 +74,11 @@ Score score_contact(const Contact& k, bool truth_hit, Verdict verdict, const ora
       const QInterval& depth = pd->depth;
       const Q v = oracle::to_q(k.depth);
       out.depth = v < depth.lo ? rel_up(depth.lo - v, scale) : 0.0;
-      if (depth.lo > 0 && (depth.hi - depth.lo) * 100 <= depth.lo)
+      // The ratio where it measures the direction rather than rounding: the
+      // penetration depth enclosed within 1% and at least 1e-9 * scale (a
+      // rounding-sized depth, a few eps * scale, over a rounding-sized
+      // penetration depth is noise).
+      if (depth.lo >= times_scale(1e-9, scale) && (depth.hi - depth.lo) * 100 <= depth.lo)
         out.ratio = k.depth / oracle::to_double(depth.mid());
     }
   } else {

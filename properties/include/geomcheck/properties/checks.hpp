@@ -120,8 +120,9 @@ struct Evaluation {
   } peer;
   /// Collide queries whose depth is an upper bound rather than the
   /// penetration depth (collide_cylinder_cylinder): production's depth over
-  /// the certified penetration depth, where the shapes overlap and the
-  /// engine's enclosure of it is within 1% (relative); NaN otherwise.
+  /// the certified penetration depth, where the shapes overlap, the
+  /// engine's enclosure of it is within 1% (relative) and it is at least
+  /// 1e-9 * scale (below that, rounding decides the ratio); NaN otherwise.
   double depth_ratio = NAN;
 };
 
@@ -266,7 +267,8 @@ CheckResult check_monotone(const CylinderCylinderCase& c, const CylinderCylinder
 CheckResult check_robust(const CylinderCylinderCase& c, const CylinderCylinderImpl& impl = kProductionCylinderCylinder);
 CheckResult check_all(const CylinderCylinderCase& c, const CylinderCylinderImpl& impl = kProductionCylinderCylinder);
 /// Production's depth over the certified penetration depth (Evaluation::depth_ratio):
-/// NaN when the shapes do not overlap or the enclosure is wider than 1%.
+/// NaN when the shapes do not overlap, the enclosure is wider than 1% or the
+/// penetration depth is below 1e-9 * scale.
 double depth_ratio(const CylinderCylinderCase& c, const CylinderCylinderImpl& impl = kProductionCylinderCylinder);
 
 /// Number of metamorphic moves understood by check_metamorphic (0..kNumMoves-1).
