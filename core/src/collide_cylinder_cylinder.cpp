@@ -147,18 +147,20 @@ struct Frame {
   // first, n . (A's ends) = c y0 + s b0; on the second, n . u_A = c sX.
   double on_circle(bool perp_a, double c, double s, double& d1, double& d2) const {
     if (perp_a) {
-      const double k = sX * sX, w = std::max(1 - k * s * s, 0x1p-60), sw = std::sqrt(w);
+      const double k = sX * sX, w = std::max(1 - k * s * s, 0x1p-60), sw = std::sqrt(w), is = 1 / sw;
       const double t1 = y0 * c + b0 * s;
       const double lin = s > 0 ? LB * sX : 0.0;
-      d1 = -y0 * s + b0 * c + lin * c - rB * k * s * c / sw;
-      d2 = -t1 - lin * s + rB * (-k * (c * c - s * s) / sw - k * k * s * s * c * c / (w * sw));
+      const double ksc = k * s * c;
+      d1 = -y0 * s + b0 * c + lin * c - rB * ksc * is;
+      d2 = -t1 - lin * s - rB * is * (k * (c * c - s * s) + ksc * ksc * is * is);
       return t1 + lin * s + rA + rB * sw;
     }
-    const double k = sX * sX, w = std::max(1 - k * c * c, 0x1p-60), sw = std::sqrt(w);
+    const double k = sX * sX, w = std::max(1 - k * c * c, 0x1p-60), sw = std::sqrt(w), is = 1 / sw;
     const double xc = c >= 0 ? std::max(Xp, Xq) : std::min(Xp, Xq);
     const double t1 = xc * c + y0 * s;
-    d1 = -xc * s + y0 * c + rA * k * c * s / sw;
-    d2 = -t1 + rA * (k * (c * c - s * s) / sw - k * k * c * c * s * s / (w * sw));
+    const double kcs = k * c * s;
+    d1 = -xc * s + y0 * c + rA * kcs * is;
+    d2 = -t1 + rA * is * (k * (c * c - s * s) - kcs * kcs * is * is);
     return t1 + rA * sw + rB;
   }
 
@@ -174,8 +176,8 @@ struct Frame {
       step = std::clamp(step, -0.5, 0.5);
       bool moved = false;
       for (int k = 0; k < 2 && !moved; ++k, step *= 0.5) {
-        const double l = std::sqrt(1 + step * step);
-        const double c2 = (c - s * step) / l, s2 = (s + c * step) / l;
+        const double il = 1 / std::sqrt(1 + step * step);
+        const double c2 = (c - s * step) * il, s2 = (s + c * step) * il;
         double e1, e2;
         const double o2 = on_circle(perp_a, c2, s2, e1, e2);
         if (o2 < o) c = c2, s = s2, o = o2, d1 = e1, d2 = e2, moved = true;
