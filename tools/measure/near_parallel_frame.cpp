@@ -18,7 +18,7 @@ int main() {
       double ang = U(rng) * 3.14159;
       Vec3 off = std::cos(ang) * p1 + std::sin(ang) * p2;
       double ra = 0.1 + 0.2 * std::fabs(U(rng)), rb = 0.1 + 0.2 * std::fabs(U(rng));
-      double gap = (i % 2 ? 1 : -1) * GAP;   // separated or overlapping by 1e-8 (band 1e-10)
+      double gap = (i % 2 ? 1 : -1) * GAP;   // separated or overlapping by GAP * scale
       Vec3 c{U(rng), U(rng), U(rng)};
       Cylinder b{c - u, c + u, rb};
       // A tilted by th about the offset direction's perpendicular, centred at distance ra+rb+gap
