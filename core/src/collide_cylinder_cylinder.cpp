@@ -17,8 +17,9 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 
 // The roles: the frame cylinder ("B", its axis is z) comes first in this
 // order, so that (a, b) and (b, a) run the same computation. The keys are
-// invariant under reflections, point inversion and power-of-two scalings
-// (each is a sum of squares), so those moves keep the roles.
+// invariant under swapping a cylinder's caps, reflections, point inversion
+// and power-of-two scalings (each is a sum of squares), so those keep the
+// roles.
 struct RoleKey {
   double r, l2, d2;
   explicit RoleKey(const Cylinder& c) : r(c.r) {
@@ -33,68 +34,87 @@ bool first(const RoleKey& a, const RoleKey& b) {
   return a.d2 >= b.d2;
 }
 
+// A cylinder's unit axis and half length (in the scaled scene).
+struct Axis {
+  Vec3 u;
+  double half;
+};
+
 // One term of G: c - al * kA(y) - be * kB(y).
 struct Term {
   double c, al, be;
 };
 
-// The pair in the frame of B: origin B.p, z = u_B, y the common
-// perpendicular (A's axis at height y0 >= 0), x completing the frame with
-// u_A . x = sX >= 0. In-plane: u_A = (sX, cZ), A's side normal nA = (cZ, -sX).
+// The pair in a canonical frame of B: origin B's centre, z along B's axis,
+// y the common perpendicular, x completing the frame. A's centre is at
+// (X0, y0, Z0) and its axis direction is (sX, 0, cZ); the signs of x, y, z
+// and of A's direction are chosen so that X0, y0, Z0, sX >= 0 (ties broken
+// by sX * cZ >= 0). Every such choice describes the same pair (B is
+// symmetric in each coordinate plane through its centre, A's axis has no
+// direction), so swapping either cylinder's caps, which flips z or u_A
+// exactly, gives the same canonical numbers bit for bit, and the answer
+// depends on nothing else.
+//
+// In a slice y = const, B is the rectangle |X| <= kB(y), |Z| <= hB and A the
+// rectangle |a - a0| <= hA, |b - b0| <= kA(y) in A's coordinates a = (X, Z)
+// . (sX, cZ), b = (X, Z) . (cZ, -sX), with k the half widths
+// sqrt(r^2 - (y - y_axis)^2).
 struct Frame {
-  double rA, rB, LB;
-  Vec3 origin, x, y, z, uA, nA;
-  double sX, cZ, cZa, y0;
-  double Xp, Xq, Zp, Zq, ap, aq, b0;
-  Vec3 va, vb;    // A's end points from the origin
+  double rA, rB, hA, hB;
+  Vec3 origin, x, y, z, uA;
+  double sX, cZ, cZa, X0, y0, Z0, a0, b0;
   Term t[4];
-  int nterms = 4;
   double lo, hi;  // the slices where both cylinders have a section
 
-  Frame(const Cylinder& A, const Cylinder& B, const CylinderPairOptions& opt) : rA(A.r), rB(B.r) {
-    const UnitAndLength ua(A.q - A.p), ub(B.q - B.p);
-    uA = ua.u;
-    z = ub.u;
-    LB = ub.len;
-    origin = B.p;
-    const Vec3 vp = A.p - B.p, vq = A.q - B.p;
-    va = vp, vb = vq;
+  Frame(const Cylinder& A, const Axis& axA, const Cylinder& B, const Axis& axB, const CylinderPairOptions& opt)
+      : rA(A.r), rB(B.r), hA(axA.half), hB(axB.half) {
+    uA = axA.u;
+    z = axB.u;
+    origin = 0.5 * (B.p + B.q);
+    const Vec3 v = 0.5 * (A.p + A.q) - origin;
     const double c = dot(uA, z);
     // The common perpendicular. u_B x u_A loses digits as 1 / theta (the
-    // products cancel); u_B x (u_A - u_B) does not: the difference of two
+    // products cancel); u_B x (u_A -+ u_B) does not: the difference of two
     // near-equal unit vectors is exact or nearly so, and the cross product
-    // of u_B with it has no cancellation.
-    const Vec3 cr = opt.accurate_frame ? cross(z, c >= 0 ? uA - z : uA + z) : cross(z, uA);
+    // of u_B with it has no cancellation. (Below 60 degrees from
+    // perpendicular only: the branch depends on |c|, so that flipping
+    // either axis negates the cross product exactly.)
+    const bool compensate = opt.accurate_frame && std::fabs(c) > 0.5;
+    const Vec3 cr = compensate ? cross(z, c > 0 ? uA - z : uA + z) : cross(z, uA);
+    double sx0, cz0;
     if (max_abs(cr) == 0 && opt.parallel_branch) {
-      // Parallel or anti-parallel axes: x towards A's axis, y = 0 through both.
-      x = unit_perpendicular_part(0.5 * (vp + vq), z);
+      // Parallel or anti-parallel axes: x towards A's axis, y = 0 through
+      // both.
+      x = unit_perpendicular_part(v, z);
       y = cross(z, x);
       y0 = 0;
-      sX = 0;
-      cZ = c >= 0 ? 1.0 : -1.0;
+      sx0 = 0;
+      cz0 = c;
     } else {
       y = max_abs(cr) == 0 ? (1.0 / length(cr)) * cr : normalized(cr);  // NaN without the branch
-      y0 = 0.5 * (dot(y, vp) + dot(y, vq));
+      y0 = dot(y, v);
       if (y0 < 0) y = -y, y0 = -y0;
       x = cross(y, z);
-      sX = dot(x, uA);
-      if (sX < 0) x = -x, sX = -sX;
-      cZ = dot(z, uA);
+      sx0 = dot(x, uA);
+      cz0 = dot(z, uA);
     }
-    cZa = std::fabs(cZ);
-    nA = cZ * x - sX * z;
-    Xp = dot(x, vp), Xq = dot(x, vq);
-    Zp = dot(z, vp), Zq = dot(z, vq);
-    ap = dot(uA, vp), aq = dot(uA, vq);
-    b0 = 0.5 * (dot(nA, vp) + dot(nA, vq));
-    const double LBc = LB * cZ;
+    X0 = dot(x, v);
+    Z0 = dot(z, v);
+    // The canonical signs (see above).
+    if (X0 < 0 || (X0 == 0 && sx0 * cz0 < 0)) x = -x, X0 = -X0, sx0 = -sx0;
+    if (Z0 < 0 || (Z0 == 0 && sx0 * cz0 < 0)) z = -z, Z0 = -Z0, cz0 = -cz0;
+    if (sx0 < 0 || (sx0 == 0 && cz0 < 0)) uA = -uA, sx0 = -sx0, cz0 = -cz0;
+    X0 = std::fabs(X0), Z0 = std::fabs(Z0), y0 = std::fabs(y0);  // no -0
+    sX = sx0, cZ = cz0, cZa = std::fabs(cZ);
+    a0 = sX * X0 + cZ * Z0;
+    b0 = std::fabs(cZ * X0 - sX * Z0);
     // The separating axes of the two rectangles of a slice: B's cap planes
     // (the false-positive planes: A reaches kA sX beyond its axis along z),
     // B's side, A's cap planes, A's side.
-    t[0] = {std::max(std::min(Zp, Zq) - LB, -std::max(Zp, Zq)), sX, 0};
-    t[1] = {std::max(std::min(Xp, Xq), -std::max(Xp, Xq)), cZa, 1};
-    t[2] = {std::max(std::min(ap, aq) - std::max(0.0, LBc), std::min(0.0, LBc) - std::max(ap, aq)), 0, sX};
-    t[3] = {std::max(b0, -LB * sX - b0), 1, cZa};
+    t[0] = {Z0 - hB - hA * cZa, sX, 0};
+    t[1] = {X0 - hA * sX, cZa, 1};
+    t[2] = {std::fabs(a0) - hA - hB * cZa, 0, sX};
+    t[3] = {b0 - hB * sX, 1, cZa};
     if (!opt.false_positive_planes) {
       // The augmented cylinders' square ends: the full reach r sin theta
       // at every slice (corner false positives).
@@ -116,7 +136,7 @@ struct Frame {
     const double ka = kA(yy), kb = kB(yy);
     double g = -kInf;
     int best = 0;
-    for (int j = 0; j < nterms; ++j) {
+    for (int j = 0; j < 4; ++j) {
       const double v = t[j].c - t[j].al * ka - t[j].be * kb;
       if (v > g) g = v, best = j;
     }
@@ -126,122 +146,110 @@ struct Frame {
     return g;
   }
 
-  // Overlap of the shapes along unit n (h_A(n) + h_B(-n)) for the ten
-  // candidate directions, in the order of `candidate`.
-  void overlaps(double o[10]) const {
-    const double rAs = rA * sX, rBs = rB * sX;
-    o[0] = std::max(Zp, Zq) + rAs;                                   // +z
-    o[1] = LB - std::min(Zp, Zq) + rAs;                              // -z
-    o[2] = std::max(Xp, Xq) + rA * cZa + rB;                         // +x
-    o[3] = rA * cZa + rB - std::min(Xp, Xq);                         // -x
-    o[4] = rA + rB - y0;                                             // -y
-    o[5] = rA + rB + y0;                                             // +y
-    o[6] = std::max(ap, aq) + std::max(0.0, -LB * cZ) + rBs;         // +uA
-    o[7] = std::max(0.0, LB * cZ) + rBs - std::min(ap, aq);          // -uA
-    o[8] = b0 + rA + LB * sX + rB * cZa;                             // +nA
-    o[9] = rA + rB * cZa - b0;                                       // -nA
-  }
-  // The overlap on the great circle of normals perpendicular to u_A
-  // (side of A against B: n = c y + s nA) or to u_B (side of B against A:
-  // n = c x + s y), with its first two derivatives in the angle. On the
-  // first, n . (A's ends) = c y0 + s b0; on the second, n . u_A = c sX.
-  double on_circle(bool perp_a, double c, double s, double& d1, double& d2) const {
-    if (perp_a) {
-      const double k = sX * sX, w = std::max(1 - k * s * s, 0x1p-60), sw = std::sqrt(w), is = 1 / sw;
-      const double t1 = y0 * c + b0 * s;
-      const double lin = s > 0 ? LB * sX : 0.0;
-      const double ksc = k * s * c;
-      d1 = -y0 * s + b0 * c + lin * c - rB * ksc * is;
-      d2 = -t1 - lin * s - rB * is * (k * (c * c - s * s) + ksc * ksc * is * is);
-      return t1 + lin * s + rA + rB * sw;
-    }
-    const double k = sX * sX, w = std::max(1 - k * c * c, 0x1p-60), sw = std::sqrt(w), is = 1 / sw;
-    const double xc = c >= 0 ? std::max(Xp, Xq) : std::min(Xp, Xq);
-    const double t1 = xc * c + y0 * s;
-    const double kcs = k * c * s;
-    d1 = -xc * s + y0 * c + rA * kcs * is;
-    d2 = -t1 + rA * is * (k * (c * c - s * s) - kcs * kcs * is * is);
-    return t1 + rA * sw + rB;
-  }
-
-  // Two Newton steps on the angle from (c, s), each kept only if it lowers
-  // the overlap (halved once otherwise): the best (c, s) and its overlap.
-  // Measured against the oracle's penetration depth this leaves p99 of
-  // depth / PD at 1.006 (8 steps: 1.0001), for a third of the cost.
-  double circle_min(bool perp_a, double& c, double& s) const {
-    double d1, d2;
-    double o = on_circle(perp_a, c, s, d1, d2);
-    for (int it = 0; it < 2; ++it) {
-      double step = d2 > 0 ? -d1 / d2 : (d1 > 0 ? -0.25 : 0.25);
-      step = std::clamp(step, -0.5, 0.5);
-      bool moved = false;
-      for (int k = 0; k < 2 && !moved; ++k, step *= 0.5) {
-        const double il = 1 / std::sqrt(1 + step * step);
-        const double c2 = (c - s * step) * il, s2 = (s + c * step) * il;
-        double e1, e2;
-        const double o2 = on_circle(perp_a, c2, s2, e1, e2);
-        if (o2 < o) c = c2, s = s2, o = o2, d1 = e1, d2 = e2, moved = true;
+  // The overlap of the shapes along a great circle of unit normals:
+  //   f(P, Q) = R1 + R2 sqrt(P^2 + cZ^2 Q^2) + K Q - y0 P,  P, Q >= 0,
+  // with its first two derivatives in the angle (P = cos, Q = sin). The
+  // circle perpendicular to u_A (A's side against B) is n = -(P y + Q nA'),
+  // nA' = A's side normal towards A's centre side, with R1 = rA, R2 = rB,
+  // K = hB sX - |b0|; the circle perpendicular to u_B (B's side against A)
+  // is n = -(P y + Q x) with R1 = rB, R2 = rA, K = hA sX - X0. Both are
+  // h_A(n) + h_B(-n); the square root is written without the cancelling
+  // 1 - sX^2 Q^2.
+  struct Circle {
+    double R1, R2, K, y0, c2, s2;
+    double f(double P, double Q, double& d1, double& d2) const {
+      const double S = std::sqrt(P * P + c2 * Q * Q);
+      if (!(S > 0)) {  // cZ = 0 at Q = 1: a kink (rim against side); no Newton step from here
+        d1 = y0, d2 = 0;
+        return R1 + K * Q - y0 * P;
       }
-      if (!moved) break;
+      const double iS = 1 / S, pq = P * Q;
+      d1 = -R2 * s2 * pq * iS + K * P + y0 * Q;
+      d2 = -R2 * s2 * iS * ((P * P - Q * Q) + s2 * pq * pq * iS * iS) - K * Q + y0 * P;
+      return R1 + R2 * S + K * Q - y0 * P;
     }
-    return o;
+    // Newton on the angle from (P, Q), each step kept only if it lowers f
+    // (halved once otherwise), kept in the quadrant.
+    double min(double& P, double& Q, int steps) const {
+      double d1, d2;
+      double o = f(P, Q, d1, d2);
+      for (int it = 0; it < steps; ++it) {
+        double step = d2 > 0 ? -d1 / d2 : (d1 > 0 ? -0.25 : 0.25);
+        step = std::clamp(step, -0.5, 0.5);
+        bool moved = false;
+        for (int k = 0; k < 2 && !moved; ++k, step *= 0.5) {
+          const double il = 1 / std::sqrt(1 + step * step);
+          double P2 = (P - Q * step) * il, Q2 = (Q + P * step) * il;
+          if (P2 < 0) P2 = 0, Q2 = 1;  // past an end of the quadrant: the end
+          if (Q2 < 0) P2 = 1, Q2 = 0;
+          double e1, e2;
+          const double o2 = f(P2, Q2, e1, e2);
+          if (o2 < o) P = P2, Q = Q2, o = o2, d1 = e1, d2 = e2, moved = true;
+        }
+        if (!moved) break;
+      }
+      return o;
+    }
+  };
+  Circle circle_a() const { return {rA, rB, hB * sX - b0, y0, cZ * cZ, sX * sX}; }
+  Circle circle_b() const { return {rB, rA, hA * sX - X0, y0, cZ * cZ, sX * sX}; }
+  // A's side normal cZ x - sX z, turned towards A's centre (from B's).
+  Vec3 nA_signed() const {
+    const Vec3 n = cZ * x - sX * z;
+    return cZ * X0 - sX * Z0 >= 0 ? n : -n;
   }
 
-  Vec3 candidate(int i) const {
-    switch (i) {
-      case 0: return z;
-      case 1: return -z;
-      case 2: return x;
-      case 3: return -x;
-      case 4: return -y;
-      case 5: return y;
-      case 6: return uA;
-      case 7: return -uA;
-      case 8: return nA;
-      default: return -nA;
-    }
-  }
-
-  // A point of both rectangles of slice yy (the vertex centre of their
-  // common part, A's rectangle clipped by B's four sides), in (X, Z).
+  // A point of both rectangles of slice yy, in (X, Z).
   void common_point(double yy, double& X, double& Z) const {
     const double ka = kA(yy), kb = kB(yy);
+    const double bs = cZ * X0 - sX * Z0;  // b0 with its sign
+    // Rounding of the tests below (a few ulps of the largest term), far
+    // inside the point bound.
+    const double slack = 0x1p-50 * std::max({X0, Z0, hA, hB, rA, rB});
+    auto a_of = [&](double xx, double zz) { return xx * sX + zz * cZ; };
+    auto b_of = [&](double xx, double zz) { return xx * cZ - zz * sX; };
+    // How far (X, Z) is outside A's and B's rectangles (<= 0: inside).
+    auto out_a = [&](double xx, double zz) {
+      return std::max(std::fabs(a_of(xx, zz) - a0) - hA, std::fabs(b_of(xx, zz) - bs) - ka);
+    };
+    auto out_b = [&](double xx, double zz) { return std::max(std::fabs(xx) - kb, std::fabs(zz) - hB); };
     // Cheap first: A's centre clamped into B, then B's centre clamped into
     // A; either is in both whenever the rectangles cross (the usual case).
-    const double slack = 0x1p-40 * (std::fabs(Xp) + std::fabs(Xq) + std::fabs(Zp) + std::fabs(Zq) + LB + ka + kb);
-    const double amin = std::min(ap, aq), amax = std::max(ap, aq);
-    auto in_a = [&](double x, double zz) {
-      const double a = x * sX + zz * cZ, b = x * cZ - zz * sX;
-      return a >= amin - slack && a <= amax + slack && std::fabs(b - b0) <= ka + slack;
-    };
-    X = std::clamp(0.5 * (Xp + Xq), -kb, kb);
-    Z = std::clamp(0.5 * (Zp + Zq), 0.0, LB);
-    if (in_a(X, Z)) return;
+    X = std::min(X0, kb);
+    Z = std::min(Z0, hB);
+    if (out_a(X, Z) <= slack) return;
     {
-      const double zc = 0.5 * LB;
-      const double a = std::clamp(zc * cZ, amin, amax), b = std::clamp(-zc * sX, b0 - ka, b0 + ka);
-      const double x = a * sX + b * cZ, zz = a * cZ - b * sX;
-      if (std::fabs(x) <= kb + slack && zz >= -slack && zz <= LB + slack) {
-        X = std::clamp(x, -kb, kb), Z = std::clamp(zz, 0.0, LB);
+      const double a = std::clamp(0.0, a0 - hA, a0 + hA), b = std::clamp(0.0, bs - ka, bs + ka);
+      const double xx = a * sX + b * cZ, zz = a * cZ - b * sX;
+      if (out_b(xx, zz) <= slack) {
+        X = std::clamp(xx, -kb, kb), Z = std::clamp(zz, -hB, hB);
         return;
       }
     }
+    // A's rectangle clipped by B's four sides (Sutherland-Hodgman); the
+    // centre of the vertices.
     double buf[2][2][8];
     double* px = buf[0][0];
     double* pz = buf[0][1];
     double* qx = buf[1][0];
     double* qz = buf[1][1];
+    const double ux = hA * sX, uz = hA * cZ, nx = ka * cZ, nz = -ka * sX;
+    const double cx = X0, cz = Z0;
+    double vx[8], vz[8];  // A's corners, then B's
+    vx[0] = cx + ux + nx, vz[0] = cz + uz + nz;
+    vx[1] = cx - ux + nx, vz[1] = cz - uz + nz;
+    vx[2] = cx - ux - nx, vz[2] = cz - uz - nz;
+    vx[3] = cx + ux - nx, vz[3] = cz + uz - nz;
+    vx[4] = kb, vz[4] = hB;
+    vx[5] = -kb, vz[5] = hB;
+    vx[6] = -kb, vz[6] = -hB;
+    vx[7] = kb, vz[7] = -hB;
     int n = 4;
-    const double nx = cZ * ka, nz = -sX * ka;
-    px[0] = Xp + nx, pz[0] = Zp + nz;
-    px[1] = Xq + nx, pz[1] = Zq + nz;
-    px[2] = Xq - nx, pz[2] = Zq - nz;
-    px[3] = Xp - nx, pz[3] = Zp - nz;
-    // Clip by X <= kb, -X <= kb, Z <= LB, -Z <= 0 (Sutherland-Hodgman).
+    for (int i = 0; i < 4; ++i) px[i] = vx[i], pz[i] = vz[i];
     for (int side = 0; side < 4 && n > 0; ++side) {
       const bool on_x = side < 2;
       const double sign = (side & 1) ? -1.0 : 1.0;
-      const double bound = side == 0 || side == 1 ? kb : (side == 2 ? LB : 0.0);
+      const double bound = on_x ? kb : hB;
       const double* pa = on_x ? px : pz;
       int m = 0;
       double vi = sign * pa[0] - bound;
@@ -261,16 +269,22 @@ struct Frame {
       std::swap(px, qx);
       std::swap(pz, qz);
     }
-    if (n == 0) {
-      // Touching to rounding: A's centre clamped into B's rectangle.
-      X = std::clamp(0.5 * (Xp + Xq), -kb, kb);
-      Z = std::clamp(0.5 * (Zp + Zq), 0.0, LB);
-      return;
+    if (n > 0) {
+      double sx = 0, sz = 0;
+      for (int i = 0; i < n; ++i) sx += px[i], sz += pz[i];
+      X = std::clamp(sx / n, -kb, kb);
+      Z = std::clamp(sz / n, -hB, hB);
+      if (out_a(X, Z) <= slack) return;
     }
-    double sx = 0, sz = 0;
-    for (int i = 0; i < n; ++i) sx += px[i], sz += pz[i];
-    X = std::clamp(sx / n, -kb, kb);
-    Z = std::clamp(sz / n, 0.0, LB);
+    // Touching to rounding (the rectangles share a vertex or an edge): the
+    // corner of one that is least outside the other.
+    double worst = kInf;
+    for (int i = 0; i < 8; ++i) {
+      const double o = i < 4 ? out_b(vx[i], vz[i]) : out_a(vx[i], vz[i]);
+      if (o < worst) worst = o, X = vx[i], Z = vz[i];
+    }
+    X = std::clamp(X, -kb, kb);
+    Z = std::clamp(Z, -hB, hB);
   }
 };
 
@@ -334,57 +348,81 @@ bool slices_meet(const Frame& f, double tol, double& ybest) {
   return best <= tol;
 }
 
-Contact scaled(const Cylinder& a, const Cylinder& b, bool want_contact, const CylinderPairOptions& opt) {
+Contact scaled(const Cylinder& a, const Axis& ax_a, const Cylinder& b, const Axis& ax_b, bool want_contact,
+               const CylinderPairOptions& opt) {
   // Roles: B (the frame) is the first in RoleKey order.
   const bool b_is_frame = first(RoleKey(b), RoleKey(a));
-  const Cylinder& A = b_is_frame ? a : b;
-  const Cylinder& B = b_is_frame ? b : a;
-  const Frame f(A, B, opt);
+  const Frame f = b_is_frame ? Frame(a, ax_a, b, ax_b, opt) : Frame(b, ax_b, a, ax_a, opt);
   Contact out;
   if (!(f.lo <= f.hi)) return out;  // the axes' lines more than rA + rB apart
   // Early-outs: each term bounded below over all slices (k <= r); the cap
-  // terms are the two false-positive planes.
-  const double ka_max = f.rA, kb_max = f.rB;
-  for (int j = 0; j < f.nterms; ++j)
-    if (f.t[j].c - f.t[j].al * ka_max - f.t[j].be * kb_max > 0) return out;
-  const double scene = std::max({max_abs(A.p), max_abs(A.q), max_abs(B.p), max_abs(B.q), A.r, B.r});
+  // terms are the two false-positive planes. Their negatives are the
+  // overlaps along -z, -x, -+u_A and -+n_A.
+  double o[5];
+  for (int j = 0; j < 4; ++j) {
+    o[j] = -(f.t[j].c - f.t[j].al * f.rA - f.t[j].be * f.rB);
+    if (o[j] < 0) return out;
+  }
+  o[4] = f.rA + f.rB - f.y0;  // along -y
+  const double scene = std::max({f.X0, f.y0, f.Z0, f.hA, f.hB, f.rA, f.rB});
   double ys = 0;
-  if (!slices_meet(f, 0x1p-46 * scene, ys)) return out;
+  if (!slices_meet(f, 0x1p-48 * scene, ys)) return out;
   out.hit = true;
   if (!want_contact) return out;
   double X, Z;
   f.common_point(ys, X, Z);
   out.point = f.origin + (X * f.x + ys * f.y + Z * f.z);
-  double o[10];
-  f.overlaps(o);
+  // The normal: the best of the fixed directions -z, -x, -+u_A, -+n_A, -y and
+  // the two great circles of side normals (side of A against B's rim or side,
+  // side of B against A's), each minimised by Newton on the angle from the
+  // direction between the axes. -y is on both circles.
   int best = 0;
-  for (int i = 1; i < 10; ++i)
-    if (o[i] < o[best]) best = i;
-  Vec3 n = f.candidate(best);
+  for (int j = 1; j < 5; ++j)
+    if (o[j] < o[best]) best = j;
   double depth = o[best];
-  // Then the two great circles of side normals (side of A against B's
-  // rim or side, side of B against A's): Newton on the angle from the
-  // best fixed candidate on each, and the radial direction between the
-  // axes (the side-against-side normal of nearly parallel axes, which the
-  // frame's x and y miss).
+  Vec3 n;
+  const double sa0 = f.a0 >= 0 ? 1.0 : -1.0;
+  switch (best) {
+    case 0: n = -f.z; break;
+    case 1: n = -f.x; break;
+    case 2: n = -sa0 * f.uA; break;
+    case 3: n = -f.nA_signed(); break;
+    default: n = -f.y; break;
+  }
   {
-    // Perpendicular to u_A: candidates -y (c = -1), +-nA (s = +-1).
-    double c = -1, s = 0;
-    if (o[8] < std::min(o[9], o[4])) c = 0, s = 1;
-    else if (o[9] < o[4]) c = 0, s = -1;
-    const double oa = f.circle_min(true, c, s);
-    if (oa < depth) depth = oa, n = normalized(c * f.y + s * f.nA);
-    // Perpendicular to u_B: start at the radial direction towards B.
-    const double Xm = 0.5 * (f.Xp + f.Xq), rl = std::sqrt(Xm * Xm + f.y0 * f.y0);
-    double cb = -1, sb = 0;
-    if (rl > 0) cb = -Xm / rl, sb = -f.y0 / rl;
-    const double ob = f.circle_min(false, cb, sb);
-    if (ob < depth) depth = ob, n = normalized(cb * f.x + sb * f.y);
+    const Frame::Circle ca = f.circle_a(), cb = f.circle_b();
+    auto start = [&](const Frame::Circle& c, double& P, double& Q) {
+      const double w = std::max(-c.K, 0.0), l = std::sqrt(f.y0 * f.y0 + w * w);
+      if (l > 0) P = f.y0 / l, Q = w / l;
+      else P = 1, Q = 0;
+    };
+    double P, Q;
+    start(ca, P, Q);
+    const double da = ca.min(P, Q, opt.newton_steps);
+    if (da < depth) depth = da, n = -normalized(P * f.y + Q * f.nA_signed());
+    start(cb, P, Q);
+    const double db = cb.min(P, Q, opt.newton_steps);
+    if (db < depth) depth = db, n = -normalized(P * f.y + Q * f.x);
   }
   out.depth = std::max(depth, 0.0);
-  // The normal points from A to B; A is the caller's a unless b is the frame.
+  // The normal points from A to B; A is the caller's a unless a is the frame.
   out.normal = b_is_frame ? n : -n;
   return out;
+}
+
+// A cylinder's axis in the scaled scene: the direction from the caller's
+// numbers whenever q - p and its length are finite (the scaled difference can underflow and
+// lose it: a disk of radius DBL_MAX and subnormal thickness), else from the
+// scaled ones; bit-identical to the scaled computation wherever neither
+// overflows or underflows.
+Axis axis_of(const Cylinder& c, const SceneScale& sc) {
+  const Vec3 d = c.q - c.p;
+  if (is_finite(d)) {
+    const UnitAndLength ul(d);
+    if (std::isfinite(ul.len)) return {ul.u, 0.5 * sc.in(ul.len)};
+  }
+  const UnitAndLength ul(sc.in(c.q) - sc.in(c.p));
+  return {ul.u, 0.5 * ul.len};
 }
 
 }  // namespace
@@ -392,7 +430,7 @@ Contact scaled(const Cylinder& a, const Cylinder& b, bool want_contact, const Cy
 Contact cylinder_pair(const Cylinder& a, const Cylinder& b, bool want_contact, const CylinderPairOptions& opt) {
   if (!is_valid(a) || !is_valid(b)) return {};
   const SceneScale sc(std::max(largest(a), largest(b)));
-  Contact out = scaled(sc.in(a), sc.in(b), want_contact, opt);
+  Contact out = scaled(sc.in(a), axis_of(a, sc), sc.in(b), axis_of(b, sc), want_contact, opt);
   if (out.hit) {
     out.point = sc.out(out.point);
     out.depth = std::min(sc.out(out.depth), std::numeric_limits<double>::max());

@@ -22,6 +22,8 @@ struct CylinderPairOptions {
   /// The common perpendicular as u_B x (u_A -+ u_B), which keeps its
   /// digits at small angles (else the plain u_B x u_A).
   bool accurate_frame = true;
+  /// Newton steps on each great circle of side normals (contact only).
+  int newton_steps = 2;
 };
 
 /// The query with the given parts. `want_contact` false: only `hit` is set.
