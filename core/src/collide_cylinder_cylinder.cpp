@@ -131,7 +131,8 @@ struct Frame {
   }
   double kB(double yy) const { return std::sqrt(std::max(0.0, (rB - yy) * (rB + yy))); }
 
-  // G(y) and the slope of its active term (+-inf at the ends of [lo, hi]).
+  // G(y) and, where G > 0, the slope of its active term (+-inf at the ends
+  // of [lo, hi]).
   double eval(double yy, double& slope) const {
     const double ka = kA(yy), kb = kB(yy);
     double g = -kInf;
@@ -141,6 +142,7 @@ struct Frame {
       if (v > g) g = v, best = j;
     }
     slope = 0;
+    if (g <= 0) return g;  // decided: no slope needed
     if (t[best].al != 0) slope += t[best].al * ((yy - y0) / ka);
     if (t[best].be != 0) slope += t[best].be * (yy / kb);
     return g;
@@ -157,34 +159,51 @@ struct Frame {
   // 1 - sX^2 Q^2.
   struct Circle {
     double R1, R2, K, y0, c2, s2;
-    double f(double P, double Q, double& d1, double& d2) const {
-      const double S = std::sqrt(P * P + c2 * Q * Q);
-      if (!(S > 0)) {  // cZ = 0 at Q = 1: a kink (rim against side); no Newton step from here
-        d1 = y0, d2 = 0;
-        return R1 + K * Q - y0 * P;
-      }
-      const double iS = 1 / S, pq = P * Q;
-      d1 = -R2 * s2 * pq * iS + K * P + y0 * Q;
-      d2 = -R2 * s2 * iS * ((P * P - Q * Q) + s2 * pq * pq * iS * iS) - K * Q + y0 * P;
+    double value(double P, double Q, double& S) const {
+      S = std::sqrt(P * P + c2 * Q * Q);
       return R1 + R2 * S + K * Q - y0 * P;
     }
+    // The Newton step in the angle at (P, Q): -f' / f'', both multiplied by
+    // S^3 (one division); a fixed step downhill where f'' <= 0, and towards
+    // P > 0 from the kink S = 0 (cZ = 0 at Q = 1: rim against side).
+    double newton_step(double P, double Q, double S) const {
+      if (!(S > 0)) return -0.25;
+      const double S2 = S * S, S3 = S2 * S, pq = P * Q;
+      const double d1 = -R2 * s2 * pq * S2 + (K * P + y0 * Q) * S3;
+      const double d2 = -R2 * s2 * ((P * P - Q * Q) * S2 + s2 * pq * pq) + (y0 * P - K * Q) * S3;
+      const double step = d2 > 0 ? -d1 / d2 : (d1 > 0 ? -0.25 : 0.25);
+      return std::clamp(step, -0.5, 0.5);
+    }
+    // A lower bound of f on the quarter circle from S >= P: R1 plus the
+    // minimum of the linear (R2 - y0) P + K Q there.
+    double lower_bound() const {
+      const double a = R2 - y0, b = K;
+      return a < 0 && b < 0 ? -kInf : R1 + std::min(a, b);
+    }
     // Newton on the angle from (P, Q), each step kept only if it lowers f
-    // (halved once otherwise), kept in the quadrant.
-    double min(double& P, double& Q, int steps) const {
-      double d1, d2;
-      double o = f(P, Q, d1, d2);
+    // (halved once otherwise), kept in the quadrant. The rotation by the
+    // step is the rational one (tan of half the angle), unit to rounding
+    // without a square root.
+    double min(double& P, double& Q, double end_q1, int steps) const {
+      double S;
+      double o = value(P, Q, S);
+      // Or an end of the quadrant, if lower (their values are known).
+      const double end_p1 = R1 + R2 - y0;
+      if (end_p1 < o || end_q1 < o) {
+        if (end_p1 <= end_q1) P = 1, Q = 0, o = end_p1, S = 1;
+        else P = 0, Q = 1, o = end_q1, S = std::sqrt(c2);
+      }
       for (int it = 0; it < steps; ++it) {
-        double step = d2 > 0 ? -d1 / d2 : (d1 > 0 ? -0.25 : 0.25);
-        step = std::clamp(step, -0.5, 0.5);
+        double t = 0.5 * newton_step(P, Q, S);
         bool moved = false;
-        for (int k = 0; k < 2 && !moved; ++k, step *= 0.5) {
-          const double il = 1 / std::sqrt(1 + step * step);
-          double P2 = (P - Q * step) * il, Q2 = (Q + P * step) * il;
+        for (int k = 0; k < 2 && !moved; ++k, t *= 0.5) {
+          const double w = 1 / (1 + t * t), cr = (1 - t * t) * w, sr = 2 * t * w;
+          double P2 = P * cr - Q * sr, Q2 = Q * cr + P * sr;
           if (P2 < 0) P2 = 0, Q2 = 1;  // past an end of the quadrant: the end
           if (Q2 < 0) P2 = 1, Q2 = 0;
-          double e1, e2;
-          const double o2 = f(P2, Q2, e1, e2);
-          if (o2 < o) P = P2, Q = Q2, o = o2, d1 = e1, d2 = e2, moved = true;
+          double S2;
+          const double o2 = value(P2, Q2, S2);
+          if (o2 < o) P = P2, Q = Q2, o = o2, S = S2, moved = true;
         }
         if (!moved) break;
       }
@@ -391,18 +410,26 @@ Contact scaled(const Cylinder& a, const Axis& ax_a, const Cylinder& b, const Axi
   }
   {
     const Frame::Circle ca = f.circle_a(), cb = f.circle_b();
+    // Each circle from the direction between the axes in its plane (the
+    // answer for parallel axes: from the radial part y0 and the linear
+    // coefficient -K), unless a lower bound says it cannot beat the depth
+    // found.
     auto start = [&](const Frame::Circle& c, double& P, double& Q) {
       const double w = std::max(-c.K, 0.0), l = std::sqrt(f.y0 * f.y0 + w * w);
-      if (l > 0) P = f.y0 / l, Q = w / l;
+      if (l > 0) P = f.y0 * (1 / l), Q = w * (1 / l);
       else P = 1, Q = 0;
     };
     double P, Q;
-    start(ca, P, Q);
-    const double da = ca.min(P, Q, opt.newton_steps);
-    if (da < depth) depth = da, n = -normalized(P * f.y + Q * f.nA_signed());
-    start(cb, P, Q);
-    const double db = cb.min(P, Q, opt.newton_steps);
-    if (db < depth) depth = db, n = -normalized(P * f.y + Q * f.x);
+    if (ca.lower_bound() < depth) {
+      start(ca, P, Q);
+      const double da = ca.min(P, Q, o[3], opt.newton_steps);
+      if (da < depth) depth = da, n = -normalized(P * f.y + Q * f.nA_signed());
+    }
+    if (cb.lower_bound() < depth) {
+      start(cb, P, Q);
+      const double db = cb.min(P, Q, o[1], opt.newton_steps);
+      if (db < depth) depth = db, n = -normalized(P * f.y + Q * f.x);
+    }
   }
   out.depth = std::max(depth, 0.0);
   // The normal points from A to B; A is the caller's a unless a is the frame.
