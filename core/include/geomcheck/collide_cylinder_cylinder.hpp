@@ -23,7 +23,7 @@
 //      slice is exact: the shapes meet iff some slice's two rectangles meet,
 //      and by the separating axes of two rectangles that is
 //          min over y of G(y) <= 0,
-//      G(y) = max of eight terms c_i - a_i k_A(y) - b_i k_B(y), a_i, b_i >= 0,
+//      G(y) = max of four terms c_i - a_i k_A(y) - b_i k_B(y), a_i, b_i >= 0,
 //      k the half widths (concave in y), so G is convex: a one-dimensional
 //      convex minimisation over the y range where both slices exist. The
 //      first slice tried is the engine's: where the scaled circle's section
@@ -35,13 +35,22 @@
 //      keeps y perpendicular to both axes to rounding at every angle (a
 //      plain one loses digits as 1 / theta; see the issue notes).
 //
+// The frame is canonical: origin B's centre, and the signs of x, y, z and
+// of u_A chosen so that A's centre and direction have non-negative
+// coordinates. Every representation of the same pair (caps swapped,
+// reflections, point inversion, power-of-two scalings) runs the same numbers.
+//
 // `collide` returns a CONSISTENT contact, not the minimum translation:
-// `normal` (unit, from A towards B) is the best of the candidate separating
-// directions (both axes, the common perpendicular, the two in-slice side
-// normals, each both ways), `depth` the overlap of the shapes along it
+// `normal` (unit, from A towards B) is the best of the fixed directions
+// (-z, -x, -y, -+u_A, -+n_A towards B) and the minima of the overlap on the
+// two great circles of side normals (perpendicular to u_A: A's side
+// against B; perpendicular to u_B: B's side against A), two safeguarded
+// Newton steps each; `depth` the overlap of the shapes along it
 // (h_A(n) + h_B(-n), an upper bound of the penetration depth), and `point`
-// the centre of the two rectangles' common part in the deepest slice found,
-// a point of both shapes up to rounding.
+// the centre of the two rectangles' common part in the slice found (the
+// corner of one least outside the other when they only touch), a point of
+// both shapes up to rounding. Rim against rim (a normal on neither circle)
+// is where the depth exceeds the penetration depth most.
 //
 // Scale: the scene is rescaled by an exact power of two when its magnitude
 // leaves [2^-100, 2^100], so every finite input is answered.
