@@ -10,6 +10,7 @@
 #include "geomcheck/collide_cylinder_capsule.hpp"
 #include "geomcheck/collide_cylinder_obb.hpp"
 #include "geomcheck/collide_cylinder_sphere.hpp"
+#include "geomcheck/collide_cylinder_cylinder.hpp"
 #include "geomcheck/collide_cylinder_triangle.hpp"
 #include "geomcheck/sweep_sphere_cylinder.hpp"
 #include "geomcheck/oracles/cast_segment_cylinder.hpp"
@@ -272,6 +273,7 @@ Answer production_answer(const Cylinder& a, const Capsule& b) { return from_cont
 Answer production_answer(const MovingSphere& a, const Cylinder& b) { return from_cast(sweep(a, b)); }
 Answer production_answer(const Cylinder& a, const Obb& b) { return from_contact(collide(a, b)); }
 Answer production_answer(const Cylinder& a, const Triangle& b) { return from_contact(collide(a, b)); }
+Answer production_answer(const Cylinder& a, const Cylinder& b) { return from_contact(collide(a, b)); }
 
 namespace {
 
@@ -350,6 +352,7 @@ std::vector<Mark> oracle_witness(const Cylinder& a, const Sphere& b, const Vec3*
 std::vector<Mark> oracle_witness(const Cylinder& a, const Capsule& b, const Vec3* hint) { return collide_witness(a, b, hint); }
 std::vector<Mark> oracle_witness(const Cylinder& a, const Obb& b, const Vec3* hint) { return collide_witness(a, b, hint); }
 std::vector<Mark> oracle_witness(const Cylinder& a, const Triangle& b, const Vec3* hint) { return collide_witness(a, b, hint); }
+std::vector<Mark> oracle_witness(const Cylinder& a, const Cylinder& b, const Vec3* hint) { return collide_witness(a, b, hint); }
 
 std::vector<Mark> oracle_witness(const Segment& s, const Cylinder& c, const Vec3*) {
   if (!is_valid(s) || !is_valid(c)) return {{Mark::Kind::PointNormal, kNowhere, Vec3{}, 0, kOracleColour, "oracle: invalid input"}};
@@ -395,5 +398,6 @@ template std::string views(const Cylinder&, const Capsule&, const std::string&, 
 template std::string views(const MovingSphere&, const Cylinder&, const std::string&, const std::vector<Mark>&, const Answer*);
 template std::string views(const Cylinder&, const Obb&, const std::string&, const std::vector<Mark>&, const Answer*);
 template std::string views(const Cylinder&, const Triangle&, const std::string&, const std::vector<Mark>&, const Answer*);
+template std::string views(const Cylinder&, const Cylinder&, const std::string&, const std::vector<Mark>&, const Answer*);
 
 }  // namespace geomcheck::draw

@@ -25,6 +25,7 @@ Answer production_answer(const Cylinder& a, const Capsule& b);
 Answer production_answer(const MovingSphere& a, const Cylinder& b);
 Answer production_answer(const Cylinder& a, const Obb& b);
 Answer production_answer(const Cylinder& a, const Triangle& b);
+Answer production_answer(const Cylinder& a, const Cylinder& b);
 /// Any implementation's answer; `who` heads the label ("production", a variant's name).
 Answer answer_of(const Contact& k, const std::string& who);
 Answer answer_of(const CastHit& h, const std::string& who);
@@ -55,6 +56,7 @@ std::vector<Mark> oracle_witness(const Cylinder& a, const Capsule& b, const Vec3
 std::vector<Mark> oracle_witness(const MovingSphere& a, const Cylinder& b, const Vec3* hint = nullptr);
 std::vector<Mark> oracle_witness(const Cylinder& a, const Obb& b, const Vec3* hint = nullptr);
 std::vector<Mark> oracle_witness(const Cylinder& a, const Triangle& b, const Vec3* hint = nullptr);
+std::vector<Mark> oracle_witness(const Cylinder& a, const Cylinder& b, const Vec3* hint = nullptr);
 
 /// Three views of shapes A (blue) and B (orange), production's answer
 /// (red), the oracle's witness (green) and `extra` marks, fitted to all of

@@ -11,7 +11,7 @@ std::string v3(Vec3 v) {
   return b;
 }
 
-/// A collide answer (cylinder against a sphere, capsule, box or triangle); `note` follows the depth.
+/// A collide answer (cylinder against a sphere, capsule, box, triangle or cylinder); `note` follows the depth.
 PeerAnswer contact_answer(const oracles::PeerContact& r, const char* note = "") {
   PeerAnswer p;
   p.supported = true;
@@ -93,6 +93,10 @@ PeerAnswer peer(const CylinderTriangleCase& c) {
       contact_answer(oracles::fcl_collide(c.a, c.b),
                      " (FCL's mesh narrow phase shapeTriangleIntersect; libccd MPR estimate, not the minimum)"),
       oracles::fcl_distance(c.a, c.b));
+}
+
+PeerAnswer peer(const CylinderCylinderCase& c) {
+  return with_distance(contact_answer(oracles::fcl_collide(c.a, c.b), " (libccd MPR estimate, not the minimum)"), oracles::fcl_distance(c.a, c.b));
 }
 
 PeerAnswer peer(const SweepCylinderCase& c) {

@@ -35,12 +35,15 @@ PeerAnswer peer(const CylinderObbCase& c);
 /// fcl_collide(Cylinder, Triangle): FCL's per-triangle mesh narrow phase (shapeTriangleIntersect;
 /// fcl::collide has no cylinder/triangle pair), libccd's MPR, depth not the minimum (see fcl_adapter.hpp).
 PeerAnswer peer(const CylinderTriangleCase& c);
+/// fcl_collide(Cylinder, Cylinder): libccd's MPR on the two cylinders, depth not the minimum (see fcl_adapter.hpp).
+PeerAnswer peer(const CylinderCylinderCase& c);
 
 // Production's evaluation with FCL's answer scored against the same truth.
 inline const CylinderSphereImpl& production(const CylinderSphereCase&) { return kProductionCylinderSphere; }
 inline const CylinderCapsuleImpl& production(const CylinderCapsuleCase&) { return kProductionCylinderCapsule; }
 inline const CylinderObbImpl& production(const CylinderObbCase&) { return kProductionCylinderObb; }
 inline const CylinderTriangleImpl& production(const CylinderTriangleCase&) { return kProductionCylinderTriangle; }
+inline const CylinderCylinderImpl& production(const CylinderCylinderCase&) { return kProductionCylinderCylinder; }
 inline const CastSegmentCylinderImpl& production(const SegmentCylinderCase&) { return kProductionCastSegmentCylinder; }
 inline const SweepSphereCylinderImpl& production(const SweepCylinderCase&) { return kProductionSweepSphereCylinder; }
 

@@ -555,6 +555,7 @@ TEST(Corpus, SeedsParseAndMatchTheirQuery) {
   }
   EXPECT_GE(per_query["collide_cylinder_sphere"], 8);
   EXPECT_GE(per_query["cast_segment_cylinder"], 8);
+  EXPECT_GE(per_query["collide_cylinder_cylinder"], 8);
   // Every seed folder is a registered query's, or the Delaunay query's
   // point sets (their own format and test: test_pointset_file).
   for (const auto& dir : fs::directory_iterator(kCorpora / "seeds")) {

@@ -143,6 +143,37 @@ rc::Gen<std::pair<CylinderObbCase, std::string>> cylinder_obb_case();
 /// the contact 2^-1..2^-25 of the way towards the cylinder's centre). Scales
 /// 2^-20..2^20, optionally far from the origin.
 rc::Gen<std::pair<CylinderTriangleCase, std::string>> cylinder_triangle_case();
+/// Cylinder/cylinder pairs. Modes, by tag:
+///   random[-through]              random poses in scenes of 2^-60..2^60
+///                                 (some far from the origin; disks and
+///                                 needles among them); -through: B's middle
+///                                 inside A;
+///   [anti-]parallel-side[-ANGLE-radial|tangential]  side by side, the axes
+///                                 rA + rB (+ gap) apart, ANGLE 1e-4, 1e-8,
+///                                 1e-12 or 1e-16 radians from parallel, made
+///                                 exactly (a coordinate that is zero at one
+///                                 end: nothing rounds it away);
+///   coaxial|stacked|stacked-rim[-anti][-ANGLE]  B's cap on A's top cap plane
+///                                 (exactly, k ulps off, a gap or overlapping),
+///                                 on the axis, beside it, or rA + rB beside
+///                                 it (the rims meet at a point);
+///   perp-side-side|side-on-cap|cap-on-side|through  perpendicular crossings;
+///   cap-|side-|rim-on-<spot>      B's cap, side or rim at A's rim
+///                                 (rim-above, rim-side, rim-diag), a cap or
+///                                 its side (touching +- ulps, a gap either
+///                                 way);
+///   ratio-...                     the same with both cylinders disks or
+///                                 needles (length / radius 1e-6..1e6);
+///   exact-...                     exact integer constructions (parallel
+///                                 sides rA + rB apart, stacked caps, rims
+///                                 meeting, perpendicular sides, a side on a
+///                                 cap, a cap tangent to a side, zero radii),
+///                                 exact moves; -touch / -ulps-in / -ulps-out.
+/// Suffixes: -touch, -ulps-in / -ulps-out (k ulps), -gap / -deep. Exact
+/// moves (permutation, flips, 2^-60..2^60) keep ulp-sized features; other
+/// constructions are also placed by a rounded rigid motion. Either cylinder
+/// comes first.
+rc::Gen<std::pair<CylinderCylinderCase, std::string>> cylinder_cylinder_case();
 /// Raw doubles with NaN, +-inf, subnormals, zeros, huge and tiny values.
 rc::Gen<double> wild_double();
 /// Any shapes, valid or not, from wild doubles (robustness).
@@ -156,5 +187,7 @@ rc::Gen<CylinderObbCase> wild_cylinder_obb();
 /// Wild doubles everywhere; a quarter of the triangles repeat a vertex
 /// (segment and point triangles).
 rc::Gen<CylinderTriangleCase> wild_cylinder_triangle();
+/// Wild doubles everywhere; a quarter of the pairs keep one ordinary cylinder.
+rc::Gen<CylinderCylinderCase> wild_cylinder_cylinder();
 
 }  // namespace geomcheck::gen

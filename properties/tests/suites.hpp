@@ -5,6 +5,7 @@
 #include "generators.hpp"
 #include "geomcheck/cast_segment_cylinder.hpp"
 #include "geomcheck/collide_cylinder_capsule.hpp"
+#include "geomcheck/collide_cylinder_cylinder.hpp"
 #include "geomcheck/collide_cylinder_obb.hpp"
 #include "geomcheck/collide_cylinder_sphere.hpp"
 #include "geomcheck/collide_cylinder_triangle.hpp"
@@ -60,6 +61,14 @@ template <> struct Suite<QueryId::collide_cylinder_triangle> {
   static rc::Gen<std::pair<Case, std::string>> targeted() { return gen::cylinder_triangle_case(); }
   static rc::Gen<Case> wild() { return gen::wild_cylinder_triangle(); }
   static bool hit(const Case& c, const Impl& impl = kProductionCylinderTriangle) { return impl.overlap(c.a, c.b); }
+};
+
+template <> struct Suite<QueryId::collide_cylinder_cylinder> {
+  using Case = CylinderCylinderCase;
+  using Impl = CylinderCylinderImpl;
+  static rc::Gen<std::pair<Case, std::string>> targeted() { return gen::cylinder_cylinder_case(); }
+  static rc::Gen<Case> wild() { return gen::wild_cylinder_cylinder(); }
+  static bool hit(const Case& c, const Impl& impl = kProductionCylinderCylinder) { return impl.overlap(c.a, c.b); }
 };
 
 /// Half wild raw doubles (NaN, inf, subnormal, huge), half targeted cases.

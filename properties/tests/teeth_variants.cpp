@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "geomcheck/detail/cylinder_pair.hpp"
 #include "geomcheck/detail/obb_stages.hpp"
 #include "geomcheck/detail/sweep_stages.hpp"
 #include "geomcheck/detail/triangle_stages.hpp"
@@ -202,5 +203,30 @@ const CylinderTriangleImpl kTriangleNoCapStage = {
     "triangle-without-cap-stage",
     [](const Cylinder& c, const Triangle& t) { return detail::overlap_with_stage(c, t, detail::TriCapStage::None); },
     [](const Cylinder& c, const Triangle& t) { return detail::collide_with_stage(c, t, detail::TriCapStage::None); }};
+
+namespace {
+detail::CylinderPairOptions without(int part) {
+  detail::CylinderPairOptions o;
+  if (part == 0) o.false_positive_planes = false;
+  if (part == 1) o.parallel_branch = false;
+  if (part == 2) o.accurate_frame = false;
+  return o;
+}
+}  // namespace
+
+const CylinderCylinderImpl kCylinderNoPlanes = {
+    "cylinder-pair-without-false-positive-planes",
+    [](const Cylinder& a, const Cylinder& b) { return detail::cylinder_pair(a, b, false, without(0)).hit; },
+    [](const Cylinder& a, const Cylinder& b) { return detail::cylinder_pair(a, b, true, without(0)); }};
+
+const CylinderCylinderImpl kCylinderNoParallelBranch = {
+    "cylinder-pair-without-parallel-branch",
+    [](const Cylinder& a, const Cylinder& b) { return detail::cylinder_pair(a, b, false, without(1)).hit; },
+    [](const Cylinder& a, const Cylinder& b) { return detail::cylinder_pair(a, b, true, without(1)); }};
+
+const CylinderCylinderImpl kCylinderPlainFrame = {
+    "cylinder-pair-plain-frame",
+    [](const Cylinder& a, const Cylinder& b) { return detail::cylinder_pair(a, b, false, without(2)).hit; },
+    [](const Cylinder& a, const Cylinder& b) { return detail::cylinder_pair(a, b, true, without(2)); }};
 
 }  // namespace geomcheck::teeth

@@ -32,4 +32,15 @@ extern const CylinderObbImpl kBoxTalkRays;
 /// steps 1 and 2 only), though it may still cut into the cap's disc.
 extern const CylinderTriangleImpl kTriangleNoCapStage;
 
+/// collide_cylinder_cylinder without its false-positive planes: every slice
+/// holds A to B's cap planes pushed out by A's full reach r_A sin theta (and
+/// B to A's by r_B sin theta), the augmented cylinders' square ends.
+extern const CylinderCylinderImpl kCylinderNoPlanes;
+/// collide_cylinder_cylinder without its parallel-axis branch: the general
+/// frame from the common perpendicular, which is zero for parallel axes.
+extern const CylinderCylinderImpl kCylinderNoParallelBranch;
+/// collide_cylinder_cylinder with the plain frame u_B x u_A (the common
+/// perpendicular loses digits as 1 / theta near parallel axes).
+extern const CylinderCylinderImpl kCylinderPlainFrame;
+
 }  // namespace geomcheck::teeth

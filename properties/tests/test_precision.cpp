@@ -97,6 +97,7 @@ TEST(precision, collide_cylinder_capsule) { check_table<QueryId::collide_cylinde
 TEST(precision, sweep_sphere_cylinder) { check_table<QueryId::sweep_sphere_cylinder>(); }
 TEST(precision, collide_cylinder_obb) { check_table<QueryId::collide_cylinder_obb>(); }
 TEST(precision, collide_cylinder_triangle) { check_table<QueryId::collide_cylinder_triangle>(); }
+TEST(precision, collide_cylinder_cylinder) { check_table<QueryId::collide_cylinder_cylinder>(); }
 
 }  // namespace
 }  // namespace geomcheck

@@ -40,6 +40,13 @@ TEST(teeth, sweep_talk_one_rim_point) { expect_caught<QueryId::sweep_sphere_cyli
 TEST(teeth, box_cylinder_as_box_capsule) { expect_caught<QueryId::collide_cylinder_obb>(teeth::kBoxAsCapsule); }
 TEST(teeth, box_talk_one_ray_per_plane) { expect_caught<QueryId::collide_cylinder_obb>(teeth::kBoxTalkRays); }
 TEST(teeth, triangle_without_cap_stage) { expect_caught<QueryId::collide_cylinder_triangle>(teeth::kTriangleNoCapStage); }
+TEST(teeth, cylinder_pair_without_false_positive_planes) {
+  expect_caught<QueryId::collide_cylinder_cylinder>(teeth::kCylinderNoPlanes);
+}
+TEST(teeth, cylinder_pair_without_parallel_branch) {
+  expect_caught<QueryId::collide_cylinder_cylinder>(teeth::kCylinderNoParallelBranch);
+}
+TEST(teeth, cylinder_pair_plain_frame) { expect_caught<QueryId::collide_cylinder_cylinder>(teeth::kCylinderPlainFrame); }
 
 }  // namespace
 }  // namespace geomcheck

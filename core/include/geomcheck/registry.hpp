@@ -30,7 +30,9 @@
   X(collide_cylinder_obb, Collide, Cylinder, Obb,                                        \
     "overlap/collide(Cylinder, Obb): exact verdict; penetration depth over the Minkowski patches")  \
   X(collide_cylinder_triangle, Collide, Cylinder, Triangle,                              \
-    "overlap/collide(Cylinder, Triangle): exact verdict; penetration depth over the Minkowski patches")
+    "overlap/collide(Cylinder, Triangle): exact verdict; penetration depth over the Minkowski patches") \
+  X(collide_cylinder_cylinder, Collide, Cylinder, Cylinder,                              \
+    "overlap/collide(Cylinder, Cylinder): exact verdict; consistent contact (depth = overlap along the normal, an upper bound)")
 
 namespace geomcheck {
 

@@ -239,6 +239,13 @@ bool within_gjk_range(const Cylinder& c, const Obb& b) {
   return extent <= kGjkMaxExtent;  // false for NaN too
 }
 
+/// A second cylinder: its end points' offsets and its radius.
+bool within_gjk_range(const Cylinder& c, const Cylinder& k) {
+  const double offsets = std::fmax(max_abs(c.q - c.p), std::fmax(max_abs(k.p - c.p), max_abs(k.q - c.p)));
+  const double extent = std::fmax(offsets, std::fmax(c.r, k.r));
+  return extent <= kGjkMaxExtent;  // false for NaN too
+}
+
 bool within_gjk_range(const Cylinder& c, const Triangle& t) {
   const double offsets = std::fmax(std::fmax(max_abs(c.q - c.p), max_abs(t.a - c.p)),
                                    std::fmax(max_abs(t.b - c.p), max_abs(t.c - c.p)));
@@ -525,7 +532,7 @@ bool fcl_overlap_prepared(const FclCylinderSphere& pair) { return overlap_on(pai
 PeerContact fcl_collide_prepared(const FclCylinderSphere& pair) { return collide_on(pair); }
 PeerDistance fcl_distance_prepared(const FclCylinderSphere& pair) { return distance_on(pair); }
 bool fcl_overlap_prepared(const FclCylinderCylinder& pair) { return overlap_on(pair); }
-PeerContact fcl_collide_prepared(const FclCylinderCylinder& pair) { return collide_on(pair); }
+PeerContact fcl_collide_prepared(const FclCylinderCylinder& pair) { return collide_on(pair, true); }
 PeerDistance fcl_distance_prepared(const FclCylinderCylinder& pair) { return distance_on(pair); }
 bool fcl_overlap_prepared(const FclCylinderCapsule& pair) { return overlap_on(pair); }
 PeerContact fcl_collide_prepared(const FclCylinderCapsule& pair) { return collide_on(pair); }
@@ -694,12 +701,16 @@ const char* refusal(const Cylinder& a, const Obb& b) {
 const char* refusal(const Cylinder& a, const Triangle& b) {
   return is_valid(a) && is_valid(b) ? nullptr : kInvalidInput;
 }
+const char* refusal(const Cylinder& a, const Cylinder& b) {
+  return is_valid(a) && is_valid(b) ? nullptr : kInvalidInput;
+}
 
 /// The converted pair of a cylinder and B.
 template <class B> struct PairOf;
 template <> struct PairOf<Capsule> { using type = FclCylinderCapsule; };
 template <> struct PairOf<Obb> { using type = FclCylinderBox; };
 template <> struct PairOf<Triangle> { using type = FclCylinderTriangle; };
+template <> struct PairOf<Cylinder> { using type = FclCylinderCylinder; };
 
 /// fcl_collide of the pairs that run libccd's MPR: guarded, validated.
 template <class B>
@@ -784,5 +795,9 @@ PeerDistance fcl_distance(const Cylinder& a, const Obb& b) { return guarded_dist
 PeerContact fcl_collide(const Cylinder& a, const Triangle& b) { return guarded_collide(a, b); }
 bool fcl_overlap(const Cylinder& a, const Triangle& b, std::string* error) { return guarded_overlap(a, b, error); }
 PeerDistance fcl_distance(const Cylinder& a, const Triangle& b) { return guarded_distance(a, b); }
+
+PeerContact fcl_collide(const Cylinder& a, const Cylinder& b) { return guarded_collide(a, b); }
+bool fcl_overlap(const Cylinder& a, const Cylinder& b, std::string* error) { return guarded_overlap(a, b, error); }
+PeerDistance fcl_distance(const Cylinder& a, const Cylinder& b) { return guarded_distance(a, b); }
 
 }  // namespace geomcheck::oracles

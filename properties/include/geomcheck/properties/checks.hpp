@@ -59,6 +59,12 @@ struct CylinderTriangleImpl {
   bool (*overlap)(const Cylinder&, const Triangle&);
   Contact (*collide)(const Cylinder&, const Triangle&);
 };
+/// The implementation under test of collide_cylinder_cylinder.
+struct CylinderCylinderImpl {
+  const char* name;
+  bool (*overlap)(const Cylinder&, const Cylinder&);
+  Contact (*collide)(const Cylinder&, const Cylinder&);
+};
 
 extern const CylinderSphereImpl kProductionCylinderSphere;
 extern const CastSegmentCylinderImpl kProductionCastSegmentCylinder;
@@ -66,6 +72,7 @@ extern const CylinderCapsuleImpl kProductionCylinderCapsule;
 extern const SweepSphereCylinderImpl kProductionSweepSphereCylinder;
 extern const CylinderObbImpl kProductionCylinderObb;
 extern const CylinderTriangleImpl kProductionCylinderTriangle;
+extern const CylinderCylinderImpl kProductionCylinderCylinder;
 
 using CylinderSphereCase = QueryTraits<QueryId::collide_cylinder_sphere>::Case;
 using SegmentCylinderCase = QueryTraits<QueryId::cast_segment_cylinder>::Case;
@@ -73,6 +80,7 @@ using CylinderCapsuleCase = QueryTraits<QueryId::collide_cylinder_capsule>::Case
 using SweepCylinderCase = QueryTraits<QueryId::sweep_sphere_cylinder>::Case;
 using CylinderObbCase = QueryTraits<QueryId::collide_cylinder_obb>::Case;
 using CylinderTriangleCase = QueryTraits<QueryId::collide_cylinder_triangle>::Case;
+using CylinderCylinderCase = QueryTraits<QueryId::collide_cylinder_cylinder>::Case;
 
 /// Production held against the oracle on one case: everything a report or a
 /// check needs. Errors are multiples of `scale`; NaN where not applicable.
@@ -110,6 +118,12 @@ struct Evaluation {
   struct PeerScore {
     double depth_err = NAN, normal_err = NAN, point_err = NAN, unit_err = NAN, t_err = NAN;
   } peer;
+  /// Collide queries whose depth is an upper bound rather than the
+  /// penetration depth (collide_cylinder_cylinder): production's depth over
+  /// the certified penetration depth, where the shapes overlap, the
+  /// engine's enclosure of it is within 1% (relative) and it is at least
+  /// 1e-9 * scale (below that, rounding decides the ratio); NaN otherwise.
+  double depth_ratio = NAN;
 };
 
 // `peer` (collide: a contact; cast, sweep: a t), when given, is scored into
@@ -120,6 +134,7 @@ Evaluation evaluate(const CylinderCapsuleCase& c, const CylinderCapsuleImpl& imp
 Evaluation evaluate(const SweepCylinderCase& c, const SweepSphereCylinderImpl& impl = kProductionSweepSphereCylinder, const double* peer_t = nullptr);
 Evaluation evaluate(const CylinderObbCase& c, const CylinderObbImpl& impl = kProductionCylinderObb, const Contact* peer = nullptr);
 Evaluation evaluate(const CylinderTriangleCase& c, const CylinderTriangleImpl& impl = kProductionCylinderTriangle, const Contact* peer = nullptr);
+Evaluation evaluate(const CylinderCylinderCase& c, const CylinderCylinderImpl& impl = kProductionCylinderCylinder, const Contact* peer = nullptr);
 
 /// The oracle's verdict in the words of case files' `oracle-verdict`:
 /// collide queries overlapping / touching / separated, casts hit / miss.
@@ -228,6 +243,33 @@ CheckResult check_metamorphic(const CylinderTriangleCase& c, int move, const Cyl
 CheckResult check_monotone(const CylinderTriangleCase& c, const CylinderTriangleImpl& impl = kProductionCylinderTriangle);
 CheckResult check_robust(const CylinderTriangleCase& c, const CylinderTriangleImpl& impl = kProductionCylinderTriangle);
 CheckResult check_all(const CylinderTriangleCase& c, const CylinderTriangleImpl& impl = kProductionCylinderTriangle);
+
+// --- collide_cylinder_cylinder -------------------------------------------------
+/// Agreement with the engine outside the band; the point in both cylinders;
+/// the depth never below the certified penetration depth by more than the
+/// bound (it is the overlap along the returned normal, an upper bound of the
+/// penetration depth, and need not equal it: see the query's header).
+CheckResult check_oracle(const CylinderCylinderCase& c, const CylinderCylinderImpl& impl = kProductionCylinderCylinder);
+/// overlap == collide.hit; unit normal; depth >= 0 equals the overlap along the normal; no NaN.
+CheckResult check_consistency(const CylinderCylinderCase& c, const CylinderCylinderImpl& impl = kProductionCylinderCylinder);
+/// (A,B) and (B,A): the same verdict (band), the normal flipped and the depth
+/// equal to the bounds; caps swapped (either cylinder): same verdict (band),
+/// same depth to the bound.
+CheckResult check_symmetry(const CylinderCylinderCase& c, const CylinderCylinderImpl& impl = kProductionCylinderCylinder);
+/// As for the other queries, but for a reflection of a scene whose two axes
+/// lie exactly in one plane: there the normal may be the other of a mirror
+/// pair (point bit-identical, depth to the bound); and for any reflection,
+/// a tie: another normal with the point and the depth bit-identical, as good
+/// as the returned one (the overlap along it, exactly, equals the depth).
+CheckResult check_metamorphic(const CylinderCylinderCase& c, int move, const CylinderCylinderImpl& impl = kProductionCylinderCylinder);
+/// A wider or longer cylinder (either one) never turns overlap into separation (outside the band).
+CheckResult check_monotone(const CylinderCylinderCase& c, const CylinderCylinderImpl& impl = kProductionCylinderCylinder);
+CheckResult check_robust(const CylinderCylinderCase& c, const CylinderCylinderImpl& impl = kProductionCylinderCylinder);
+CheckResult check_all(const CylinderCylinderCase& c, const CylinderCylinderImpl& impl = kProductionCylinderCylinder);
+/// Production's depth over the certified penetration depth (Evaluation::depth_ratio):
+/// NaN when the shapes do not overlap, the enclosure is wider than 1% or the
+/// penetration depth is below 1e-9 * scale.
+double depth_ratio(const CylinderCylinderCase& c, const CylinderCylinderImpl& impl = kProductionCylinderCylinder);
 
 /// Number of metamorphic moves understood by check_metamorphic (0..kNumMoves-1).
 inline constexpr int kNumMoves = 6;

@@ -11,6 +11,9 @@
 //            the segment comes within verdict * scale of the surface, tested
 //            exactly with the cylinder grown / shrunk by that much).
 //   depth    |depth - true penetration depth|
+//            (collide_cylinder_cylinder: the depth is an upper bound, the
+//            overlap along the normal; only its shortfall below the true
+//            penetration depth is an error, and it has no normal bound)
 //   normal   overlap measured along production's normal minus the true
 //            penetration depth (>= 0; 0 for a minimal-translation normal);
 //            casts: distance of the normal from the exact outward normal
@@ -60,6 +63,16 @@ constexpr Tolerances tolerances(QueryId id) {
       return {/*verdict*/ 1e-14, /*depth*/ 1e-14, /*normal*/ 1e-14, /*point*/ 1e-14, /*t*/ 0, /*unit*/ 1e-14};
     case QueryId::collide_cylinder_triangle:
       return {/*verdict*/ 1e-14, /*depth*/ 1e-14, /*normal*/ 1e-14, /*point*/ 1e-14, /*t*/ 0, /*unit*/ 1e-14};
+    case QueryId::collide_cylinder_cylinder:
+      // The contact is consistent, not minimal (see the query's header):
+      // depth is the overlap along the returned normal, an upper bound of
+      // the penetration depth. `depth` bounds only how far it may fall BELOW
+      // the certified penetration depth (no direction overlaps less); how
+      // far above is reported (depth / penetration depth, Evaluation::
+      // depth_ratio), not bounded. No normal bound (0: not a metric of this
+      // query): consistency holds depth to the overlap along the normal, to
+      // the depth bound.
+      return {/*verdict*/ 1e-14, /*depth*/ 1e-14, /*normal*/ 0, /*point*/ 1e-14, /*t*/ 0, /*unit*/ 1e-14};
     case QueryId::sweep_sphere_cylinder:
       return {/*verdict*/ 1e-14, /*depth*/ 0, /*normal*/ 1e-14, /*point*/ 1e-12, /*t*/ 1e-12, /*unit*/ 1e-14};
   }

@@ -166,6 +166,17 @@
 //   3.5-4.5 us per distance (median, guarded calls, RelWithDebInfo, shared
 //   two-core machine).
 //
+//
+//   fcl::collide(cylinder, cylinder): FCL 0.7's GJKSolver_libccd has no
+//   closed form for two cylinders either; collide runs the same MPR on the
+//   two cylinders' support functions (the adapter's guarded call, as for
+//   the capsule), the direction from the first cylinder towards the second,
+//   no flip; distance runs libccd's GJK. The contact means what it means
+//   for the capsule (MPR's ray, not the minimal translation); production's
+//   contact is no minimal translation either (an overlap along one of a few
+//   candidate directions, see collide_cylinder_cylinder.hpp), and the
+//   campaign scores both against the certified penetration depth.
+//
 // ---------------------------------------------------------------------------
 // Distance:
 //   fcl::distance with enable_nearest_points and GST_LIBCCD. When the shapes
@@ -508,6 +519,22 @@ bool fcl_overlap(const Cylinder& a, const Triangle& b, std::string* error = null
 /// GJKSolver_libccd::shapeTriangleDistance (libccd's GJK, guarded): > 0
 /// separated, exactly -1 when FCL sees them meet.
 PeerDistance fcl_distance(const Cylinder& a, const Triangle& b);
+
+/// fcl::collide(cylinder, cylinder), num_max_contacts = 1, enable_contact,
+/// GST_LIBCCD (FCL has no closed form for this pair: libccd's MPR on the two
+/// cylinders' support functions, guarded as for the capsule). Normal from
+/// the first cylinder towards the second; depth and normal are MPR's
+/// estimate, not the minimal translation.
+PeerContact fcl_collide(const Cylinder& a, const Cylinder& b);
+
+/// fcl::collide(cylinder, cylinder) with enable_contact = false, GST_LIBCCD,
+/// guarded. false for invalid input, when FCL throws or the guard stopped
+/// it; then `*error` (if given) says why.
+bool fcl_overlap(const Cylinder& a, const Cylinder& b, std::string* error = nullptr);
+
+/// fcl::distance(cylinder, cylinder), enable_nearest_points, GST_LIBCCD
+/// (libccd's GJK, guarded): > 0 separated, exactly -1 when FCL sees them meet.
+PeerDistance fcl_distance(const Cylinder& a, const Cylinder& b);
 
 /// First touch of the moving ball `m` (centre m.c, radius m.r, moving by
 /// m.delta) with the resting cylinder, as far as FCL can tell: hit and t

@@ -1,0 +1,474 @@
+#include "geomcheck/collide_cylinder_cylinder.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "geomcheck/detail/cylinder_pair.hpp"
+#include "geomcheck/detail/frame.hpp"
+
+namespace geomcheck {
+
+namespace detail {
+
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+// The roles: the frame cylinder ("B", its axis is z) comes first in this
+// order, so that (a, b) and (b, a) run the same computation. The keys are
+// invariant under swapping a cylinder's caps, reflections, point inversion
+// and power-of-two scalings (each is a sum of squares), so those keep the
+// roles.
+struct RoleKey {
+  double r, l2, d2;
+  explicit RoleKey(const Cylinder& c) : r(c.r) {
+    const Vec3 e = c.q - c.p;
+    l2 = dot(e, e);
+    d2 = dot(c.p, c.p) + dot(c.q, c.q);
+  }
+};
+bool first(const RoleKey& a, const RoleKey& b) {
+  if (a.r != b.r) return a.r > b.r;
+  if (a.l2 != b.l2) return a.l2 > b.l2;
+  return a.d2 >= b.d2;
+}
+
+// A cylinder's unit axis and half length (in the scaled scene).
+struct Axis {
+  Vec3 u;
+  double half;
+};
+
+// One term of G: c - al * kA(y) - be * kB(y).
+struct Term {
+  double c, al, be;
+};
+
+// The pair in a canonical frame of B: origin B's centre, z along B's axis,
+// y the common perpendicular, x completing the frame. A's centre is at
+// (X0, y0, Z0) and its axis direction is (sX, 0, cZ); the signs of x, y, z
+// and of A's direction are chosen so that X0, y0, Z0, sX >= 0 (ties broken
+// by sX * cZ >= 0). Every such choice describes the same pair (B is
+// symmetric in each coordinate plane through its centre, A's axis has no
+// direction), so swapping either cylinder's caps, which flips z or u_A
+// exactly, gives the same canonical numbers bit for bit, and the answer
+// depends on nothing else.
+//
+// In a slice y = const, B is the rectangle |X| <= kB(y), |Z| <= hB and A the
+// rectangle |a - a0| <= hA, |b - b0| <= kA(y) in A's coordinates a = (X, Z)
+// . (sX, cZ), b = (X, Z) . (cZ, -sX), with k the half widths
+// sqrt(r^2 - (y - y_axis)^2).
+struct Frame {
+  double rA, rB, hA, hB;
+  Vec3 origin, x, y, z, uA;
+  double sX, cZ, cZa, X0, y0, Z0, a0, b0;
+  Term t[4];
+  double lo, hi;  // the slices where both cylinders have a section
+
+  Frame(const Cylinder& A, const Axis& axA, const Cylinder& B, const Axis& axB, const CylinderPairOptions& opt)
+      : rA(A.r), rB(B.r), hA(axA.half), hB(axB.half) {
+    uA = axA.u;
+    z = axB.u;
+    origin = 0.5 * (B.p + B.q);
+    const Vec3 v = 0.5 * (A.p + A.q) - origin;
+    const double c = dot(uA, z);
+    // The common perpendicular. u_B x u_A loses digits as 1 / theta (the
+    // products cancel); u_B x (u_A -+ u_B) does not: the difference of two
+    // near-equal unit vectors is exact or nearly so, and the cross product
+    // of u_B with it has no cancellation. (Below 60 degrees from
+    // perpendicular only: the branch depends on |c|, so that flipping
+    // either axis negates the cross product exactly.)
+    const bool compensate = opt.accurate_frame && std::fabs(c) > 0.5;
+    const Vec3 cr = compensate ? cross(z, c > 0 ? uA - z : uA + z) : cross(z, uA);
+    double sx0, cz0;
+    if (max_abs(cr) == 0 && opt.parallel_branch) {
+      // Parallel or anti-parallel axes: x towards A's axis, y = 0 through
+      // both.
+      x = unit_perpendicular_part(v, z);
+      y = cross(z, x);
+      y0 = 0;
+      sx0 = 0;
+      cz0 = c;
+    } else {
+      y = max_abs(cr) == 0 ? (1.0 / length(cr)) * cr : normalized(cr);  // NaN without the branch
+      y0 = dot(y, v);
+      if (y0 < 0) y = -y, y0 = -y0;
+      x = cross(y, z);
+      sx0 = dot(x, uA);
+      cz0 = dot(z, uA);
+    }
+    X0 = dot(x, v);
+    Z0 = dot(z, v);
+    // The canonical signs (see above).
+    if (X0 < 0 || (X0 == 0 && sx0 * cz0 < 0)) x = -x, X0 = -X0, sx0 = -sx0;
+    if (Z0 < 0 || (Z0 == 0 && sx0 * cz0 < 0)) z = -z, Z0 = -Z0, cz0 = -cz0;
+    if (sx0 < 0 || (sx0 == 0 && cz0 < 0)) uA = -uA, sx0 = -sx0, cz0 = -cz0;
+    X0 = std::fabs(X0), Z0 = std::fabs(Z0), y0 = std::fabs(y0);  // no -0
+    sX = sx0, cZ = cz0, cZa = std::fabs(cZ);
+    a0 = sX * X0 + cZ * Z0;
+    b0 = std::fabs(cZ * X0 - sX * Z0);
+    // The separating axes of the two rectangles of a slice: B's cap planes
+    // (the false-positive planes: A reaches kA sX beyond its axis along z),
+    // B's side, A's cap planes, A's side.
+    t[0] = {Z0 - hB - hA * cZa, sX, 0};
+    t[1] = {X0 - hA * sX, cZa, 1};
+    t[2] = {std::fabs(a0) - hA - hB * cZa, 0, sX};
+    t[3] = {b0 - hB * sX, 1, cZa};
+    if (!opt.false_positive_planes) {
+      // The augmented cylinders' square ends: the full reach r sin theta
+      // at every slice (corner false positives).
+      t[0].c -= sX * rA, t[0].al = 0;
+      t[2].c -= sX * rB, t[2].be = 0;
+    }
+    lo = std::max(-rB, y0 - rA);
+    hi = std::min(rB, y0 + rA);
+  }
+
+  double kA(double yy) const {
+    const double d = yy - y0;
+    return std::sqrt(std::max(0.0, (rA - d) * (rA + d)));
+  }
+  double kB(double yy) const { return std::sqrt(std::max(0.0, (rB - yy) * (rB + yy))); }
+
+  // G(y) and, where G > 0, the slope of its active term (+-inf at the ends
+  // of [lo, hi]).
+  double eval(double yy, double& slope) const {
+    const double ka = kA(yy), kb = kB(yy);
+    double g = -kInf;
+    int best = 0;
+    for (int j = 0; j < 4; ++j) {
+      const double v = t[j].c - t[j].al * ka - t[j].be * kb;
+      if (v > g) g = v, best = j;
+    }
+    slope = 0;
+    if (g <= 0) return g;  // decided: no slope needed
+    if (t[best].al != 0) slope += t[best].al * ((yy - y0) / ka);
+    if (t[best].be != 0) slope += t[best].be * (yy / kb);
+    return g;
+  }
+
+  // The overlap of the shapes along a great circle of unit normals:
+  //   f(P, Q) = R1 + R2 sqrt(P^2 + cZ^2 Q^2) + K Q - y0 P,  P, Q >= 0,
+  // with its first two derivatives in the angle (P = cos, Q = sin). The
+  // circle perpendicular to u_A (A's side against B) is n = -(P y + Q nA'),
+  // nA' = A's side normal towards A's centre side, with R1 = rA, R2 = rB,
+  // K = hB sX - |b0|; the circle perpendicular to u_B (B's side against A)
+  // is n = -(P y + Q x) with R1 = rB, R2 = rA, K = hA sX - X0. Both are
+  // h_A(n) + h_B(-n); the square root is written without the cancelling
+  // 1 - sX^2 Q^2.
+  struct Circle {
+    double R1, R2, K, y0, c2, s2;
+    double value(double P, double Q, double& S) const {
+      S = std::sqrt(P * P + c2 * Q * Q);
+      return R1 + R2 * S + K * Q - y0 * P;
+    }
+    // The Newton step in the angle at (P, Q): -f' / f'', both multiplied by
+    // S^3 (one division); a fixed step downhill where f'' <= 0, and towards
+    // P > 0 from the kink S = 0 (cZ = 0 at Q = 1: rim against side).
+    double newton_step(double P, double Q, double S) const {
+      if (!(S > 0)) return -0.25;
+      const double S2 = S * S, S3 = S2 * S, pq = P * Q;
+      const double d1 = -R2 * s2 * pq * S2 + (K * P + y0 * Q) * S3;
+      const double d2 = -R2 * s2 * ((P * P - Q * Q) * S2 + s2 * pq * pq) + (y0 * P - K * Q) * S3;
+      const double step = d2 > 0 ? -d1 / d2 : (d1 > 0 ? -0.25 : 0.25);
+      return std::clamp(step, -0.5, 0.5);
+    }
+    // A lower bound of f on the quarter circle from S >= P: R1 plus the
+    // minimum of the linear (R2 - y0) P + K Q there.
+    double lower_bound() const {
+      const double a = R2 - y0, b = K;
+      return a < 0 && b < 0 ? -kInf : R1 + std::min(a, b);
+    }
+    // Newton on the angle from (P, Q), each step kept only if it lowers f
+    // (halved once otherwise), kept in the quadrant. The rotation by the
+    // step is the rational one (tan of half the angle), unit to rounding
+    // without a square root.
+    double min(double& P, double& Q, double end_q1, int steps) const {
+      double S;
+      double o = value(P, Q, S);
+      // Or an end of the quadrant, if lower (their values are known).
+      const double end_p1 = R1 + R2 - y0;
+      if (end_p1 < o || end_q1 < o) {
+        if (end_p1 <= end_q1) P = 1, Q = 0, o = end_p1, S = 1;
+        else P = 0, Q = 1, o = end_q1, S = std::sqrt(c2);
+      }
+      for (int it = 0; it < steps; ++it) {
+        double t = 0.5 * newton_step(P, Q, S);
+        bool moved = false;
+        for (int k = 0; k < 2 && !moved; ++k, t *= 0.5) {
+          const double w = 1 / (1 + t * t), cr = (1 - t * t) * w, sr = 2 * t * w;
+          double P2 = P * cr - Q * sr, Q2 = Q * cr + P * sr;
+          if (P2 < 0) P2 = 0, Q2 = 1;  // past an end of the quadrant: the end
+          if (Q2 < 0) P2 = 1, Q2 = 0;
+          double S2;
+          const double o2 = value(P2, Q2, S2);
+          if (o2 < o) P = P2, Q = Q2, o = o2, S = S2, moved = true;
+        }
+        if (!moved) break;
+      }
+      return o;
+    }
+  };
+  Circle circle_a() const { return {rA, rB, hB * sX - b0, y0, cZ * cZ, sX * sX}; }
+  Circle circle_b() const { return {rB, rA, hA * sX - X0, y0, cZ * cZ, sX * sX}; }
+  // A's side normal cZ x - sX z, turned towards A's centre (from B's).
+  Vec3 nA_signed() const {
+    const Vec3 n = cZ * x - sX * z;
+    return cZ * X0 - sX * Z0 >= 0 ? n : -n;
+  }
+
+  // A point of both rectangles of slice yy, in (X, Z).
+  void common_point(double yy, double& X, double& Z) const {
+    const double ka = kA(yy), kb = kB(yy);
+    const double bs = cZ * X0 - sX * Z0;  // b0 with its sign
+    // Rounding of the tests below (a few ulps of the largest term), far
+    // inside the point bound.
+    const double slack = 0x1p-50 * std::max({X0, Z0, hA, hB, rA, rB});
+    auto a_of = [&](double xx, double zz) { return xx * sX + zz * cZ; };
+    auto b_of = [&](double xx, double zz) { return xx * cZ - zz * sX; };
+    // How far (X, Z) is outside A's and B's rectangles (<= 0: inside).
+    auto out_a = [&](double xx, double zz) {
+      return std::max(std::fabs(a_of(xx, zz) - a0) - hA, std::fabs(b_of(xx, zz) - bs) - ka);
+    };
+    auto out_b = [&](double xx, double zz) { return std::max(std::fabs(xx) - kb, std::fabs(zz) - hB); };
+    // Cheap first: A's centre clamped into B, then B's centre clamped into
+    // A; either is in both whenever the rectangles cross (the usual case).
+    X = std::min(X0, kb);
+    Z = std::min(Z0, hB);
+    if (out_a(X, Z) <= slack) return;
+    {
+      const double a = std::clamp(0.0, a0 - hA, a0 + hA), b = std::clamp(0.0, bs - ka, bs + ka);
+      const double xx = a * sX + b * cZ, zz = a * cZ - b * sX;
+      if (out_b(xx, zz) <= slack) {
+        X = std::clamp(xx, -kb, kb), Z = std::clamp(zz, -hB, hB);
+        return;
+      }
+    }
+    // A's rectangle clipped by B's four sides (Sutherland-Hodgman); the
+    // centre of the vertices.
+    double buf[2][2][8];
+    double* px = buf[0][0];
+    double* pz = buf[0][1];
+    double* qx = buf[1][0];
+    double* qz = buf[1][1];
+    const double ux = hA * sX, uz = hA * cZ, nx = ka * cZ, nz = -ka * sX;
+    const double cx = X0, cz = Z0;
+    double vx[8], vz[8];  // A's corners, then B's
+    vx[0] = cx + ux + nx, vz[0] = cz + uz + nz;
+    vx[1] = cx - ux + nx, vz[1] = cz - uz + nz;
+    vx[2] = cx - ux - nx, vz[2] = cz - uz - nz;
+    vx[3] = cx + ux - nx, vz[3] = cz + uz - nz;
+    vx[4] = kb, vz[4] = hB;
+    vx[5] = -kb, vz[5] = hB;
+    vx[6] = -kb, vz[6] = -hB;
+    vx[7] = kb, vz[7] = -hB;
+    int n = 4;
+    for (int i = 0; i < 4; ++i) px[i] = vx[i], pz[i] = vz[i];
+    for (int side = 0; side < 4 && n > 0; ++side) {
+      const bool on_x = side < 2;
+      const double sign = (side & 1) ? -1.0 : 1.0;
+      const double bound = on_x ? kb : hB;
+      const double* pa = on_x ? px : pz;
+      int m = 0;
+      double vi = sign * pa[0] - bound;
+      for (int i = 0; i < n; ++i) {
+        const int j = i + 1 == n ? 0 : i + 1;
+        const double vj = sign * pa[j] - bound;
+        if (vi <= 0) qx[m] = px[i], qz[m] = pz[i], ++m;
+        if ((vi < 0 && vj > 0) || (vi > 0 && vj < 0)) {
+          const double t = vi / (vi - vj);
+          qx[m] = on_x ? sign * bound : px[i] + t * (px[j] - px[i]);
+          qz[m] = on_x ? pz[i] + t * (pz[j] - pz[i]) : sign * bound;
+          ++m;
+        }
+        vi = vj;
+      }
+      n = m;
+      std::swap(px, qx);
+      std::swap(pz, qz);
+    }
+    if (n > 0) {
+      double sx = 0, sz = 0;
+      for (int i = 0; i < n; ++i) sx += px[i], sz += pz[i];
+      X = std::clamp(sx / n, -kb, kb);
+      Z = std::clamp(sz / n, -hB, hB);
+      if (out_a(X, Z) <= slack) return;
+    }
+    // Touching to rounding (the rectangles share a vertex or an edge): the
+    // corner of one that is least outside the other.
+    double worst = kInf;
+    for (int i = 0; i < 8; ++i) {
+      const double o = i < 4 ? out_b(vx[i], vz[i]) : out_a(vx[i], vz[i]);
+      if (o < worst) worst = o, X = vx[i], Z = vz[i];
+    }
+    X = std::clamp(X, -kb, kb);
+    Z = std::clamp(Z, -hB, hB);
+  }
+};
+
+// Is min over [lo, hi] of the convex G at most 0? On success `ybest` is a
+// slice with G <= 0 (or the best found when the answer is decided only to
+// `tol`).
+bool slices_meet(const Frame& f, double tol, double& ybest) {
+  double lo = f.lo, hi = f.hi;
+  const double r = std::max(f.rA, f.rB);
+  double slope;
+  if (!(hi > lo)) {  // one slice (a radius 0, or the axes' lines rA + rB apart)
+    ybest = lo;
+    return f.eval(lo, slope) <= tol;
+  }
+  // The engine's slice: in the scaled space A's axis line passes at y0 from
+  // B's axis and the augmented section is a circle of radius rA + rB, widest
+  // where it divides y0 as rB : rA. It maximises kA + kB; with the axes
+  // parallel it is the answer.
+  double yy = f.rA + f.rB > 0 ? f.y0 * (f.rB / (f.rA + f.rB)) : 0.0;
+  yy = std::clamp(yy, lo, hi);
+  struct Tangent {
+    double y = 0, g = 0, d = 0;
+    bool ok = false;
+  } L, R;
+  double best = kInf, width_before = hi - lo;
+  ybest = yy;
+  for (int it = 0; it < 100; ++it) {
+    const double g = f.eval(yy, slope);
+    if (g < best) best = g, ybest = yy;
+    if (g <= 0) return true;
+    if (slope > 0) {
+      hi = yy;
+      if (std::isfinite(slope)) R = {yy, g, slope, true};
+    } else if (slope < 0) {
+      lo = yy;
+      if (std::isfinite(slope)) L = {yy, g, slope, true};
+    } else {
+      return false;  // a stationary point: the minimum, and it is > 0
+    }
+    // A lower bound of G on [lo, hi] from the tangents (convexity).
+    double lb = -kInf, ycut = 0.5 * (lo + hi);
+    if (L.ok && R.ok) {
+      ycut = (R.g - L.g + L.d * L.y - R.d * R.y) / (L.d - R.d);
+      ycut = std::clamp(ycut, lo, hi);
+      lb = std::max(L.g + L.d * (ycut - L.y), R.g + R.d * (ycut - R.y));
+    } else if (L.ok) {
+      lb = L.g + L.d * (hi - L.y);
+    } else if (R.ok) {
+      lb = R.g + R.d * (lo - R.y);
+    }
+    if (lb > 0) return false;
+    if (best - lb <= tol || hi - lo <= 0x1p-52 * r) break;
+    // Next: the tangents' crossing, kept off the ends of the bracket; a
+    // bisection whenever two steps did not halve it.
+    const double w = hi - lo;
+    double next = ycut;
+    if (!(L.ok && R.ok) || (it % 2 == 1 && w > 0.5 * width_before)) next = 0.5 * (lo + hi);
+    if (it % 2 == 1) width_before = w;
+    yy = std::clamp(next, lo + w * 0x1p-4, hi - w * 0x1p-4);
+  }
+  return best <= tol;
+}
+
+Contact scaled(const Cylinder& a, const Axis& ax_a, const Cylinder& b, const Axis& ax_b, bool want_contact,
+               const CylinderPairOptions& opt) {
+  // Roles: B (the frame) is the first in RoleKey order.
+  const bool b_is_frame = first(RoleKey(b), RoleKey(a));
+  const Frame f = b_is_frame ? Frame(a, ax_a, b, ax_b, opt) : Frame(b, ax_b, a, ax_a, opt);
+  Contact out;
+  if (!(f.lo <= f.hi)) return out;  // the axes' lines more than rA + rB apart
+  // Early-outs: each term bounded below over all slices (k <= r); the cap
+  // terms are the two false-positive planes. Their negatives are the
+  // overlaps along -z, -x, -+u_A and -+n_A.
+  double o[5];
+  for (int j = 0; j < 4; ++j) {
+    o[j] = -(f.t[j].c - f.t[j].al * f.rA - f.t[j].be * f.rB);
+    if (o[j] < 0) return out;
+  }
+  o[4] = f.rA + f.rB - f.y0;  // along -y
+  const double scene = std::max({f.X0, f.y0, f.Z0, f.hA, f.hB, f.rA, f.rB});
+  double ys = 0;
+  if (!slices_meet(f, 0x1p-48 * scene, ys)) return out;
+  out.hit = true;
+  if (!want_contact) return out;
+  double X, Z;
+  f.common_point(ys, X, Z);
+  out.point = f.origin + (X * f.x + ys * f.y + Z * f.z);
+  // The normal: the best of the fixed directions -z, -x, -+u_A, -+n_A, -y and
+  // the two great circles of side normals (side of A against B's rim or side,
+  // side of B against A's), each minimised by Newton on the angle from the
+  // direction between the axes. -y is on both circles.
+  int best = 0;
+  for (int j = 1; j < 5; ++j)
+    if (o[j] < o[best]) best = j;
+  double depth = o[best];
+  Vec3 n;
+  const double sa0 = f.a0 >= 0 ? 1.0 : -1.0;
+  switch (best) {
+    case 0: n = -f.z; break;
+    case 1: n = -f.x; break;
+    case 2: n = -sa0 * f.uA; break;
+    case 3: n = -f.nA_signed(); break;
+    default: n = -f.y; break;
+  }
+  {
+    const Frame::Circle ca = f.circle_a(), cb = f.circle_b();
+    // Each circle from the direction between the axes in its plane (the
+    // answer for parallel axes: from the radial part y0 and the linear
+    // coefficient -K), unless a lower bound says it cannot beat the depth
+    // found.
+    auto start = [&](const Frame::Circle& c, double& P, double& Q) {
+      const double w = std::max(-c.K, 0.0), l = std::sqrt(f.y0 * f.y0 + w * w);
+      if (l > 0) P = f.y0 * (1 / l), Q = w * (1 / l);
+      else P = 1, Q = 0;
+    };
+    double P, Q;
+    if (ca.lower_bound() < depth) {
+      start(ca, P, Q);
+      const double da = ca.min(P, Q, o[3], opt.newton_steps);
+      if (da < depth) depth = da, n = -normalized(P * f.y + Q * f.nA_signed());
+    }
+    if (cb.lower_bound() < depth) {
+      start(cb, P, Q);
+      const double db = cb.min(P, Q, o[1], opt.newton_steps);
+      if (db < depth) depth = db, n = -normalized(P * f.y + Q * f.x);
+    }
+  }
+  out.depth = std::max(depth, 0.0);
+  // The normal points from A to B; A is the caller's a unless a is the frame.
+  out.normal = b_is_frame ? n : -n;
+  return out;
+}
+
+// A cylinder's axis in the scaled scene: the direction from the caller's
+// numbers whenever q - p and its length are finite (the scaled difference can underflow and
+// lose it: a disk of radius DBL_MAX and subnormal thickness), else from the
+// scaled ones; bit-identical to the scaled computation wherever neither
+// overflows or underflows.
+Axis axis_of(const Cylinder& c, const SceneScale& sc) {
+  const Vec3 d = c.q - c.p;
+  if (is_finite(d)) {
+    const UnitAndLength ul(d);
+    if (std::isfinite(ul.len)) return {ul.u, 0.5 * sc.in(ul.len)};
+  }
+  const UnitAndLength ul(sc.in(c.q) - sc.in(c.p));
+  return {ul.u, 0.5 * ul.len};
+}
+
+}  // namespace
+
+Contact cylinder_pair(const Cylinder& a, const Cylinder& b, bool want_contact, const CylinderPairOptions& opt) {
+  if (!is_valid(a) || !is_valid(b)) return {};
+  const SceneScale sc(std::max(largest(a), largest(b)));
+  Contact out = scaled(sc.in(a), axis_of(a, sc), sc.in(b), axis_of(b, sc), want_contact, opt);
+  if (out.hit) {
+    out.point = sc.out(out.point);
+    out.depth = std::min(sc.out(out.depth), std::numeric_limits<double>::max());
+  }
+  return out;
+}
+
+}  // namespace detail
+
+bool overlap(const Cylinder& a, const Cylinder& b) { return detail::cylinder_pair(a, b, false, {}).hit; }
+
+Contact collide(const Cylinder& a, const Cylinder& b) { return detail::cylinder_pair(a, b, true, {}); }
+
+}  // namespace geomcheck

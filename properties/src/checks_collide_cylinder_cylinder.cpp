@@ -1,0 +1,345 @@
+#include <algorithm>
+#include <cmath>
+#include <optional>
+#include <utility>
+
+#include "capsule_truth.hpp"
+#include "common.hpp"
+#include "geomcheck/collide_cylinder_cylinder.hpp"
+#include "geomcheck/oracles/cylinder_sphere.hpp"
+#include "geomcheck/properties/checks.hpp"
+#include "geomcheck/properties/tolerances.hpp"
+#include "moves.hpp"
+
+namespace geomcheck {
+
+namespace {
+
+constexpr QueryId kId = QueryId::collide_cylinder_cylinder;
+using oracle::Q;
+using oracle::QInterval;
+using oracle::QVec;
+using oracle::Verdict;
+
+bool valid_case(const CylinderCylinderCase& c) { return is_valid(c.a) && is_valid(c.b); }
+
+double scale_of(const CylinderCylinderCase& c) {
+  const double m = std::max({max_abs(c.a.p), max_abs(c.a.q), c.a.r, oracle::extent(c.a.p, c.a.q), max_abs(c.b.p),
+                             max_abs(c.b.q), c.b.r, oracle::extent(c.b.p, c.b.q)});
+  return m > 0 ? m : 1.0;
+}
+
+// The two axes in one plane, decided exactly: orient3d(p_A, q_A, p_B, q_B)
+// is zero (parallel axes always are). The reflection in that plane maps
+// both cylinders onto themselves, so their candidate directions come in
+// mirror pairs, and a reflected scene may pick the other one of a tie.
+bool axes_coplanar(const CylinderCylinderCase& c) {
+  const QVec p = oracle::to_q(c.a.p);
+  const QVec u = oracle::to_q(c.a.q) - p, v = oracle::to_q(c.b.p) - p, w = oracle::to_q(c.b.q) - p;
+  return oracle::dot(oracle::cross(u, v), w) == 0;
+}
+
+// The unit normal of the plane through both axes of a coplanar scene, in
+// doubles (for the mirror image of a normal only); zero when the four end
+// points are collinear (coaxial: every plane through the axis is a mirror).
+Vec3 common_plane_normal(const CylinderCylinderCase& c) {
+  const Vec3 u = c.a.q - c.a.p;
+  Vec3 w = cross(u, c.b.q - c.b.p);
+  if (!(max_abs(w) > 0)) w = cross(u, (c.b.p - c.a.p) + (c.b.q - c.a.p));  // parallel axes
+  const double m = max_abs(w);
+  if (!(m > 0) || !std::isfinite(m)) return {0, 0, 0};
+  const Vec3 s = (1.0 / m) * w;
+  return (1.0 / length(s)) * s;
+}
+
+// Production's contact (or a peer's) against the truth: unit error; the
+// shortfall of the depth below the certified penetration depth (the depth
+// is an overlap along a direction, so it can only be >= the penetration
+// depth; a certain shortfall, depth < lo of the enclosure, is an error);
+// the point's distance outside either cylinder. The ratio depth / PD where
+// the enclosure is within 1%.
+struct Score {
+  double unit = NAN, depth = NAN, point = NAN, ratio = NAN;
+};
+Score score_contact(const Contact& k, bool truth_hit, Verdict verdict, const oracle::QCylinder& qa,
+                    const oracle::QCylinder& qb, const oracle::ConvexShape& sa, const oracle::ConvexShape& sb,
+                    double scale, std::optional<oracle::PenetrationResult>& pd) {
+  Score out;
+  if (!k.hit || !finite_contact(k)) return out;
+  out.unit = std::fabs(length(k.normal) - 1);
+  if (!truth_hit) return out;
+  if (verdict == Verdict::Overlapping) {
+    if (!pd) pd = oracle::penetration(sa, sb, 1e-20);
+    if (pd->overlapping && std::isfinite(oracle::to_double(pd->depth.hi))) {
+      const QInterval& depth = pd->depth;
+      const Q v = oracle::to_q(k.depth);
+      out.depth = v < depth.lo ? rel_up(depth.lo - v, scale) : 0.0;
+      // The ratio where it measures the direction rather than rounding: the
+      // penetration depth enclosed within 1% and at least 1e-9 * scale (a
+      // rounding-sized depth, a few eps * scale, over a rounding-sized
+      // penetration depth is noise).
+      if (depth.lo >= times_scale(1e-9, scale) && (depth.hi - depth.lo) * 100 <= depth.lo)
+        out.ratio = k.depth / oracle::to_double(depth.mid());
+    }
+  } else {
+    out.depth = 0;  // touching: the penetration depth is 0 <= depth
+  }
+  const QVec x = oracle::to_q(k.point);
+  const QInterval da = oracle::signed_distance(qa, x), db = oracle::signed_distance(qb, x);
+  const Q worst = da.hi > db.hi ? da.hi : db.hi;
+  out.point = worst > 0 ? rel_up(worst, scale) : 0.0;
+  return out;
+}
+
+}  // namespace
+
+const CylinderCylinderImpl kProductionCylinderCylinder = {
+    "production",
+    [](const Cylinder& a, const Cylinder& b) { return overlap(a, b); },
+    [](const Cylinder& a, const Cylinder& b) { return collide(a, b); },
+};
+
+Evaluation evaluate(const CylinderCylinderCase& c, const CylinderCylinderImpl& impl, const Contact* peer) {
+  Evaluation e;
+  const bool ov = impl.overlap(c.a, c.b);
+  const Contact ct = impl.collide(c.a, c.b);
+  e.prod_hit = ov;
+  e.prod_text = describe(ct, ov);
+  e.valid = valid_case(c);
+  if (!e.valid) {
+    e.truth_text = "invalid input: no overlap";
+    e.disagree = ov || ct.hit;
+    return e;
+  }
+  e.scale = scale_of(c);
+  const Tolerances tol = tolerances(kId);
+  const oracle::ConvexShape sa = oracle::make_shape(c.a), sb = oracle::make_shape(c.b);
+  const Q band = times_scale(tol.verdict, e.scale);
+  const PolytopeTruth truth = polytope_truth(sa, sb, band);
+  e.verdict = truth.verdict;
+  e.truth_hit = truth.verdict != Verdict::Separated;
+  e.signed_distance = nearest_to_zero(truth.signed_distance, e.scale);
+  e.truth_text = truth.text;
+  e.disagree = e.prod_hit != e.truth_hit;
+  e.near_boundary = !(truth.signed_distance.lo > band || truth.signed_distance.hi < -band);
+  if (e.disagree) {
+    // The certain part of the margin: the enclosure's distance from zero.
+    // Two curved surfaces nearly parallel can leave GJK's enclosure wide
+    // (2.4e-20 to 2.5e-8 for axes 1e-12 from parallel touching to 2e-20),
+    // and its midpoint would be a guess.
+    const QInterval& sd = truth.signed_distance;
+    const Q certain = sd.lo > 0 ? sd.lo : (sd.hi < 0 ? Q(-sd.hi) : Q(0));
+    e.margin = oracle::to_double(certain) / e.scale;
+    e.excused = e.near_boundary;
+  }
+  if (truth.verdict == Verdict::Separated &&
+      truth.signed_distance.hi - truth.signed_distance.lo <= times_scale(1e-12, e.scale))
+    e.distance = truth.signed_distance.mid();
+  // The depth is not claimed minimal (see the query's header): the normal
+  // has no error of its own (consistency holds the depth to the overlap
+  // along it); the depth only fails below the penetration depth.
+  const oracle::QCylinder qa = oracle::to_q(c.a), qb = oracle::to_q(c.b);
+  std::optional<oracle::PenetrationResult> pd;
+  const Score m = score_contact(ct, e.truth_hit, truth.verdict, qa, qb, sa, sb, e.scale, pd);
+  e.unit_err = m.unit, e.depth_err = m.depth, e.point_err = m.point, e.depth_ratio = m.ratio;
+  if (peer) {
+    const Score p = score_contact(*peer, e.truth_hit, truth.verdict, qa, qb, sa, sb, e.scale, pd);
+    e.peer.unit_err = p.unit, e.peer.depth_err = p.depth, e.peer.point_err = p.point;
+  }
+  if (pd && pd->overlapping) e.truth_text += "; penetration depth " + oracle::to_string(pd->depth);
+  return e;
+}
+
+double depth_ratio(const CylinderCylinderCase& c, const CylinderCylinderImpl& impl) {
+  return evaluate(c, impl).depth_ratio;
+}
+
+CheckResult check_oracle(const CylinderCylinderCase& c, const CylinderCylinderImpl& impl) { return judge(kId, evaluate(c, impl)); }
+
+CheckResult check_consistency(const CylinderCylinderCase& c, const CylinderCylinderImpl& impl) {
+  const bool ov = impl.overlap(c.a, c.b);
+  const Contact ct = impl.collide(c.a, c.b);
+  if (ov != ct.hit) return Failure{"consistency-overlap-vs-collide", describe(ct, ov)};
+  if (!ct.hit) return std::nullopt;
+  if (!finite_contact(ct)) return Failure{"consistency-finite", describe(ct, ov)};
+  const Tolerances tol = tolerances(kId);
+  if (std::fabs(length(ct.normal) - 1) > tol.unit) return Failure{"consistency-unit-normal", describe(ct, ov)};
+  if (!(ct.depth >= 0)) return Failure{"consistency-depth-nonnegative", describe(ct, ov)};
+  if (!valid_case(c)) return std::nullopt;
+  // depth equals the overlap of the shapes along the returned normal.
+  const double scale = scale_of(c);
+  const QInterval along = overlap_along(oracle::make_shape(c.a), oracle::make_shape(c.b), oracle::to_q(ct.normal));
+  if (!std::isfinite(oracle::to_double(along.hi))) return std::nullopt;  // beyond the doubles: saturated depth
+  const double err = rel_error(along, ct.depth, scale);
+  if (err > tol.depth)
+    return Failure{"consistency-depth-along-normal",
+                   fmt("|depth - overlap along normal| = %.3g * scale > %.3g; ", err, tol.depth) + describe(ct, ov)};
+  return std::nullopt;
+}
+
+namespace {
+// Same solid, other representation: the verdicts agree unless one case is
+// within the band; the depths within twice the depth bound.
+CheckResult same_answer(const char* what, const CylinderCylinderCase& c0, const CylinderCylinderCase& c1,
+                        const CylinderCylinderImpl& impl) {
+  const bool o0 = impl.overlap(c0.a, c0.b), o1 = impl.overlap(c1.a, c1.b);
+  if (o0 != o1) {
+    const Evaluation e0 = evaluate(c0, impl), e1 = evaluate(c1, impl);
+    if (e0.near_boundary || e1.near_boundary) return std::nullopt;
+    return Failure{what, std::string("overlap ") + (o0 ? "yes" : "no") + " becomes " + (o1 ? "yes" : "no") +
+                             "; oracle: " + e0.truth_text};
+  }
+  if (!o0) return std::nullopt;
+  const Contact k0 = impl.collide(c0.a, c0.b), k1 = impl.collide(c1.a, c1.b);
+  const double d = std::fabs(k0.depth - k1.depth) / scale_of(c0);
+  if (d > 2 * tolerances(kId).depth)
+    return Failure{std::string(what) + "-depth",
+                   fmt("depth differs by %.3g * scale; ", d) + describe(k0, o0) + " vs " + describe(k1, o1)};
+  return std::nullopt;
+}
+}  // namespace
+
+CheckResult check_symmetry(const CylinderCylinderCase& c, const CylinderCylinderImpl& impl) {
+  const Tolerances tol = tolerances(kId);
+  // (B, A): the same pair with the roles exchanged. The verdict agrees
+  // outside the band; both hitting, the depths agree to the bound and the
+  // normal is flipped, or (a tie between candidate directions) the flipped
+  // normal of (B, A) is as good for (A, B): the overlap along it equals
+  // (A, B)'s depth to the bound.
+  const bool ov = impl.overlap(c.a, c.b), sov = impl.overlap(c.b, c.a);
+  const Contact ct = impl.collide(c.a, c.b), sw = impl.collide(c.b, c.a);
+  if (ov != sov) {
+    if (!valid_case(c) || !evaluate(c, impl).near_boundary)
+      return Failure{"symmetry-argument-order",
+                     "verdict changed outside the band: " + describe(ct, ov) + " vs swapped " + describe(sw, sov)};
+  } else if (ov && ct.hit && sw.hit && valid_case(c)) {
+    const double scale = scale_of(c);
+    const double d = std::fabs(ct.depth - sw.depth) / scale;
+    if (!(d <= 2 * tol.depth))
+      return Failure{"symmetry-argument-order-depth",
+                     fmt("depth differs by %.3g * scale; ", d) + describe(ct, ov) + " vs swapped " + describe(sw, sov)};
+    if (!(length(ct.normal + sw.normal) <= 64 * 0x1p-52)) {
+      const QInterval along =
+          overlap_along(oracle::make_shape(c.a), oracle::make_shape(c.b), oracle::to_q(-sw.normal));
+      if (std::isfinite(oracle::to_double(along.hi)) && rel_error(along, ct.depth, scale) > 2 * tol.depth)
+        return Failure{"symmetry-argument-order-normal",
+                       "the swapped normal, flipped, is not as good a direction: " + describe(ct, ov) +
+                           " vs swapped " + describe(sw, sov)};
+    }
+  }
+  if (!valid_case(c)) return std::nullopt;
+  if (auto f = same_answer("symmetry-caps-swapped-a", c, {{c.a.q, c.a.p, c.a.r}, c.b}, impl)) return f;
+  if (auto f = same_answer("symmetry-caps-swapped-b", c, {c.a, {c.b.q, c.b.p, c.b.r}}, impl)) return f;
+  return same_answer("symmetry-caps-swapped-both", c, {{c.a.q, c.a.p, c.a.r}, {c.b.q, c.b.p, c.b.r}}, impl);
+}
+
+CheckResult check_metamorphic(const CylinderCylinderCase& c, int move, const CylinderCylinderImpl& impl) {
+  if (!valid_case(c)) return std::nullopt;
+  const moves::Move m{move};
+  if (!moves::applicable(c, move)) return std::nullopt;
+  const CylinderCylinderCase t{moves::apply(m, c.a), moves::apply(m, c.b)};
+  if (!valid_case(t)) return std::nullopt;
+  const bool ov = impl.overlap(c.a, c.b), ov2 = impl.overlap(t.a, t.b);
+  const Contact ct = impl.collide(c.a, c.b), ct2 = impl.collide(t.a, t.b);
+  const std::string what = std::string("metamorphic-") + move_name(move);
+  if (m.exact()) {
+    if (ov != ov2 || ct.hit != ct2.hit) return Failure{what, "verdict changed: " + describe(ct, ov) + " vs " + describe(ct2, ov2)};
+    if (!ct.hit) return std::nullopt;
+    if ((move == 0 || move == 1) && axes_coplanar(c) && !(m.vec(ct.normal) == ct2.normal)) {
+      // A reflection of a scene symmetric in the plane of the two axes: the
+      // normal may be the other of a mirror pair (and the depth, computed
+      // along it, differ by rounding). The point does not depend on the
+      // normal: still bit-identical.
+      if (!(m.pt(ct.point) == ct2.point))
+        return Failure{what, "point not bit-identical (axes in one plane): " + describe(ct, ov) + " vs " +
+                                 describe(ct2, ov2)};
+      const double d = std::fabs(m.len(ct.depth) - ct2.depth) / scale_of(c);
+      if (!(d <= 2 * tolerances(kId).depth))
+        return Failure{what + "-depth", fmt("depth differs by %.3g * scale (axes in one plane); ", d) +
+                                            describe(ct, ov) + " vs " + describe(ct2, ov2)};
+      const Vec3 w = common_plane_normal(t), n = m.vec(ct.normal);
+      const Vec3 mirror = n - (2 * dot(n, w)) * w;
+      // Coaxial (w = 0): every plane through the axis is a mirror; the
+      // normal's axial part and its length are what is left to compare.
+      const bool coaxial = max_abs(w) == 0;
+      const Vec3 u = t.a.q - t.a.p;
+      const bool ok = coaxial ? std::fabs(dot(n - ct2.normal, u)) <= 64 * 0x1p-52 * length(u) &&
+                                    std::fabs(length(ct2.normal) - 1) <= tolerances(kId).unit
+                              : length(mirror - ct2.normal) <= 64 * 0x1p-52;
+      if (!ok)
+        return Failure{what + "-normal", "normal neither the moved one nor its mirror image (axes in one plane): " +
+                                             describe(ct, ov) + " vs " + describe(ct2, ov2)};
+      return std::nullopt;
+    }
+    if (m.pt(ct.point) == ct2.point && m.vec(ct.normal) == ct2.normal && m.len(ct.depth) == ct2.depth)
+      return std::nullopt;
+    // A tie: the normal is the best of a few candidate directions, and a
+    // reflection turns the common perpendicular (a cross product) round, so
+    // where two candidates overlap the shapes equally (e.g. +-n across a
+    // segment through B's centre) the reflected scene may pick the other.
+    // Accepted only with the point and the depth bit-identical and the
+    // moved normal, measured exactly in the moved scene, as good as the one
+    // returned there (consistency holds that one to the depth).
+    if ((move == 0 || move == 1) && m.pt(ct.point) == ct2.point && m.len(ct.depth) == ct2.depth) {
+      const QInterval along = overlap_along(oracle::make_shape(t.a), oracle::make_shape(t.b), oracle::to_q(m.vec(ct.normal)));
+      if (std::isfinite(oracle::to_double(along.hi)) && rel_error(along, ct2.depth, scale_of(t)) <= 2 * tolerances(kId).depth)
+        return std::nullopt;
+    }
+    return Failure{what, "answer not bit-identical: " + describe(ct, ov) + " vs " + describe(ct2, ov2)};
+  }
+  if (ov != ov2) {
+    const Evaluation e0 = evaluate(c, impl), e1 = evaluate(t, impl);
+    const double slack =
+        move == 5 ? std::max(moves::rigid_slack(c.a), moves::rigid_slack(c.b)) * std::max(e0.scale, e1.scale) : 0.0;
+    auto near = [&](const Evaluation& e) {
+      return e.near_boundary || std::fabs(e.signed_distance) <= tolerances(kId).verdict * e.scale + slack;
+    };
+    if (!near(e0) && !near(e1))
+      return Failure{what, "verdict changed outside the band: " + describe(ct, ov) + " vs " + describe(ct2, ov2)};
+  }
+  return std::nullopt;
+}
+
+CheckResult check_monotone(const CylinderCylinderCase& c, const CylinderCylinderImpl& impl) {
+  if (!valid_case(c) || !impl.overlap(c.a, c.b)) return std::nullopt;
+  // A superset never loses the overlap, except within the band of touching.
+  auto lost = [&](const CylinderCylinderCase& bigger) {
+    return !impl.overlap(bigger.a, bigger.b) && !evaluate(c, impl).near_boundary &&
+           !evaluate(bigger, impl).near_boundary;
+  };
+  for (int which = 0; which < 2; ++which) {
+    const Cylinder& k = which == 0 ? c.a : c.b;
+    auto with = [&](const Cylinder& g) { return which == 0 ? CylinderCylinderCase{g, c.b} : CylinderCylinderCase{c.a, g}; };
+    const char* name = which == 0 ? "A" : "B";
+    const double rc[] = {std::nextafter(k.r, INFINITY), k.r * 2 + 1e-300};
+    for (double r : rc)
+      if (std::isfinite(r) && lost(with(Cylinder{k.p, k.q, r})))
+        return Failure{std::string("monotone-radius-") + name,
+                       fmt("overlap with radius %.17g but not with %.17g", k.r, r)};
+    // Longer: q moved outwards by q - p (and p by p - q), only where that is
+    // exact (else the axis direction rounds and the result is no superset).
+    const Vec3 d = k.q - k.p, q2 = k.q + d, p2 = k.p - d;
+    if (is_finite(q2) && d + k.p == k.q && q2 - k.q == d && lost(with(Cylinder{k.p, q2, k.r})))
+      return Failure{std::string("monotone-length-") + name, "overlap lost when the cylinder is extended beyond q"};
+    if (is_finite(p2) && k.q - d == k.p && k.p - p2 == d && lost(with(Cylinder{p2, k.q, k.r})))
+      return Failure{std::string("monotone-length-") + name, "overlap lost when the cylinder is extended beyond p"};
+  }
+  return std::nullopt;
+}
+
+CheckResult check_robust(const CylinderCylinderCase& c, const CylinderCylinderImpl& impl) {
+  const bool ov = impl.overlap(c.a, c.b);
+  const Contact ct = impl.collide(c.a, c.b);
+  if (!valid_case(c)) {
+    if (ov || ct.hit) return Failure{"robust-invalid-input", "invalid input reported a hit: " + describe(ct, ov)};
+    return std::nullopt;
+  }
+  if (ct.hit && !finite_contact(ct)) return Failure{"robust-finite-output", describe(ct, ov)};
+  if (ct.hit && !(std::fabs(length(ct.normal) - 1) <= 1e-12)) return Failure{"robust-unit-normal", describe(ct, ov)};
+  if (ov != ct.hit) return Failure{"robust-overlap-vs-collide", describe(ct, ov)};
+  return std::nullopt;
+}
+
+CheckResult check_all(const CylinderCylinderCase& c, const CylinderCylinderImpl& impl) { return all_checks(c, impl); }
+
+}  // namespace geomcheck
