@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <utility>
 
 #include "geomcheck/detail/cylinder_pair.hpp"
 #include "geomcheck/detail/frame.hpp"
@@ -14,6 +15,10 @@ namespace detail {
 namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
+
+// -1 where `neg`, else 1, without a branch; multiplying by it is the
+// negation or the identity, bit for bit.
+inline double sign_if(bool neg) { return 1.0 - 2.0 * double(neg); }
 
 // The roles: the frame cylinder ("B", its axis is z) comes first in this
 // order, so that (a, b) and (b, a) run the same computation. The keys are
@@ -79,8 +84,10 @@ struct Frame {
     // of u_B with it has no cancellation. (Below 60 degrees from
     // perpendicular only: the branch depends on |c|, so that flipping
     // either axis negates the cross product exactly.)
-    const bool compensate = opt.accurate_frame && std::fabs(c) > 0.5;
-    const Vec3 cr = compensate ? cross(z, c > 0 ? uA - z : uA + z) : cross(z, uA);
+    // (k is 0 or +-1, from the sign bit; uA - 0 z is uA up to the sign of
+    // a zero component, and uA - (-1) z is uA + z exactly.)
+    const double k = opt.accurate_frame && std::fabs(c) > 0.5 ? std::copysign(1.0, c) : 0.0;
+    const Vec3 cr = cross(z, uA - k * z);
     double sx0, cz0;
     if (max_abs(cr) == 0 && opt.parallel_branch) {
       // Parallel or anti-parallel axes: x towards A's axis, y = 0 through
@@ -90,20 +97,40 @@ struct Frame {
       y0 = 0;
       sx0 = 0;
       cz0 = c;
+      X0 = dot(x, v);
+    } else if (const double l2 = dot(cr, cr); l2 > kSafeLo * kSafeLo && l2 < kSafeHi * kSafeHi) {
+      // The products with the unnormalised cr and xr = cr x z (as long as
+      // cr, which is perpendicular to z) go alongside the square root and
+      // the division, off the critical path; the scale comes last.
+      const Vec3 xr = cross(cr, z);
+      const double yv = dot(cr, v), xv = dot(xr, v), xu = dot(xr, uA);
+      const double inv = (yv == 0 ? 1.0 : std::copysign(1.0, yv)) / std::sqrt(l2);
+      y = inv * cr, y0 = inv * yv;
+      x = inv * xr, X0 = inv * xv, sx0 = inv * xu;
+      cz0 = dot(z, uA);
     } else {
       y = max_abs(cr) == 0 ? (1.0 / length(cr)) * cr : normalized(cr);  // NaN without the branch
       y0 = dot(y, v);
-      if (y0 < 0) y = -y, y0 = -y0;
+      const double sy = sign_if(y0 < 0);
+      y = sy * y, y0 = sy * y0;
       x = cross(y, z);
       sx0 = dot(x, uA);
       cz0 = dot(z, uA);
+      X0 = dot(x, v);
     }
-    X0 = dot(x, v);
     Z0 = dot(z, v);
-    // The canonical signs (see above).
-    if (X0 < 0 || (X0 == 0 && sx0 * cz0 < 0)) x = -x, X0 = -X0, sx0 = -sx0;
-    if (Z0 < 0 || (Z0 == 0 && sx0 * cz0 < 0)) z = -z, Z0 = -Z0, cz0 = -cz0;
-    if (sx0 < 0 || (sx0 == 0 && cz0 < 0)) uA = -uA, sx0 = -sx0, cz0 = -cz0;
+    // The canonical signs (see above). Each is a coin toss on random
+    // poses, so it is taken from the sign bit (no branch to mispredict);
+    // only the ties, a zero coordinate, branch.
+    double fx = std::copysign(1.0, X0);
+    if (X0 == 0) fx = sign_if(sx0 * cz0 < 0);
+    x = fx * x, X0 = fx * X0, sx0 = fx * sx0;
+    double fz = std::copysign(1.0, Z0);
+    if (Z0 == 0) fz = sign_if(sx0 * cz0 < 0);
+    z = fz * z, Z0 = fz * Z0, cz0 = fz * cz0;
+    double fu = std::copysign(1.0, sx0);
+    if (sx0 == 0) fu = sign_if(cz0 < 0);
+    uA = fu * uA, sx0 = fu * sx0, cz0 = fu * cz0;
     X0 = std::fabs(X0), Z0 = std::fabs(Z0), y0 = std::fabs(y0);  // no -0
     sX = sx0, cZ = cz0, cZa = std::fabs(cZ);
     a0 = sX * X0 + cZ * Z0;
@@ -433,7 +460,7 @@ Contact scaled(const Cylinder& a, const Axis& ax_a, const Cylinder& b, const Axi
   }
   out.depth = std::max(depth, 0.0);
   // The normal points from A to B; A is the caller's a unless a is the frame.
-  out.normal = b_is_frame ? n : -n;
+  out.normal = sign_if(!b_is_frame) * n;
   return out;
 }
 
