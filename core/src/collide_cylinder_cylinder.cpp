@@ -396,6 +396,21 @@ bool slices_meet(const Frame& f, double tol, double& ybest) {
 
 Contact scaled(const Cylinder& a, const Axis& ax_a, const Cylinder& b, const Axis& ax_b, bool want_contact,
                const CylinderPairOptions& opt) {
+  // The false-positive planes before the frame (step 1): either
+  // cylinder's cap planes pushed out by the other's reach along its axis,
+  // h |cos theta| + r sin theta, here with r for r sin theta (no square
+  // root, no frame). Beyond them: no overlap. Weaker than the frame's own
+  // cap terms by r (1 - sin theta) and by a margin of 2^-40 of the scene
+  // (their rounding), so that it answers only where those would. Part of
+  // the false-positive planes: switched off with them.
+  if (opt.false_positive_planes) {
+    const Vec3 v = 0.5 * (a.p + a.q) - 0.5 * (b.p + b.q);
+    const double c = std::fabs(dot(ax_a.u, ax_b.u));
+    const double m = 0x1p-40 * std::max({max_abs(v), ax_a.half, ax_b.half, a.r, b.r});
+    if (std::fabs(dot(ax_b.u, v)) - ax_b.half - ax_a.half * c - a.r > m ||
+        std::fabs(dot(ax_a.u, v)) - ax_a.half - ax_b.half * c - b.r > m)
+      return {};
+  }
   // Roles: B (the frame) is the first in RoleKey order.
   const bool b_is_frame = first(RoleKey(b), RoleKey(a));
   const Frame f = b_is_frame ? Frame(a, ax_a, b, ax_b, opt) : Frame(b, ax_b, a, ax_a, opt);

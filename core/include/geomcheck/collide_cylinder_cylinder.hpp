@@ -10,7 +10,10 @@
 //   1. The two false-positive planes: B's cap planes pushed out by A's
 //      reach along u_B (r_A sin theta). Both end points of S_A beyond one of
 //      them: no overlap (the plane separates). Likewise A's cap planes
-//      against B. Cheap, and the early-out of most separated pairs.
+//      against B. Cheap, and the early-out of most separated pairs: first
+//      with r_A for r_A sin theta, before the frame is built (no square
+//      root; it answers only where the exact test below would), then
+//      exactly, as the cap terms of the slice test.
 //   2. The frame built from both axes: z = u_B, y = u_B x u_A (the common
 //      perpendicular, from a compensated cross product), x = y x z. Every
 //      plane y = const contains a parallel of both axes, so it cuts A in a

@@ -49,10 +49,16 @@ struct Triangle { Vec3 a, b, c; };
 struct MovingSphere { Vec3 c; double r = 0; Vec3 delta; };
 
 namespace detail {
-/// Pairwise sum of z[lo, hi): dependency depth log2(n), not n.
-template <std::size_t N>
-constexpr double pairwise_sum(const double (&z)[N], std::size_t lo, std::size_t hi) {
-  return hi - lo == 1 ? z[lo] : pairwise_sum(z, lo, lo + (hi - lo) / 2) + pairwise_sum(z, lo + (hi - lo) / 2, hi);
+/// Pairwise sum of z[Lo, Hi): dependency depth log2(n), not n. The bounds
+/// are template arguments, so that the whole tree is unrolled and inlined
+/// (with run-time bounds it compiled to a recursive call).
+template <std::size_t Lo, std::size_t Hi, std::size_t N>
+constexpr double pairwise_sum(const double (&z)[N]) {
+  if constexpr (Hi - Lo == 1) {
+    return z[Lo];
+  } else {
+    return pairwise_sum<Lo, Lo + (Hi - Lo) / 2>(z) + pairwise_sum<Lo + (Hi - Lo) / 2, Hi>(z);
+  }
 }
 }  // namespace detail
 
@@ -62,7 +68,7 @@ constexpr double pairwise_sum(const double (&z)[N], std::size_t lo, std::size_t 
 template <class... T>
 constexpr bool all_finite(T... v) {
   const double z[] = {(0.0 * v)...};
-  return detail::pairwise_sum(z, 0, sizeof...(T)) == 0.0;
+  return detail::pairwise_sum<0, sizeof...(T)>(z) == 0.0;
 }
 inline bool all_finite(Vec3 a) { return all_finite(a.x, a.y, a.z); }
 
