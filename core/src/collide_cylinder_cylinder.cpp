@@ -190,16 +190,26 @@ struct Frame {
       S = std::sqrt(P * P + c2 * Q * Q);
       return R1 + R2 * S + K * Q - y0 * P;
     }
-    // The Newton step in the angle at (P, Q): -f' / f'', both multiplied by
-    // S^3 (one division); a fixed step downhill where f'' <= 0, and towards
-    // P > 0 from the kink S = 0 (cZ = 0 at Q = 1: rim against side).
-    double newton_step(double P, double Q, double S) const {
-      if (!(S > 0)) return -0.25;
+    // Half the Newton step in the angle at (P, Q), -f' / (2 f''), as the
+    // fraction a / b (b > 0; both derivatives multiplied by S^3), clamped
+    // to +-1/4; a fixed 1/8 downhill where f'' <= 0, and towards P > 0 from
+    // the kink S = 0 (cZ = 0 at Q = 1: rim against side). As a fraction, the
+    // rotation by it needs one division, not two.
+    void half_step(double P, double Q, double S, double& a, double& b) const {
+      if (!(S > 0)) {
+        a = -1, b = 8;
+        return;
+      }
       const double S2 = S * S, S3 = S2 * S, pq = P * Q;
       const double d1 = -R2 * s2 * pq * S2 + (K * P + y0 * Q) * S3;
       const double d2 = -R2 * s2 * ((P * P - Q * Q) * S2 + s2 * pq * pq) + (y0 * P - K * Q) * S3;
-      const double step = d2 > 0 ? -d1 / d2 : (d1 > 0 ? -0.25 : 0.25);
-      return std::clamp(step, -0.5, 0.5);
+      if (!(d2 > 0)) {
+        a = d1 > 0 ? -1 : 1, b = 8;
+        return;
+      }
+      a = -d1, b = 2 * d2;
+      if (!(b > 0x1p-400 && b < 0x1p+400)) a = a / b, b = 1;  // squares kept normal
+      if (!(std::fabs(a) <= 0.25 * b)) a = std::copysign(1.0, a), b = 4;
     }
     // A lower bound of f on the quarter circle from S >= P: R1 plus the
     // minimum of the linear (R2 - y0) P + K Q there.
@@ -221,10 +231,13 @@ struct Frame {
         else P = 0, Q = 1, o = end_q1, S = std::sqrt(c2);
       }
       for (int it = 0; it < steps; ++it) {
-        double t = 0.5 * newton_step(P, Q, S);
+        double a, b;
+        half_step(P, Q, S, a, b);
         bool moved = false;
-        for (int k = 0; k < 2 && !moved; ++k, t *= 0.5) {
-          const double w = 1 / (1 + t * t), cr = (1 - t * t) * w, sr = 2 * t * w;
+        for (int k = 0; k < 2 && !moved; ++k, b *= 2) {
+          // The rotation by the angle of half-angle tangent t = a / b:
+          // ((1 - t^2), 2 t) / (1 + t^2), here times b^2 / b^2.
+          const double a2 = a * a, b2 = b * b, w = 1 / (a2 + b2), cr = (b2 - a2) * w, sr = 2 * a * b * w;
           double P2 = P * cr - Q * sr, Q2 = Q * cr + P * sr;
           if (P2 < 0) P2 = 0, Q2 = 1;  // past an end of the quadrant: the end
           if (Q2 < 0) P2 = 1, Q2 = 0;
