@@ -3,13 +3,8 @@
 //   bench_collide_cylinder_triangle [--benchmark_* flags]
 //   GEOMCHECK_BENCH_SEED=<n> bench_collide_cylinder_triangle   (other inputs)
 //
-// Two batches of kBatch cylinder/triangle pairs from a fixed seed (printed),
-// each shuffled so that branches are not predictable:
-//   random   random poses, exactly half of them overlapping (or touching);
-//   contact  pairs in contact: every one overlapping (shallow and deep as the
-//            generator gives them), so that every FCL collide runs MPR's
-//            penetration phase.
-// The verdicts that select the pairs are the certified engine's
+// The batches, benchmarks and ratios are bench_pair.hpp's. The verdicts
+// that select the pairs are the certified engine's
 // (oracles/engine.hpp: classify), not production's, so that the inputs are
 // the same whatever the implementation under measurement answers.
 // Triangles: three vertices 0.7 from a centre in random directions (random
@@ -21,52 +16,25 @@
 // FCL's mesh traversal runs for each triangle, fcl::collide having no
 // cylinder/triangle pair); BM_fcl_collide_adapter_* adds the adapter's
 // validation, conversion and guarded support functions (fcl_adapter.hpp)
-// for reference. After the run the program prints ns/query and the
-// FCL/production ratios per batch.
-#include <benchmark/benchmark.h>
-
-#include <algorithm>
+// for reference.
 #include <cmath>
-#include <cstdio>
-#include <string>
-#include <utility>
-#include <vector>
 
-#include "bench_common.hpp"
-#include "bench_random.hpp"
+#include "bench_pair.hpp"
 #include "geomcheck/collide_cylinder_triangle.hpp"
 #include "geomcheck/oracles/engine.hpp"
-#include "geomcheck/oracles/fcl_adapter.hpp"
-#include "geomcheck/oracles/fcl_convert.hpp"
 
 namespace geomcheck::bench {
 namespace {
 
-constexpr std::size_t kBatch = 4096;
+using Bench = PairBench<Triangle, oracles::FclCylinderTriangle>;
+
 constexpr double kVertexDistance = 0.7;  // from the triangle's centre
-
-struct Pair {
-  Cylinder a;
-  Triangle b;
-};
-
-struct Batch {
-  std::vector<Pair> pairs;
-  std::vector<oracles::FclCylinderTriangle> fcl;  // the same pairs, converted for FCL
-};
-
-struct Inputs {
-  std::uint64_t seed = 0;
-  Batch random, contact;
-  std::size_t undecided = 0;      // pairs the engine left undecided (skipped)
-  std::size_t contact_draws = 0;  // random poses drawn for the contact batch
-};
 
 /// A random pose: the triangle's centre uniform in the cylinder grown by
 /// 0.7 (half length + 0.7 along the axis from the middle, radius + 0.7 from
 /// the axis), its vertices 0.7 from the centre in uniform random directions.
-Pair random_pair(Rng& rng) {
-  Pair pr;
+Bench::Pair random_pair(Rng& rng) {
+  Bench::Pair pr;
   pr.a = rng.cylinder();
   const Vec3 mid = 0.5 * pr.a.p + 0.5 * pr.a.q;
   const Vec3 axis = pr.a.q - pr.a.p;
@@ -88,7 +56,7 @@ Pair random_pair(Rng& rng) {
 }
 
 /// The certified verdict: 1 overlapping or touching, 0 separated, -1 undecided.
-int certified_hit(const Pair& pr) {
+int certified_hit(const Bench::Pair& pr) {
   oracle::EngineOptions opt;
   opt.certificates = false;
   const oracle::Verdict v = oracle::classify(oracle::make_shape(pr.a), oracle::make_shape(pr.b), opt).verdict;
@@ -96,147 +64,12 @@ int certified_hit(const Pair& pr) {
   return v == oracle::Verdict::Separated ? 0 : 1;
 }
 
-void shuffle_and_convert(Batch& b, Rng& rng) {
-  for (std::size_t i = b.pairs.size(); i > 1; --i) std::swap(b.pairs[i - 1], b.pairs[rng.next() % i]);
-  b.fcl.reserve(b.pairs.size());
-  for (const Pair& pr : b.pairs) b.fcl.emplace_back(pr.a, pr.b);
-}
-
-Inputs make_inputs(std::uint64_t seed) {
-  Inputs in;
-  in.seed = seed;
-  Rng rng(seed);
-  std::size_t n_hit = 0, n_miss = 0;
-  while (in.random.pairs.size() < kBatch) {
-    const Pair pr = random_pair(rng);
-    const int hit = certified_hit(pr);
-    if (hit < 0) {
-      ++in.undecided;
-      continue;
-    }
-    if (hit ? n_hit >= kBatch / 2 : n_miss >= kBatch / 2) continue;
-    (hit ? n_hit : n_miss)++;
-    in.random.pairs.push_back(pr);
-  }
-  while (in.contact.pairs.size() < kBatch) {
-    const Pair pr = random_pair(rng);
-    const int hit = certified_hit(pr);
-    ++in.contact_draws;
-    in.undecided += hit < 0;
-    if (hit > 0) in.contact.pairs.push_back(pr);
-  }
-  shuffle_and_convert(in.random, rng);
-  shuffle_and_convert(in.contact, rng);
-  return in;
-}
-
-const Inputs& inputs() {
-  static const Inputs in = make_inputs(seed_from_env());
-  return in;
-}
-
-void bm_prod_overlap(benchmark::State& state, const Batch* b) {
-  for (auto _ : state) {
-    for (const Pair& pr : b->pairs) benchmark::DoNotOptimize(overlap(pr.a, pr.b));
-  }
-  set_per_query(state, b->pairs.size());
-}
-
-void bm_prod_collide(benchmark::State& state, const Batch* b) {
-  for (auto _ : state) {
-    for (const Pair& pr : b->pairs) benchmark::DoNotOptimize(collide(pr.a, pr.b));
-  }
-  set_per_query(state, b->pairs.size());
-}
-
-void bm_fcl_overlap(benchmark::State& state, const Batch* b) {
-  for (auto _ : state) {
-    for (const auto& pr : b->fcl) benchmark::DoNotOptimize(oracles::fcl_overlap_prepared(pr));
-  }
-  set_per_query(state, b->fcl.size());
-}
-
-void bm_fcl_collide(benchmark::State& state, const Batch* b) {
-  for (auto _ : state) {
-    for (const auto& pr : b->fcl) benchmark::DoNotOptimize(oracles::fcl_collide_prepared(pr));
-  }
-  set_per_query(state, b->fcl.size());
-}
-
-// Reference only: validation + conversion + guarded narrow phase, per query.
-void bm_fcl_collide_adapter(benchmark::State& state, const Batch* b) {
-  for (auto _ : state) {
-    for (const Pair& pr : b->pairs) benchmark::DoNotOptimize(oracles::fcl_collide(pr.a, pr.b));
-  }
-  set_per_query(state, b->pairs.size());
-}
-
-void register_batch(const char* set, const Batch& b) {
-  const std::string s = set;
-  benchmark::RegisterBenchmark(("BM_prod_overlap_" + s).c_str(), bm_prod_overlap, &b);
-  benchmark::RegisterBenchmark(("BM_prod_collide_" + s).c_str(), bm_prod_collide, &b);
-  benchmark::RegisterBenchmark(("BM_fcl_overlap_" + s).c_str(), bm_fcl_overlap, &b);
-  benchmark::RegisterBenchmark(("BM_fcl_collide_" + s).c_str(), bm_fcl_collide, &b);
-  benchmark::RegisterBenchmark(("BM_fcl_collide_adapter_" + s).c_str(), bm_fcl_collide_adapter, &b);
-}
-
-void print_batch(const char* set, const Batch& b, std::size_t engine_hits) {
-  std::size_t prod_hits = 0, fcl_hits = 0, agree = 0, both = 0, fcl_not_ok = 0;
-  std::vector<double> excess;  // FCL depth - production depth, where both hit
-  for (std::size_t i = 0; i < b.pairs.size(); ++i) {
-    const Contact p = collide(b.pairs[i].a, b.pairs[i].b);
-    const oracles::PeerContact f = oracles::fcl_collide(b.pairs[i].a, b.pairs[i].b);
-    if (!f.ok) {
-      ++fcl_not_ok;
-      continue;
-    }
-    prod_hits += p.hit;
-    fcl_hits += f.hit;
-    agree += (p.hit == f.hit);
-    if (p.hit && f.hit) {
-      ++both;
-      excess.push_back(f.depth - p.depth);
-    }
-  }
-  std::printf("%-8s overlapping: engine %zu, production %zu, FCL %zu; production and FCL verdicts agree on %zu/%zu "
-              "(FCL not ok: %zu)\n",
-              set, engine_hits, prod_hits, fcl_hits, agree, b.pairs.size(), fcl_not_ok);
-  if (!excess.empty()) {
-    std::sort(excess.begin(), excess.end());
-    std::printf("%-8s FCL depth - production depth over %zu contacts: min %.3g, median %.3g, max %.3g "
-                "(production's is the minimum, FCL's MPR estimate is not)\n",
-                set, both, excess.front(), excess[excess.size() / 2], excess.back());
-  }
-}
-
-void print_inputs(const Inputs& in) {
-  std::printf("cylinder/triangle batches: %zu pairs each, seed = %llu (0x%llx; GEOMCHECK_BENCH_SEED overrides); "
-              "selected by the certified engine's verdicts (%zu undecided pairs skipped)\n",
-              in.random.pairs.size(), static_cast<unsigned long long>(in.seed),
-              static_cast<unsigned long long>(in.seed), in.undecided);
-  std::printf("random poses overlapping (or touching): %zu of %zu drawn for the contact batch (%.0f%%)\n",
-              in.contact.pairs.size(), in.contact_draws, 100.0 * in.contact.pairs.size() / in.contact_draws);
-  print_batch("random", in.random, in.random.pairs.size() / 2);
-  print_batch("contact", in.contact, in.contact.pairs.size());
-  std::printf("\n");
-  std::fflush(stdout);
-}
-
 }  // namespace
 }  // namespace geomcheck::bench
 
 int main(int argc, char** argv) {
   using namespace geomcheck::bench;
-  print_inputs(inputs());
-  register_batch("random", inputs().random);
-  register_batch("contact", inputs().contact);
-  CaptureReporter reporter(kBatch);
-  if (int rc = run_benchmarks(argc, argv, reporter)) return rc;
-  print_summary(reporter, {
-                              {"overlap fcl/prod (random)", {"BM_fcl_overlap_random", "BM_prod_overlap_random"}},
-                              {"collide fcl/prod (random)", {"BM_fcl_collide_random", "BM_prod_collide_random"}},
-                              {"overlap fcl/prod (contact)", {"BM_fcl_overlap_contact", "BM_prod_overlap_contact"}},
-                              {"collide fcl/prod (contact)", {"BM_fcl_collide_contact", "BM_prod_collide_contact"}},
-                          });
-  return 0;
+  const Bench bench{"cylinder/triangle", random_pair,
+                    "production's is the minimum, FCL's MPR estimate is not", certified_hit, "the certified engine"};
+  return bench.run(argc, argv);
 }

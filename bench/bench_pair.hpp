@@ -1,14 +1,17 @@
 // geomcheck benchmarks — a cylinder against another convex shape,
-// production against FCL on the same inputs, in one run (the capsule, box
-// and cylinder pairs).
+// production against FCL on the same inputs, in one run (the capsule, box,
+// triangle and cylinder pairs).
 //
 // Two batches of kPairBatch pairs from a fixed seed (printed), each
 // shuffled so that branches are not predictable:
 //   random   random poses, exactly half of them overlapping according to
-//            production;
-//   contact  pairs in contact: every one overlapping according to
-//            production (shallow and deep as the generator gives them), so
-//            that every FCL collide runs MPR's penetration phase.
+//            the selecting verdict;
+//   contact  pairs in contact: every one overlapping according to it
+//            (shallow and deep as the generator gives them), so that every
+//            FCL collide runs MPR's penetration phase.
+// The selecting verdict is production's overlap unless the program gives
+// its own (the triangle: the certified engine's, so that the inputs do not
+// depend on the implementation under measurement).
 // The FCL benchmarks time fcl::collide on shapes converted once beforehand
 // (fcl_convert.hpp: FCL as shipped, libccd's MPR, GST_LIBCCD);
 // BM_fcl_collide_adapter_* adds the adapter's validation, conversion and
@@ -50,11 +53,17 @@ struct PairBench {
   struct Inputs {
     std::uint64_t seed = 0;
     Batch random, contact;
+    std::size_t undecided = 0;      ///< poses the selecting verdict left undecided (skipped)
+    std::size_t contact_draws = 0;  ///< poses drawn for the contact batch
   };
 
   const char* name;            ///< e.g. "cylinder/capsule"
   Pair (*random_pair)(Rng&);   ///< one random pose
   const char* depth_note;      ///< what the two depths are, printed with their differences
+  /// The selecting verdict: 1 overlapping (or touching), 0 apart, -1
+  /// undecided (the pose is skipped); null: production's overlap.
+  int (*verdict)(const Pair&) = nullptr;
+  const char* selected_by = "production";  ///< whose verdict `verdict` is
 
   static void shuffle_and_convert(Batch& b, Rng& rng) {
     for (std::size_t i = b.pairs.size(); i > 1; --i) std::swap(b.pairs[i - 1], b.pairs[rng.next() % i]);
@@ -66,17 +75,25 @@ struct PairBench {
     Inputs in;
     in.seed = seed;
     Rng rng(seed);
+    auto hit_of = [&](const Pair& pr) { return verdict ? verdict(pr) : int(overlap(pr.a, pr.b)); };
     std::size_t n_hit = 0, n_miss = 0;
     while (in.random.pairs.size() < kPairBatch) {
       const Pair pr = random_pair(rng);
-      const bool hit = overlap(pr.a, pr.b);
+      const int hit = hit_of(pr);
+      if (hit < 0) {
+        ++in.undecided;
+        continue;
+      }
       if (hit ? n_hit >= kPairBatch / 2 : n_miss >= kPairBatch / 2) continue;
       (hit ? n_hit : n_miss)++;
       in.random.pairs.push_back(pr);
     }
     while (in.contact.pairs.size() < kPairBatch) {
       const Pair pr = random_pair(rng);
-      if (overlap(pr.a, pr.b)) in.contact.pairs.push_back(pr);
+      const int hit = hit_of(pr);
+      ++in.contact_draws;
+      in.undecided += hit < 0;
+      if (hit > 0) in.contact.pairs.push_back(pr);
     }
     shuffle_and_convert(in.random, rng);
     shuffle_and_convert(in.contact, rng);
@@ -154,9 +171,12 @@ struct PairBench {
   /// The whole program: inputs, benchmarks, the ns/query table and ratios.
   int run(int argc, char** argv) const {
     const Inputs in = make_inputs(seed_from_env());
-    std::printf("%s batches: %zu pairs each, seed = %llu (0x%llx; GEOMCHECK_BENCH_SEED overrides)\n", name,
-                in.random.pairs.size(), static_cast<unsigned long long>(in.seed),
-                static_cast<unsigned long long>(in.seed));
+    std::printf("%s batches: %zu pairs each, seed = %llu (0x%llx; GEOMCHECK_BENCH_SEED overrides); selected by %s's "
+                "verdicts (%zu undecided poses skipped)\n",
+                name, in.random.pairs.size(), static_cast<unsigned long long>(in.seed),
+                static_cast<unsigned long long>(in.seed), selected_by, in.undecided);
+    std::printf("random poses overlapping (or touching): %zu of %zu drawn for the contact batch (%.0f%%)\n",
+                in.contact.pairs.size(), in.contact_draws, 100.0 * in.contact.pairs.size() / in.contact_draws);
     print_batch("random", in.random);
     print_batch("contact", in.contact);
     std::printf("\n");
