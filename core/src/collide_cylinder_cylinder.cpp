@@ -39,10 +39,11 @@ bool first(const RoleKey& a, const RoleKey& b) {
   return a.d2 >= b.d2;
 }
 
-// A cylinder's unit axis and half length (in the scaled scene).
+// A cylinder's unit axis, half length and middle (in the scaled scene).
 struct Axis {
   Vec3 u;
   double half;
+  Vec3 mid;
 };
 
 // One term of G: c - al * kA(y) - be * kB(y).
@@ -71,12 +72,12 @@ struct Frame {
   Term t[4];
   double lo, hi;  // the slices where both cylinders have a section
 
-  Frame(const Cylinder& A, const Axis& axA, const Cylinder& B, const Axis& axB, const CylinderPairOptions& opt)
-      : rA(A.r), rB(B.r), hA(axA.half), hB(axB.half) {
+  Frame(double radius_a, const Axis& axA, double radius_b, const Axis& axB, const CylinderPairOptions& opt)
+      : rA(radius_a), rB(radius_b), hA(axA.half), hB(axB.half) {
     uA = axA.u;
     z = axB.u;
-    origin = 0.5 * (B.p + B.q);
-    const Vec3 v = 0.5 * (A.p + A.q) - origin;
+    origin = axB.mid;
+    const Vec3 v = axA.mid - origin;
     const double c = dot(uA, z);
     // The common perpendicular. u_B x u_A loses digits as 1 / theta (the
     // products cancel); u_B x (u_A -+ u_B) does not: the difference of two
@@ -98,25 +99,22 @@ struct Frame {
       sx0 = 0;
       cz0 = c;
       X0 = dot(x, v);
-    } else if (const double l2 = dot(cr, cr); l2 > kSafeLo * kSafeLo && l2 < kSafeHi * kSafeHi) {
+    } else {
       // The products with the unnormalised cr and xr = cr x z (as long as
       // cr, which is perpendicular to z) go alongside the square root and
-      // the division, off the critical path; the scale comes last.
-      const Vec3 xr = cross(cr, z);
-      const double yv = dot(cr, v), xv = dot(xr, v), xu = dot(xr, uA);
-      const double inv = (yv == 0 ? 1.0 : std::copysign(1.0, yv)) / std::sqrt(l2);
-      y = inv * cr, y0 = inv * yv;
+      // the division, off the critical path; the scale comes last. cr is
+      // first scaled by a power of two (exact) where its square would leave
+      // the normal range. (cr = 0 only without the parallel branch: inv is
+      // infinite and the frame NaN, that tooth's failure.)
+      Vec3 cs = cr;
+      if (const double m = max_abs(cr), l2 = dot(cr, cr); m > 0 && !(l2 > kSafeLo * kSafeLo && l2 < kSafeHi * kSafeHi))
+        cs = scaled_down(cr, m);
+      const Vec3 xr = cross(cs, z);
+      const double yv = dot(cs, v), xv = dot(xr, v), xu = dot(xr, uA);
+      const double inv = (yv == 0 ? 1.0 : std::copysign(1.0, yv)) / std::sqrt(dot(cs, cs));
+      y = inv * cs, y0 = inv * yv;
       x = inv * xr, X0 = inv * xv, sx0 = inv * xu;
       cz0 = dot(z, uA);
-    } else {
-      y = max_abs(cr) == 0 ? (1.0 / length(cr)) * cr : normalized(cr);  // NaN without the branch
-      y0 = dot(y, v);
-      const double sy = sign_if(y0 < 0);
-      y = sy * y, y0 = sy * y0;
-      x = cross(y, z);
-      sx0 = dot(x, uA);
-      cz0 = dot(z, uA);
-      X0 = dot(x, v);
     }
     Z0 = dot(z, v);
     // The canonical signs (see above). Each is a coin toss on random
@@ -417,7 +415,7 @@ Contact scaled(const Cylinder& a, const Axis& ax_a, const Cylinder& b, const Axi
   // (their rounding), so that it answers only where those would. Part of
   // the false-positive planes: switched off with them.
   if (opt.false_positive_planes) {
-    const Vec3 v = 0.5 * (a.p + a.q) - 0.5 * (b.p + b.q);
+    const Vec3 v = ax_a.mid - ax_b.mid;
     const double c = std::fabs(dot(ax_a.u, ax_b.u));
     const double m = 0x1p-40 * std::max({max_abs(v), ax_a.half, ax_b.half, a.r, b.r});
     if (std::fabs(dot(ax_b.u, v)) - ax_b.half - ax_a.half * c - a.r > m ||
@@ -426,7 +424,7 @@ Contact scaled(const Cylinder& a, const Axis& ax_a, const Cylinder& b, const Axi
   }
   // Roles: B (the frame) is the first in RoleKey order.
   const bool b_is_frame = first(RoleKey(b), RoleKey(a));
-  const Frame f = b_is_frame ? Frame(a, ax_a, b, ax_b, opt) : Frame(b, ax_b, a, ax_a, opt);
+  const Frame f = b_is_frame ? Frame(a.r, ax_a, b.r, ax_b, opt) : Frame(b.r, ax_b, a.r, ax_a, opt);
   Contact out;
   if (!(f.lo <= f.hi)) return out;  // the axes' lines more than rA + rB apart
   // Early-outs: each term bounded below over all slices (k <= r); the cap
@@ -498,13 +496,14 @@ Contact scaled(const Cylinder& a, const Axis& ax_a, const Cylinder& b, const Axi
 // scaled ones; bit-identical to the scaled computation wherever neither
 // overflows or underflows.
 Axis axis_of(const Cylinder& c, const SceneScale& sc) {
+  const Vec3 p = sc.in(c.p), q = sc.in(c.q), mid = 0.5 * (p + q);
   const Vec3 d = c.q - c.p;
   if (is_finite(d)) {
     const UnitAndLength ul(d);
-    if (std::isfinite(ul.len)) return {ul.u, 0.5 * sc.in(ul.len)};
+    if (std::isfinite(ul.len)) return {ul.u, 0.5 * sc.in(ul.len), mid};
   }
-  const UnitAndLength ul(sc.in(c.q) - sc.in(c.p));
-  return {ul.u, 0.5 * ul.len};
+  const UnitAndLength ul(q - p);
+  return {ul.u, 0.5 * ul.len, mid};
 }
 
 }  // namespace
