@@ -334,7 +334,10 @@ Contact collide_scaled(const Cylinder& cyl, const Obb& box, detail::ObbCapStage 
     if (z < -best.o || z > s.len + best.o) continue;
     const double rho = detail::safe_length(w - z * s.u);
     if (rho < s.r - best.o || rho > s.r + best.o) continue;
-    best.consider(detail::unit_perpendicular_part(w, s.u));
+    // A vertex on the axis line (to rounding) has no radial direction: every
+    // one is alike, and a pick would not reflect with the scene.
+    Vec3 n;
+    if (detail::radial_direction(w, s.u, n)) best.consider(n);
   }
   search_rim_edges(s, v.point, best);
   const Vec3 n = s.from_box(best.n);

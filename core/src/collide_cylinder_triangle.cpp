@@ -45,6 +45,17 @@ struct TriSpace {
     return {det(a[1], b[2], a[2], b[1]), det(a[2], b[0], a[0], b[2]), det(a[0], b[1], a[1], b[0])};
   }
   bool flat() const { return max_abs(nt) > 0; }
+  // The longest edge, V[lk] -> V[lk + 1]: a point of the triangle projects
+  // onto it between its ends.
+  int longest() const {
+    int k = 0;
+    double l2 = -1;
+    for (int i = 0; i < 3; ++i) {
+      const Vec3 e = V[i == 2 ? 0 : i + 1] - V[i];
+      if (dot(e, e) > l2) l2 = dot(e, e), k = i;
+    }
+    return k;
+  }
 };
 
 // The sign of a . b, exactly: the six products split exactly into sums of
@@ -96,8 +107,17 @@ Vec3 on_segment(Vec3 a, Vec3 b, Vec3 x) {
 }
 
 // Is x (in the triangle's plane, up to rounding) inside the closed
-// triangle? The signs of the triple products with the normal.
+// triangle? The signs of the triple products with the normal, and x
+// between the ends of the longest edge along it. The second test follows
+// from the first in exact arithmetic, but on a sliver the triple products
+// of a point near the sliver's line are rounding noise however far beyond
+// the sliver's ends it lies (the edges are all nearly along that line);
+// the projection onto the longest edge is accurate there.
 bool inside(const TriSpace& s, Vec3 x) {
+  const int lk = s.longest();
+  const Vec3 a0 = s.V[lk], e0 = s.V[lk == 2 ? 0 : lk + 1] - a0;
+  const double along = dot(x - a0, e0);
+  if (along < 0 || along > dot(e0, e0)) return false;
   for (int k = 0; k < 3; ++k) {
     const Vec3 a = s.V[k], b = s.V[k == 2 ? 0 : k + 1];
     if (dot(s.nt, cross(b - a, x - a)) < 0) return false;
@@ -188,12 +208,7 @@ Closest segment_triangle(const TriSpace& s) {
       // against the plane through the longest edge AB whose normal is made
       // exactly perpendicular to AB, so that only its turn about AB (whose
       // error is bounded by the width of the sliver) is rounding.
-      int k = 0;
-      double l2 = -1;
-      for (int i = 0; i < 3; ++i) {
-        const Vec3 e = s.V[i == 2 ? 0 : i + 1] - s.V[i];
-        if (dot(e, e) > l2) l2 = dot(e, e), k = i;
-      }
+      const int k = s.longest();
       const Vec3 A = s.V[k], e = detail::normalized(s.V[k == 2 ? 0 : k + 1] - A);
       const Vec3 n0 = cross(e, s.V[k == 0 ? 2 : k - 1] - A);
       const Vec3 n = n0 - dot(n0, e) * e;
@@ -370,7 +385,10 @@ Contact collide_scaled(const Cylinder& cyl, const Triangle& tri, detail::TriCapS
     if (z < -best.o || z > s.len + best.o) continue;
     const double rho = detail::safe_length(w - z * s.u);
     if (rho < s.r - best.o || rho > s.r + best.o) continue;
-    best.consider(detail::unit_perpendicular_part(w, s.u));
+    // A vertex on the axis line (to rounding) has no radial direction: every
+    // one is alike, and a pick would not reflect with the scene.
+    Vec3 n;
+    if (detail::radial_direction(w, s.u, n)) best.consider(n);
   }
   // Rim x edge. The frame across the axis: f1 towards the vertex farthest
   // from the axis, f2 oriented by the vertices (both reflect with the scene).

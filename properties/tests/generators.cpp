@@ -1785,7 +1785,17 @@ TriCase tri_axis_plane(const Scene& sc, const Frame& f) {
   const Vec3 o = c.p + s * rad;
   auto at = [&](double along, double acr) { return o + along * f.u + acr * tng; };
   std::string tag = kind == 0 ? "axisplane-through" : "axisplane-chord";
-  const int place = pick_int(0, 3);
+  const int place = pick_int(0, kind == 0 ? 4 : 3);
+  if (place == 4) {
+    // An edge along the axis line (its ends computed from p and q, so a few
+    // ulps off it), the third vertex in the plane across it: the edge's
+    // direction in a cap plane is rounding noise.
+    auto on_axis = [&](double t) { return t <= 0.5 ? c.p + t * (c.q - c.p) : c.q - (1 - t) * (c.q - c.p); };
+    const double t0 = pick_int(0, 2) == 0 ? 0.0 : pick_real(-0.5, 0.5);
+    const double t1 = pick_int(0, 2) == 0 ? 1.0 : pick_real(0.5, 1.5);
+    const Triangle t{on_axis(t0), on_axis(t1), at(pick_real(-0.5, 1.5) * len, pick_real(0.1, 3) * w * (pick_int(0, 1) ? 1 : -1))};
+    return {{c, restate(t)}, tag + "-axis-edge"};
+  }
   if (place == 3) {
     Triangle t = face_around(at(pick_real(0, 1) * len, pick_real(-1, 1) * w), f.u, tng, tri_len(sc.size));
     return {{c, restate(t)}, tag + "-across"};

@@ -108,12 +108,15 @@ rc::Gen<std::pair<CylinderObbCase, std::string>> cylinder_obb_case();
 ///                                 at in-plane radius r + gap, or over the
 ///                                 disc;
 ///   axisplane-through|chord-side|cap|corner-vertex|edge, -across,
+///   axisplane-through-axis-edge,
 ///   axisplane-beside              a triangle in a plane parallel to the
 ///                                 axis (through it, cutting a chord, at
 ///                                 r + gap), a vertex or an edge at the
 ///                                 section's long side, short side or
-///                                 corner (in-plane gap), or covering a
-///                                 point of the section;
+///                                 corner (in-plane gap), covering a
+///                                 point of the section, or with an edge
+///                                 along the axis (-axis-edge: its ends a
+///                                 few ulps off the axis line);
 ///   capcross-deep|gap|touch|outside  a tilted triangle through a cap plane
 ///                                 whose point nearest the axis segment is
 ///                                 beyond the cap (within r of its centre)

@@ -39,28 +39,41 @@ inline double safe_length(Vec3 v) {
   return std::ldexp(length(scaled_down(v, m)), std::ilogb(m));
 }
 
-/// A unit vector perpendicular to unit u along the part of v perpendicular
-/// to u; any unit perpendicular when that part vanishes. The result is
-/// perpendicular to u to rounding whatever v is: when v is nearly parallel
-/// to u, subtracting its axial component cancels to noise, so the direction
-/// is then built from v's components in an orthonormal frame around u.
-inline Vec3 unit_perpendicular_part(Vec3 v, Vec3 u) {
+/// The unit vector perpendicular to unit u along the part of v
+/// perpendicular to u, into `out`; false (out untouched) when that part
+/// vanishes, i.e. v has no direction across u. The result is perpendicular
+/// to u to rounding whatever v is: when v is nearly parallel to u,
+/// subtracting its axial component cancels to noise, so the direction is
+/// then built from v's components in an orthonormal frame around u. A
+/// reflection of v and u reflects the result bit for bit (the frame is
+/// any_perpendicular's, which a reflection reflects or negates, and the
+/// components change sign with it).
+inline bool radial_direction(Vec3 v, Vec3 u, Vec3& out) {
   const Vec3 w = v - dot(v, u) * u;
   const double wl2 = dot(w, w), vl2 = dot(v, v);
   // Fast path: w well above the cancellation level of v.
   if (wl2 > 0x1p-40 * vl2 && wl2 > kSafeLo * kSafeLo && vl2 < kSafeHi * kSafeHi) {
     const Vec3 r = (1.0 / std::sqrt(wl2)) * w;
-    return normalized(r - dot(r, u) * u);
+    out = normalized(r - dot(r, u) * u);
+    return true;
   }
   const Vec3 e1 = any_perpendicular(u);
   const Vec3 e2 = cross(u, e1);
   const double a = dot(v, e1), b = dot(v, e2);
   const double m = std::max(std::fabs(a), std::fabs(b));
-  if (!(m > 0) || !std::isfinite(m)) return e1;
+  if (!(m > 0) || !std::isfinite(m)) return false;
   const int e = std::ilogb(m);
   const double as = std::ldexp(a, -e), bs = std::ldexp(b, -e);
   const double l = std::sqrt(as * as + bs * bs);
-  return (as / l) * e1 + (bs / l) * e2;
+  out = (as / l) * e1 + (bs / l) * e2;
+  return true;
+}
+
+/// radial_direction, or any unit perpendicular to u (any_perpendicular's,
+/// which a reflection need not reflect) when v has no direction across u.
+inline Vec3 unit_perpendicular_part(Vec3 v, Vec3 u) {
+  Vec3 out;
+  return radial_direction(v, u, out) ? out : any_perpendicular(u);
 }
 
 /// Unit vector along d (non-zero, finite) and |d|, with one square root.

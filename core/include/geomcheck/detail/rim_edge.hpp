@@ -136,10 +136,14 @@ void rim_edge_minima(const RimFrame& fr, double sg, Vec3 v, Vec3 e, Consider&& c
   double bound = 0;
   for (int i = 0; i < 4; ++i) bound = std::max(bound, std::fabs(a[i]));
   bound = 1 + bound / std::fabs(a[4]);  // Cauchy: every root within
+  // Each candidate is divided by its own length rather than by
+  // sqrt(uj^2 + dj^2), which is its length only when d is a unit vector
+  // across the axis: the overlap along a short vector is short by as much,
+  // and would pass for a depth below the penetration depth.
   auto emit = [&](Vec3 d) {
-    const double dj = dot(d, e);
-    const double l = std::sqrt(uj * uj + dj * dj);
-    if (l > 0) consider((1.0 / l) * (std::fabs(uj) * d + std::fabs(dj) * m));
+    const Vec3 n = std::fabs(uj) * d + std::fabs(dot(d, e)) * m;
+    const double l2 = dot(n, n);
+    if (l2 > 0) consider((1.0 / std::sqrt(l2)) * n);
   };
   double root[4];
   const int nr = poly_rising_roots(a, 4, -bound, bound, root);
@@ -161,7 +165,13 @@ void rim_edge_minima(const RimFrame& fr, double sg, Vec3 v, Vec3 e, Consider&& c
   // times their own size, not the scale's. Its rising roots in |x| <= 1e-3
   // are considered too (the window holds every crowd the quartic cannot
   // resolve; a stray candidate only costs an evaluation).
-  const Vec3 ep = e - uj * fr.u;
+  // h2: e's direction in the cap plane. For an edge nearly along the axis,
+  // e - uj u has cancelled to rounding noise that is not perpendicular to
+  // the axis; a second projection makes it so (to rounding), so that h1, h2
+  // stay an orthonormal pair there. Both passes are dot products and
+  // scalings, so a reflected scene gives the reflected h2 bit for bit.
+  Vec3 ep = e - uj * fr.u;
+  ep = ep - dot(ep, fr.u) * fr.u;
   const double lp = std::sqrt(dot(ep, ep));
   if (!(lp > 0)) return;
   const Vec3 h2 = (1.0 / lp) * ep, h1 = cross(h2, cross(fr.f1, fr.f2));
