@@ -58,16 +58,15 @@ struct TriSpace {
   }
 };
 
-// The sign of a . b, exactly: the six products split exactly into sums of
-// two doubles (fma), summed as a non-overlapping expansion (Shewchuk's
-// grow-expansion, zeros dropped), whose largest component has the sign of
-// the sum. A reflection of the scene negates the exact value, so an
-// orientation chosen by this sign is reflected with the scene even where
-// the rounded product is zero or noise.
-int exact_dot_sign(Vec3 a, Vec3 b) {
-  double e[12];
+// Exact signs of sums of products: each product splits exactly into a sum
+// of two doubles (fma), and the parts are summed as a non-overlapping
+// expansion (Shewchuk's grow-expansion, zeros dropped), whose largest
+// component has the sign of the sum. Exact while no product underflows.
+template <int N>
+struct ExactSum {
+  double e[N];
   int m = 0;
-  auto grow = [&](double x) {
+  void grow(double x) {
     int k = 0;
     double q = x;
     for (int i = 0; i < m; ++i) {
@@ -77,13 +76,45 @@ int exact_dot_sign(Vec3 a, Vec3 b) {
     }
     if (q != 0) e[k++] = q;
     m = k;
-  };
-  for (int i = 0; i < 3; ++i) {
-    const double hi = a[i] * b[i], lo = std::fma(a[i], b[i], -hi);
+  }
+  void add_product(double x, double y) {
+    const double hi = x * y, lo = std::fma(x, y, -hi);
     grow(lo);
     grow(hi);
   }
-  return m == 0 ? 0 : (e[m - 1] > 0 ? 1 : -1);
+  int sign() const { return m == 0 ? 0 : (e[m - 1] > 0 ? 1 : -1); }
+};
+
+// The sign of a . b, exactly. A reflection of the scene negates the exact
+// value, so an orientation chosen by this sign is reflected with the scene
+// even where the rounded product is zero or noise.
+int exact_dot_sign(Vec3 a, Vec3 b) {
+  ExactSum<12> s;
+  for (int i = 0; i < 3; ++i) s.add_product(a[i], b[i]);
+  return s.sign();
+}
+
+// sg * q . (a x b) added to an exact sum: each 2x2 minor of a x b is four
+// exact parts (two products, each split by fma), each part times q_i split
+// again.
+template <int N>
+void add_triple(ExactSum<N>& s, double sg, Vec3 q, Vec3 a, Vec3 b) {
+  for (int i = 0; i < 3; ++i) {
+    const int j = i == 2 ? 0 : i + 1, k = j == 2 ? 0 : j + 1;
+    const double p1 = a[j] * b[k], p1l = std::fma(a[j], b[k], -p1);
+    const double p2 = a[k] * b[j], p2l = std::fma(a[k], b[j], -p2);
+    s.add_product(sg * q[i], p1);
+    s.add_product(sg * q[i], p1l);
+    s.add_product(-sg * q[i], p2);
+    s.add_product(-sg * q[i], p2l);
+  }
+}
+
+// The sign of q . (a x b), exactly.
+int exact_triple_sign(Vec3 q, Vec3 a, Vec3 b) {
+  ExactSum<48> s;
+  add_triple(s, 1.0, q, a, b);
+  return s.sign();
 }
 
 struct Closest {
@@ -173,6 +204,64 @@ void segment_segment(Vec3 p1, Vec3 q1, Vec3 p2, Vec3 q2, Closest& out) {
   out.keep(x1, x2);
 }
 
+// The point where the segment [0, Q] crosses the plane through the
+// triangle's longest edge AB whose normal is made exactly perpendicular to
+// AB, so that only its turn about AB (whose error is bounded by the width
+// of a sliver) is rounding; at parameter t_parallel when the segment is
+// parallel to that plane.
+Vec3 crossing_by_longest_edge(const TriSpace& s, double t_parallel) {
+  const int k = s.longest();
+  const Vec3 A = s.V[k], e = detail::normalized(s.V[k == 2 ? 0 : k + 1] - A);
+  const Vec3 n0 = cross(e, s.V[k == 0 ? 2 : k - 1] - A);
+  const Vec3 n = n0 - dot(n0, e) * e;
+  const double den = dot(n, s.Q);
+  const double t = den != 0 ? std::clamp(dot(n, A) / den, 0.0, 1.0) : t_parallel;
+  return t <= 0.5 ? t * s.Q : s.Q - (1 - t) * s.Q;
+}
+
+// Does the segment [0, Q] meet the triangle, decided exactly (for the
+// offsets)? Its line meets the closed triangle iff the three orientations
+// w[k] = Q . (V_k x V_k+1) agree in sign (not all zero), and the segment
+// meets the plane iff its ends orient oppositely against the triangle (or
+// one lies on it): with T0 = V0 . (V1 x V2) the orientations are T0 (P, the
+// origin) and T0 - (w0 + w1 + w2) (Q). A rounded sign within its error
+// bound of zero is recomputed exactly. Where they meet, the pair of c is
+// replaced by a meeting point: an end on the plane exactly, else the
+// nearest of c's triangle point and the crossing of the plane through the
+// longest edge (segment_triangle's), whichever lies nearer the other shape.
+void meet_exactly(const TriSpace& s, const double* w, Closest& c) {
+  const double mq = max_abs(s.Q);
+  int sg[3];
+  double wb = 0;
+  for (int k = 0; k < 3; ++k) {
+    const Vec3 a = s.V[k], b = s.V[k == 2 ? 0 : k + 1];
+    const double bound = 0x1p-46 * (mq * max_abs(a) * max_abs(b));
+    wb += bound;
+    sg[k] = std::fabs(w[k]) > bound ? (w[k] > 0 ? 1 : -1) : exact_triple_sign(s.Q, a, b);
+  }
+  const bool pos = sg[0] >= 0 && sg[1] >= 0 && sg[2] >= 0, neg = sg[0] <= 0 && sg[1] <= 0 && sg[2] <= 0;
+  if (!(pos || neg) || (sg[0] == 0 && sg[1] == 0 && sg[2] == 0)) return;
+  const double vv = 0x1p-46 * max_abs(s.V[0]) * max_abs(s.V[1]) * max_abs(s.V[2]);
+  const double t0 = dot(s.V[0], cross(s.V[1], s.V[2])), tq = t0 - (w[0] + w[1] + w[2]);
+  int sp = t0 > 0 ? 1 : (t0 < 0 ? -1 : 0), sq = tq > 0 ? 1 : (tq < 0 ? -1 : 0);
+  if (!(std::fabs(t0) > vv)) sp = exact_triple_sign(s.V[0], s.V[1], s.V[2]);
+  if (!(std::fabs(tq) > vv + wb)) {
+    ExactSum<96> e;
+    add_triple(e, 1.0, s.V[0], s.V[1], s.V[2]);
+    for (int k = 0; k < 3; ++k) add_triple(e, -1.0, s.Q, s.V[k], s.V[k == 2 ? 0 : k + 1]);
+    sq = e.sign();
+  }
+  if (sp != 0 && sp == sq) return;
+  if (sp == 0 || sq == 0) {
+    const Vec3 y = sp == 0 ? Vec3{0, 0, 0} : s.Q;
+    c.d2 = 0, c.tri = y, c.seg = y;
+    return;
+  }
+  const Vec3 y = crossing_by_longest_edge(s, 0.5);
+  c.keep(on_triangle(s, y), y);
+  c.seg = c.tri, c.d2 = 0;
+}
+
 // Closest points of the axis segment [0, Q] and the triangle: attained at
 // an end of the segment (against the triangle), on an edge (against the
 // segment), or where the segment crosses the triangle. The crossing is
@@ -183,8 +272,10 @@ void segment_segment(Vec3 p1, Vec3 q1, Vec3 p2, Vec3 q2, Closest& out) {
 // X and its nearest segment point are kept like the other candidates, so a
 // rounding error can only overstate the distance. The distance is zero
 // outright when the three orientations are of one sign beyond their
-// rounding and X lies inside the segment beyond the rounding of that test
-// (so that a zero-radius cylinder through a triangle overlaps it).
+// rounding and X lies inside the segment beyond the rounding of that test,
+// and when the candidates are apart by more than r but the segment meets
+// the triangle exactly (meet_exactly: so that a zero-radius cylinder
+// through a triangle overlaps it).
 Closest segment_triangle(const TriSpace& s) {
   Closest c;
   const Vec3 P{0, 0, 0};
@@ -204,17 +295,8 @@ Closest segment_triangle(const TriSpace& s) {
     const double xq = dot(x, s.Q), qq = dot(s.Q, s.Q), tol = 0x1p-46 * (max_abs(x) + mq) * mq;
     if (sure && xq > tol && xq < qq - tol) {
       // The meeting point itself, accurately even on a sliver (where the
-      // barycentric weights lose digits to their small sum): the segment
-      // against the plane through the longest edge AB whose normal is made
-      // exactly perpendicular to AB, so that only its turn about AB (whose
-      // error is bounded by the width of the sliver) is rounding.
-      const int k = s.longest();
-      const Vec3 A = s.V[k], e = detail::normalized(s.V[k == 2 ? 0 : k + 1] - A);
-      const Vec3 n0 = cross(e, s.V[k == 0 ? 2 : k - 1] - A);
-      const Vec3 n = n0 - dot(n0, e) * e;
-      const double den = dot(n, s.Q);
-      const double t = den != 0 ? std::clamp(dot(n, A) / den, 0.0, 1.0) : xq / qq;
-      const Vec3 y = t <= 0.5 ? t * s.Q : s.Q - (1 - t) * s.Q;
+      // barycentric weights lose digits to their small sum).
+      const Vec3 y = crossing_by_longest_edge(s, xq / qq);
       c.d2 = 0, c.tri = y, c.seg = y;
       return c;
     }
@@ -223,6 +305,10 @@ Closest segment_triangle(const TriSpace& s) {
   c.keep(on_triangle(s, P), P);
   c.keep(on_triangle(s, s.Q), s.Q);
   for (int k = 0; k < 3; ++k) segment_segment(s.V[k], s.V[k == 2 ? 0 : k + 1], P, s.Q, c);
+  // The candidates are apart by more than r, but they are rounded: does
+  // the segment meet the triangle exactly? (A zero-radius cylinder through
+  // a triangle overlaps it however the rounding falls.)
+  if (!(detail::safe_length(c.tri - c.seg) <= s.r)) meet_exactly(s, w, c);
   return c;
 }
 
