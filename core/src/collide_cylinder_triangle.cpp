@@ -489,15 +489,26 @@ Contact collide_scaled(const Cylinder& cyl, const Triangle& tri, detail::TriCapS
       const double w2 = dot(w, w);
       if (w2 > far2) far2 = w2, far = k;
     }
-    fr.f1 = far2 > 0 ? detail::unit_perpendicular_part(s.V[far], s.u) : any_perpendicular(s.u);
-    fr.f2 = cross(s.u, fr.f1);
-    for (int k = 0; k < 3; ++k) {
-      const int key = exact_dot_sign(fr.f2, s.V[k]);
-      if (key != 0) {
-        if (key < 0) fr.f2 = -fr.f2;
-        break;
+    // Orienting a direction by the first vertex off its plane through the
+    // axis (exact signs, as Best::both).
+    auto orient = [&](Vec3& w) {
+      for (int k = 0; k < 3; ++k) {
+        const int key = exact_dot_sign(w, s.V[k]);
+        if (key != 0) {
+          if (key < 0) w = -w;
+          break;
+        }
       }
+    };
+    // With every vertex on the axis line to rounding (no radial direction),
+    // f1 is any_perpendicular's, which a reflection may negate rather than
+    // reflect; oriented by the vertices it reflects (regression 0008).
+    if (!(far2 > 0) || !detail::radial_direction(s.V[far], s.u, fr.f1)) {
+      fr.f1 = any_perpendicular(s.u);
+      orient(fr.f1);
     }
+    fr.f2 = cross(s.u, fr.f1);
+    orient(fr.f2);
     const Vec3 inner[1] = {v.point};
     const detail::RimPolytope poly{s.V, 3, edge, dir, ne, inner, 1};
     detail::search_rim_edges(fr, Vec3{0, 0, 0}, s.Q, poly, best);
