@@ -94,6 +94,21 @@ int exact_dot_sign(Vec3 a, Vec3 b) {
   return s.sign();
 }
 
+// w turned to the side of the first key off its plane (exact signs); left
+// as it is when every key lies in that plane.
+void orient_by(Vec3& w, const Vec3* keys, int nk) {
+  for (int i = 0; i < nk; ++i) {
+    const int k = exact_dot_sign(w, keys[i]);
+    if (k != 0) {
+      if (k < 0) w = -w;
+      return;
+    }
+  }
+}
+
+// The error bound of q . (a x b) in doubles, mq = max_abs(q).
+double triple_bound(double mq, Vec3 a, Vec3 b) { return 0x1p-46 * (mq * max_abs(a) * max_abs(b)); }
+
 // sg * q . (a x b) added to an exact sum: each 2x2 minor of a x b is four
 // exact parts (two products, each split by fma), each part times q_i split
 // again.
@@ -235,7 +250,7 @@ void meet_exactly(const TriSpace& s, const double* w, Closest& c) {
   double wb = 0;
   for (int k = 0; k < 3; ++k) {
     const Vec3 a = s.V[k], b = s.V[k == 2 ? 0 : k + 1];
-    const double bound = 0x1p-46 * (mq * max_abs(a) * max_abs(b));
+    const double bound = triple_bound(mq, a, b);
     wb += bound;
     sg[k] = std::fabs(w[k]) > bound ? (w[k] > 0 ? 1 : -1) : exact_triple_sign(s.Q, a, b);
   }
@@ -285,7 +300,7 @@ Closest segment_triangle(const TriSpace& s) {
   for (int k = 0; k < 3; ++k) {
     const Vec3 a = s.V[k], b = s.V[k == 2 ? 0 : k + 1];
     w[k] = dot(s.Q, cross(a, b));
-    sure = sure && std::fabs(w[k]) > 0x1p-46 * (mq * max_abs(a) * max_abs(b));
+    sure = sure && std::fabs(w[k]) > triple_bound(mq, a, b);
   }
   const bool pos = w[0] >= 0 && w[1] >= 0 && w[2] >= 0, neg = w[0] <= 0 && w[1] <= 0 && w[2] <= 0;
   const double sum = w[0] + w[1] + w[2];
@@ -421,13 +436,7 @@ struct Best {
   // (exact signs of dot products with offsets of the scene, so that a
   // reflection reflects the choice; a cross product alone would flip it).
   void both(Vec3 w, const Vec3* keys, int nk) {
-    for (int i = 0; i < nk; ++i) {
-      const int k = exact_dot_sign(w, keys[i]);
-      if (k != 0) {
-        if (k < 0) w = -w;
-        break;
-      }
-    }
+    orient_by(w, keys, nk);
     consider(w);
     consider(-w);
   }
@@ -489,26 +498,15 @@ Contact collide_scaled(const Cylinder& cyl, const Triangle& tri, detail::TriCapS
       const double w2 = dot(w, w);
       if (w2 > far2) far2 = w2, far = k;
     }
-    // Orienting a direction by the first vertex off its plane through the
-    // axis (exact signs, as Best::both).
-    auto orient = [&](Vec3& w) {
-      for (int k = 0; k < 3; ++k) {
-        const int key = exact_dot_sign(w, s.V[k]);
-        if (key != 0) {
-          if (key < 0) w = -w;
-          break;
-        }
-      }
-    };
     // With every vertex on the axis line to rounding (no radial direction),
     // f1 is any_perpendicular's, which a reflection may negate rather than
     // reflect; oriented by the vertices it reflects (regression 0008).
     if (!(far2 > 0) || !detail::radial_direction(s.V[far], s.u, fr.f1)) {
       fr.f1 = any_perpendicular(s.u);
-      orient(fr.f1);
+      orient_by(fr.f1, s.V, 3);
     }
     fr.f2 = cross(s.u, fr.f1);
-    orient(fr.f2);
+    orient_by(fr.f2, s.V, 3);
     const Vec3 inner[1] = {v.point};
     const detail::RimPolytope poly{s.V, 3, edge, dir, ne, inner, 1};
     detail::search_rim_edges(fr, Vec3{0, 0, 0}, s.Q, poly, best);
