@@ -4,6 +4,7 @@
 
 #include "capsule_truth.hpp"
 #include "common.hpp"
+#include "contact_checks.hpp"
 #include "geomcheck/collide_cylinder_obb.hpp"
 #include "geomcheck/oracles/cylinder_sphere.hpp"
 #include "geomcheck/properties/checks.hpp"
@@ -110,45 +111,16 @@ Evaluation evaluate(const CylinderObbCase& c, const CylinderObbImpl& impl, const
 CheckResult check_oracle(const CylinderObbCase& c, const CylinderObbImpl& impl) { return judge(kId, evaluate(c, impl)); }
 
 CheckResult check_consistency(const CylinderObbCase& c, const CylinderObbImpl& impl) {
-  const bool ov = impl.overlap(c.a, c.b);
-  const Contact ct = impl.collide(c.a, c.b);
-  if (ov != ct.hit) return Failure{"consistency-overlap-vs-collide", describe(ct, ov)};
-  if (!ct.hit) return std::nullopt;
-  if (!finite_contact(ct)) return Failure{"consistency-finite", describe(ct, ov)};
-  const Tolerances tol = tolerances(kId);
-  if (std::fabs(length(ct.normal) - 1) > tol.unit) return Failure{"consistency-unit-normal", describe(ct, ov)};
-  if (!(ct.depth >= 0)) return Failure{"consistency-depth-nonnegative", describe(ct, ov)};
-  if (!valid_case(c) || !obb_in_contract(c.b)) return std::nullopt;
-  // depth equals the overlap of the shapes along the returned normal.
-  const double scale = scale_of(c);
-  const QInterval along = overlap_along(oracle::make_shape(c.a), oracle::make_shape(c.b), oracle::to_q(ct.normal));
-  if (!std::isfinite(oracle::to_double(along.hi))) return std::nullopt;  // beyond the doubles: saturated depth
-  const double err = rel_error(along, ct.depth, scale);
-  if (err > tol.depth)
-    return Failure{"consistency-depth-along-normal",
-                   fmt("|depth - overlap along normal| = %.3g * scale > %.3g; ", err, tol.depth) + describe(ct, ov)};
-  return std::nullopt;
+  const bool exact = valid_case(c) && obb_in_contract(c.b);
+  return consistent_contact(kId, c, impl, exact, exact ? scale_of(c) : 1.0, tolerances(kId).depth);
 }
 
 namespace {
-// Same solid, other representation: the verdicts agree unless one case is
-// within the band; the depths within twice the depth bound.
+// Same solid, other representation (contact_checks.hpp).
 CheckResult same_answer(const char* what, const CylinderObbCase& c0, const CylinderObbCase& c1,
                         const CylinderObbImpl& impl) {
-  const bool o0 = impl.overlap(c0.a, c0.b), o1 = impl.overlap(c1.a, c1.b);
-  if (o0 != o1) {
-    const Evaluation e0 = evaluate(c0, impl), e1 = evaluate(c1, impl);
-    if (e0.near_boundary || e1.near_boundary) return std::nullopt;
-    return Failure{what, std::string("overlap ") + (o0 ? "yes" : "no") + " becomes " + (o1 ? "yes" : "no") +
-                             "; oracle: " + e0.truth_text};
-  }
-  if (!o0) return std::nullopt;
-  const Contact k0 = impl.collide(c0.a, c0.b), k1 = impl.collide(c1.a, c1.b);
-  const double d = std::fabs(k0.depth - k1.depth) / scale_of(c0);
-  if (d > 2 * tolerances(kId).depth + tolerances(kId).normal)
-    return Failure{std::string(what) + "-depth",
-                   fmt("depth differs by %.3g * scale; ", d) + describe(k0, o0) + " vs " + describe(k1, o1)};
-  return std::nullopt;
+  return geomcheck::same_answer(what, c0, c1, impl, scale_of(c0), 2 * tolerances(kId).depth + tolerances(kId).normal,
+                                [](const CylinderObbCase&) { return true; });
 }
 }  // namespace
 
@@ -187,16 +159,7 @@ CheckResult check_metamorphic(const CylinderObbCase& c, int move, const Cylinder
       return Failure{what, "answer not bit-identical: " + describe(ct, ov) + " vs " + describe(ct2, ov2)};
     return std::nullopt;
   }
-  if (ov != ov2) {
-    const Evaluation e0 = evaluate(c, impl), e1 = evaluate(t, impl);
-    const double slack = move == 5 ? moves::rigid_slack(c.a) * std::max(e0.scale, e1.scale) : 0.0;
-    auto near = [&](const Evaluation& e) {
-      return e.near_boundary || std::fabs(e.signed_distance) <= tolerances(kId).verdict * e.scale + slack;
-    };
-    if (!near(e0) && !near(e1))
-      return Failure{what, "verdict changed outside the band: " + describe(ct, ov) + " vs " + describe(ct2, ov2)};
-  }
-  return std::nullopt;
+  return verdict_kept(kId, what, c, t, move, moves::rigid_slack(c.a), impl, ct, ov, ct2, ov2);
 }
 
 CheckResult check_monotone(const CylinderObbCase& c, const CylinderObbImpl& impl) {

@@ -8,6 +8,7 @@
 #include "geomcheck/properties/tolerances.hpp"
 #include "geomcheck/shape_traits.hpp"
 #include "common.hpp"
+#include "contact_checks.hpp"
 #include "moves.hpp"
 
 namespace geomcheck {
@@ -164,22 +165,7 @@ CheckResult check_metamorphic(const CylinderSphereCase& c, int move, const Cylin
       return Failure{what, "answer not bit-identical: " + describe(ct, ov) + " vs " + describe(ct2, ov2)};
     return std::nullopt;
   }
-  if (ov != ov2) {
-    // The moved case is rounded, so it is another case: a change of verdict
-    // is a failure only when neither case is within the band of touching.
-    // Axis permutation is the same solid: only production's rounding may
-    // differ. The rigid motion also moves the solid by rigid_slack.
-    const Evaluation e0 = evaluate(c, impl), e1 = evaluate(t, impl);
-    // The moved coordinates round at the moved scene's magnitude (the motion
-    // translates), so the slack is taken at the larger of the two scales.
-    const double slack = move == 5 ? moves::rigid_slack(c.a) * std::max(e0.scale, e1.scale) : 0.0;
-    auto near = [&](const Evaluation& e) {
-      return e.near_boundary || std::fabs(e.signed_distance) <= tolerances(kId).verdict * e.scale + slack;
-    };
-    if (!near(e0) && !near(e1))
-      return Failure{what, "verdict changed outside the band: " + describe(ct, ov) + " vs " + describe(ct2, ov2)};
-  }
-  return std::nullopt;
+  return verdict_kept(kId, what, c, t, move, moves::rigid_slack(c.a), impl, ct, ov, ct2, ov2);
 }
 
 CheckResult check_monotone(const CylinderSphereCase& c, const CylinderSphereImpl& impl) {
