@@ -446,10 +446,10 @@ Contact scaled(const Cylinder& a, const Axis& ax_a, const Cylinder& b, const Axi
   double X, Z;
   f.common_point(ys, X, Z);
   out.point = f.origin + (X * f.x + ys * f.y + Z * f.z);
-  // The normal: the best of the fixed directions -z, -x, -+u_A, -+n_A, -y and
+  // The normal: the best of the fixed directions -z, -x, -+u_A, -+n_A, -y,
   // the two great circles of side normals (side of A against B's rim or side,
   // side of B against A's), each minimised by Newton on the angle from the
-  // direction between the axes. -y is on both circles.
+  // direction between the axes (-y is on both circles), and rim against rim.
   int best = 0;
   double depth = o[0];
   for (int j = 1; j < 5; ++j) {
@@ -486,6 +486,41 @@ Contact scaled(const Cylinder& a, const Axis& ax_a, const Cylinder& b, const Axi
       start(cb, P, Q);
       const double db = cb.min(P, Q, o[1], opt.newton_steps);
       if (db < depth) depth = db, n = -(P * f.y + Q * f.x);
+    }
+  }
+  // Rim against rim: where the common point lies within the best overlap
+  // so far of a cap plane of each cylinder, the direction perpendicular to
+  // both rims' tangents there (two curves touching at a point have it as
+  // their common normal), with the sign that overlaps less. In frame
+  // coordinates B's rim tangent at (X, ys, Z) is z x (X, ys, 0) and A's is
+  // u_A x d, d the point's offset across A's axis; the overlap along a unit
+  // m is S(m) + m.C_A (A's centre C_A, B's at the origin), where S is even
+  // in m, so the better sign gives S - |m.C_A|. After the circles, whose
+  // depths make the test stricter.
+  if (opt.rim_rim) {
+    const double ux = f.sX, uz = f.cZ;  // u_A = (sX, 0, cZ)
+    const double wx = X - f.X0, wy = ys - f.y0, wz = Z - f.Z0;
+    const double a = wx * ux + wz * uz;
+    if (std::fabs(Z) >= f.hB - depth && std::fabs(a) >= f.hA - depth) {
+      const double dx = wx - a * ux, dy = wy, dz = wz - a * uz;
+      const double tax = -uz * dy, tay = uz * dx - ux * dz, taz = ux * dy;  // u_A x d
+      const double tbx = -ys, tby = X;                                       // z x (X, ys, 0)
+      const double nx = -taz * tby, ny = taz * tbx, nz = tax * tby - tay * tbx;
+      const double l2 = nx * nx + ny * ny + nz * nz;
+      if (l2 > 0 && std::isfinite(l2)) {
+        const double il = 1 / std::sqrt(l2);
+        const double mx = nx * il, my = ny * il, mz = nz * il;
+        const double t = mx * ux + mz * uz;
+        const double rx = mx - t * ux, ry = my, rz = mz - t * uz;
+        const double s = f.hA * std::fabs(t) + f.rA * std::sqrt(rx * rx + ry * ry + rz * rz) + f.hB * std::fabs(mz) +
+                         f.rB * std::sqrt(mx * mx + my * my);
+        const double mc = mx * f.X0 + my * f.y0 + mz * f.Z0;
+        const double o_rr = s - std::fabs(mc);
+        if (o_rr < depth) {
+          const double sg = mc > 0 ? -1.0 : 1.0;
+          depth = o_rr, n = (sg * mx) * f.x + (sg * my) * f.y + (sg * mz) * f.z;
+        }
+      }
     }
   }
   out.depth = std::max(depth, 0.0);

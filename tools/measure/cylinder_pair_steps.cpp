@@ -1,10 +1,11 @@
 // geomcheck — collide(Cylinder, Cylinder): depth / certified penetration depth
-// and time per contact, by the number of Newton steps on the circles of side
-// normals, on the contact pairs of bench_collide_cylinder_cylinder's layout.
+// and time per contact, without and with the rim x rim candidate, by the
+// number of Newton steps on the circles of side normals, on the contact pairs
+// of bench_collide_cylinder_cylinder's layout.
 //
-// Build (from the repository root, after `cmake --build build/release`):
-//   g++ -std=c++17 -O3 -DNDEBUG -Icore/include -Ioracles/include -Ibench \
-//     tools/measure/cylinder_pair_steps.cpp build/release/oracles/libgeomcheck_oracles.a \
+// Build (from the repository root, after `cmake --build build/release`), one line:
+//   g++ -std=c++17 -O3 -DNDEBUG -Icore/include -Ioracles/include -Ibench
+//     tools/measure/cylinder_pair_steps.cpp build/release/oracles/libgeomcheck_oracles.a
 //     build/release/core/libgeomcheck_core.a -lgmp -lmpfr -o cylinder_pair_steps
 //   ./cylinder_pair_steps [pairs=2000] [seed=1]
 #include <algorithm>
@@ -44,9 +45,11 @@ int main(int argc, char** argv) {
     as.push_back(a), bs.push_back(b), pd.push_back(0.5 * (lo + hi));
   }
   std::printf("seed %llu, %d contact pairs (penetration depth >= 1e-9, enclosed within 0.1%%)\n", seed, n);
-  for (int steps = 0; steps <= 4; ++steps) {
+  for (int variant = 0; variant < 10; ++variant) {
+    const int steps = variant % 5;
     detail::CylinderPairOptions opt;
     opt.newton_steps = steps;
+    opt.rim_rim = variant >= 5;
     std::vector<double> ratio(n);
     int below = 0;
     for (int i = 0; i < n; ++i) {
@@ -62,7 +65,7 @@ int main(int argc, char** argv) {
       for (int i = 0; i < n; ++i) sink += detail::cylinder_pair(as[i], bs[i], true, opt).depth;
       best = std::min(best, std::chrono::duration<double, std::nano>(std::chrono::steady_clock::now() - t0).count() / n);
     }
-    std::printf("steps %d: depth / PD p50 %.5f p90 %.5f p99 %.5f p99.9 %.4f max %.4f, below %d; %.1f ns (sink %g)\n", steps,
+    std::printf("rim-rim %d, steps %d: depth / PD p50 %.5f p90 %.5f p99 %.5f p99.9 %.4f max %.4f, below %d; %.1f ns (sink %g)\n", int(opt.rim_rim), steps,
                 pct(0.5), pct(0.9), pct(0.99), pct(0.999), ratio.back(), below, best, sink);
   }
 }

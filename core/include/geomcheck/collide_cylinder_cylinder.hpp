@@ -45,15 +45,19 @@
 //
 // `collide` returns a CONSISTENT contact, not the minimum translation:
 // `normal` (unit, from A towards B) is the best of the fixed directions
-// (-z, -x, -y, -+u_A, -+n_A towards B) and the minima of the overlap on the
+// (-z, -x, -y, -+u_A, -+n_A towards B), the minima of the overlap on the
 // two great circles of side normals (perpendicular to u_A: A's side
-// against B; perpendicular to u_B: B's side against A), two safeguarded
-// Newton steps each; `depth` the overlap of the shapes along it
-// (h_A(n) + h_B(-n), an upper bound of the penetration depth), and `point`
-// the centre of the two rectangles' common part in the slice found (the
-// corner of one least outside the other when they only touch), a point of
-// both shapes up to rounding. Rim against rim (a normal on neither circle)
-// is where the depth exceeds the penetration depth most.
+// against B; perpendicular to u_B: B's side against A), one safeguarded
+// Newton step each, and, where the common point lies within the best
+// overlap so far of a cap plane of each cylinder, the rim x rim direction
+// there (perpendicular to both rims' tangents: the common normal of two
+// touching rims, a normal on neither circle); `depth` the overlap of the
+// shapes along it (h_A(n) + h_B(-n), an upper bound of the penetration
+// depth), and `point` the centre of the two rectangles' common part in the
+// slice found (the corner of one least outside the other when they only
+// touch), a point of both shapes up to rounding. The depth exceeds the
+// penetration depth most where a rim meets the other's side or rim away
+// from the common point.
 //
 // Scale: the scene is rescaled by an exact power of two when its magnitude
 // leaves [2^-100, 2^100], so every finite input is answered.

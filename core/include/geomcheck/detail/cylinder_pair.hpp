@@ -23,7 +23,9 @@ struct CylinderPairOptions {
   /// digits at small angles (else the plain u_B x u_A).
   bool accurate_frame = true;
   /// Newton steps on each great circle of side normals (contact only).
-  int newton_steps = 2;
+  int newton_steps = 1;
+  /// The rim x rim candidate at the common point (contact only).
+  bool rim_rim = true;
 };
 
 /// The query with the given parts. `want_contact` false: only `hit` is set.
