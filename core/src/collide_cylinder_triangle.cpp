@@ -467,9 +467,15 @@ Contact collide_scaled(const Cylinder& cyl, const Triangle& tri, detail::TriCapS
     if (!(max_abs(e) > 0)) continue;
     const Vec3 eu = detail::normalized(e);
     const Vec3 x = cross(s.u, eu);
-    const Vec3 side_keys[2] = {s.V[k], s.V[k == 0 ? 2 : k - 1]};
-    if (max_abs(x) > 0) best.both(detail::normalized(x), side_keys, 2);
-    else best.both(detail::unit_perpendicular_part(s.V[k], s.u), side_keys, 2);
+    // Towards the edge, else the third vertex, from the axis; where both
+    // lie in the plane through the axis normal to the direction, the
+    // edge's other end and the other cap centre (a direction normal to all
+    // four offsets is normal to a plane holding the whole scene, whose
+    // mirror pair is a true tie; a cross product's own sign would not
+    // reflect with the scene, regression 0009).
+    const Vec3 side_keys[4] = {s.V[k], s.V[k == 0 ? 2 : k - 1], s.V[l], s.Q};
+    if (max_abs(x) > 0) best.both(detail::normalized(x), side_keys, 4);
+    else best.both(detail::unit_perpendicular_part(s.V[k], s.u), side_keys, 4);
     dir[ne] = eu, edge[ne][0] = k, edge[ne][1] = l, ++ne;
   }
   // Side x vertex: the radial direction through each vertex within the best
