@@ -21,10 +21,12 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 struct TriSpace {
   Vec3 V[3];
   Vec3 Q;
+  Vec3 P0, Q0, T[3];  // the points themselves: their differences, exactly, orient directions
+
   Vec3 u;
   double len, r;
   Vec3 nt;  // (V1 - V0) x (V2 - V0), each component accurately: zero for a degenerate triangle
-  TriSpace(const Cylinder& cyl, const Triangle& t) : r(cyl.r) {
+  TriSpace(const Cylinder& cyl, const Triangle& t) : P0(cyl.p), Q0(cyl.q), T{t.a, t.b, t.c}, r(cyl.r) {
     V[0] = t.a - cyl.p, V[1] = t.b - cyl.p, V[2] = t.c - cyl.p;
     Q = cyl.q - cyl.p;
     const detail::UnitAndLength ul(max_abs(Q) > 0 ? Q : Vec3{0, 0, 1});
@@ -85,18 +87,26 @@ struct ExactSum {
   int sign() const { return m == 0 ? 0 : (e[m - 1] > 0 ? 1 : -1); }
 };
 
-// The sign of a . b, exactly. A reflection of the scene negates the exact
-// value, so an orientation chosen by this sign is reflected with the scene
-// even where the rounded product is zero or noise.
-int exact_dot_sign(Vec3 a, Vec3 b) {
+// The offset x - y between two points of the scene, exactly (not the
+// rounded difference: offsets that differ in the true scene can round to
+// the same double, and a scene lying in one plane only after that rounding
+// is no true mirror tie; regressions 0010, 0011).
+struct Key {
+  Vec3 x, y;
+};
+
+// The sign of w . (x - y), exactly. A reflection of the scene negates the
+// exact value, so an orientation chosen by this sign is reflected with the
+// scene even where the rounded product is zero or noise.
+int exact_dot_sign(Vec3 w, const Key& k) {
   ExactSum<12> s;
-  for (int i = 0; i < 3; ++i) s.add_product(a[i], b[i]);
+  for (int i = 0; i < 3; ++i) s.add_product(w[i], k.x[i]), s.add_product(-w[i], k.y[i]);
   return s.sign();
 }
 
 // w turned to the side of the first key off its plane (exact signs); left
 // as it is when every key lies in that plane.
-void orient_by(Vec3& w, const Vec3* keys, int nk) {
+void orient_by(Vec3& w, const Key* keys, int nk) {
   for (int i = 0; i < nk; ++i) {
     const int k = exact_dot_sign(w, keys[i]);
     if (k != 0) {
@@ -435,7 +445,7 @@ struct Best {
   // w and -w, w first, after orienting w by the first non-zero of the keys
   // (exact signs of dot products with offsets of the scene, so that a
   // reflection reflects the choice; a cross product alone would flip it).
-  void both(Vec3 w, const Vec3* keys, int nk) {
+  void both(Vec3 w, const Key* keys, int nk) {
     orient_by(w, keys, nk);
     consider(w);
     consider(-w);
@@ -452,7 +462,7 @@ Contact collide_scaled(const Cylinder& cyl, const Triangle& tri, detail::TriCapS
   Best best{&s};
   // Keys orienting a direction: towards the cap centres from the triangle,
   // then towards the vertices.
-  const Vec3 keys[5] = {-s.V[0], s.Q - s.V[0], s.V[0], s.V[1], s.V[2]};
+  const Key keys[2] = {{s.P0, s.T[0]}, {s.Q0, s.T[0]}};
   best.consider(s.u);
   best.consider(-s.u);
   if (s.flat()) best.both(detail::normalized(s.nt), keys, 2);
@@ -473,7 +483,7 @@ Contact collide_scaled(const Cylinder& cyl, const Triangle& tri, detail::TriCapS
     // four offsets is normal to a plane holding the whole scene, whose
     // mirror pair is a true tie; a cross product's own sign would not
     // reflect with the scene, regression 0009).
-    const Vec3 side_keys[4] = {s.V[k], s.V[k == 0 ? 2 : k - 1], s.V[l], s.Q};
+    const Key side_keys[4] = {{s.T[k], s.P0}, {s.T[k == 0 ? 2 : k - 1], s.P0}, {s.T[l], s.P0}, {s.Q0, s.P0}};
     if (max_abs(x) > 0) best.both(detail::normalized(x), side_keys, 4);
     else best.both(detail::unit_perpendicular_part(s.V[k], s.u), side_keys, 4);
     dir[ne] = eu, edge[ne][0] = k, edge[ne][1] = l, ++ne;
@@ -507,12 +517,13 @@ Contact collide_scaled(const Cylinder& cyl, const Triangle& tri, detail::TriCapS
     // With every vertex on the axis line to rounding (no radial direction),
     // f1 is any_perpendicular's, which a reflection may negate rather than
     // reflect; oriented by the vertices it reflects (regression 0008).
+    const Key vertex_keys[3] = {{s.T[0], s.P0}, {s.T[1], s.P0}, {s.T[2], s.P0}};
     if (!(far2 > 0) || !detail::radial_direction(s.V[far], s.u, fr.f1)) {
       fr.f1 = any_perpendicular(s.u);
-      orient_by(fr.f1, s.V, 3);
+      orient_by(fr.f1, vertex_keys, 3);
     }
     fr.f2 = cross(s.u, fr.f1);
-    orient_by(fr.f2, s.V, 3);
+    orient_by(fr.f2, vertex_keys, 3);
     const Vec3 inner[1] = {v.point};
     const detail::RimPolytope poly{s.V, 3, edge, dir, ne, inner, 1};
     detail::search_rim_edges(fr, Vec3{0, 0, 0}, s.Q, poly, best);
