@@ -22,7 +22,6 @@ struct TriSpace {
   Vec3 V[3];
   Vec3 Q;
   Vec3 P0, Q0, T[3];  // the points themselves: their differences, exactly, orient directions
-
   Vec3 u;
   double len, r;
   Vec3 nt;  // (V1 - V0) x (V2 - V0), each component accurately: zero for a degenerate triangle
@@ -98,7 +97,15 @@ struct Key {
 // The sign of w . (x - y), exactly. A reflection of the scene negates the
 // exact value, so an orientation chosen by this sign is reflected with the
 // scene even where the rounded product is zero or noise.
+// The rounded value decides where it exceeds its error bound (each
+// difference within 2^-53 of itself, the dot product within 3 * 2^-53 of
+// the sum of its terms' magnitudes, and an underflow margin); a reflection
+// leaves that test's outcome as it is.
 int exact_dot_sign(Vec3 w, const Key& k) {
+  const Vec3 d = k.x - k.y;
+  const double v = dot(w, d);
+  const double mag = std::fabs(w[0] * d[0]) + std::fabs(w[1] * d[1]) + std::fabs(w[2] * d[2]);
+  if (std::fabs(v) > 0x1p-50 * mag + 0x1p-1020) return v > 0 ? 1 : -1;
   ExactSum<12> s;
   for (int i = 0; i < 3; ++i) s.add_product(w[i], k.x[i]), s.add_product(-w[i], k.y[i]);
   return s.sign();
