@@ -3,7 +3,7 @@
 cmake -S "$SRC/geomcheck" -B build-cfl -G Ninja \
   -DCMAKE_CXX_COMPILER="$CXX" -DCMAKE_CXX_FLAGS="$CXXFLAGS" \
   -DGEOMCHECK_FUZZ=ON -DGEOMCHECK_FUZZ_LOCAL=OFF -DGEOMCHECK_FUZZ_ENGINE="$LIB_FUZZING_ENGINE" \
-  -DGEOMCHECK_TESTS=OFF -DGEOMCHECK_BENCH=OFF -DCMAKE_BUILD_TYPE=RelWithDebInfo
+  -DGEOMCHECK_TESTS=OFF -DGEOMCHECK_TOOLS=OFF -DGEOMCHECK_BENCH=OFF -DCMAKE_BUILD_TYPE=RelWithDebInfo
 cmake --build build-cfl
 ./build-cfl/fuzz/make_fuzz_seeds "$SRC/geomcheck/corpora/seeds" build-cfl/seeds
 for t in build-cfl/fuzz/fuzz_*; do

@@ -6,7 +6,7 @@
 // fuzz/tests/test_nightly.sh; it is not a fuzz target of production and is
 // not built by .clusterfuzzlite/build.sh.
 #include "fuzz_query.hpp"
-#include "teeth_variants.hpp"
+#include "geomcheck/properties/teeth.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   return geomcheck::fuzz::run_one<geomcheck::QueryId::collide_cylinder_sphere>(data, size,

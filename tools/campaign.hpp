@@ -8,6 +8,8 @@
 #include <utility>
 #include <vector>
 
+#include "geomcheck/registry.hpp"
+
 namespace geomcheck {
 
 struct CampaignOptions {
@@ -18,7 +20,7 @@ struct CampaignOptions {
   std::string out = "reports/out";
   std::vector<std::string> queries;  ///< empty = all
   bool progress = true;
-  /// A known-wrong variant (properties/tests/teeth_variants.hpp) run in
+  /// A known-wrong variant (its spec's variants()) run in
   /// production's place: only its query runs. Empty = production.
   std::string variant;
 };
@@ -26,10 +28,9 @@ struct CampaignOptions {
 /// The known-wrong variants' names, each with its query id.
 std::vector<std::pair<std::string, std::string>> campaign_variants();
 
-/// Cases run for query `id`: opt.cases when given, else 100000, or 10000
-/// for the queries whose oracle is the certified engine (about 10 ms a case
-/// with every property, against about 0.1 ms for the closed forms).
-int campaign_cases(const CampaignOptions& opt, const char* id);
+/// Cases run for query `id`: opt.cases when given, else its spec's
+/// default_cases.
+int campaign_cases(const CampaignOptions& opt, QueryId id);
 
 /// Runs the campaign; returns the number of disagreements beyond the band
 /// (0 = production verified on every case run).

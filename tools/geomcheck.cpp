@@ -52,7 +52,7 @@ const char* kUsage =
     "  queries\n"
     "        Lists the registered query ids.\n"
     "\n"
-    "Case files: corpora/seeds/<query>/ and corpora/regressions/<query>/ (see README).\n";
+    "Case files: corpora/seeds/<query>/ and corpora/regressions/<query>/ (format: corpora/README.md).\n";
 
 [[noreturn]] void usage_error(const std::string& msg) {
   std::fprintf(stderr, "geomcheck: %s\n\n%s", msg.c_str(), kUsage);

@@ -38,19 +38,11 @@ PeerAnswer peer(const CylinderTriangleCase& c);
 /// fcl_collide(Cylinder, Cylinder): libccd's MPR on the two cylinders, depth not the minimum (see fcl_adapter.hpp).
 PeerAnswer peer(const CylinderCylinderCase& c);
 
-// Production's evaluation with FCL's answer scored against the same truth.
-inline const CylinderSphereImpl& production(const CylinderSphereCase&) { return kProductionCylinderSphere; }
-inline const CylinderCapsuleImpl& production(const CylinderCapsuleCase&) { return kProductionCylinderCapsule; }
-inline const CylinderObbImpl& production(const CylinderObbCase&) { return kProductionCylinderObb; }
-inline const CylinderTriangleImpl& production(const CylinderTriangleCase&) { return kProductionCylinderTriangle; }
-inline const CylinderCylinderImpl& production(const CylinderCylinderCase&) { return kProductionCylinderCylinder; }
-inline const CastSegmentCylinderImpl& production(const SegmentCylinderCase&) { return kProductionCastSegmentCylinder; }
-inline const SweepSphereCylinderImpl& production(const SweepCylinderCase&) { return kProductionSweepSphereCylinder; }
-
 /// `impl` (default: production) evaluated with FCL's answer scored against
 /// the same truth.
-template <class Case, class Impl = std::decay_t<decltype(production(std::declval<Case>()))>>
-Evaluation evaluate_with_peer(const Case& c, const PeerAnswer& p, const Impl& impl = production(Case{})) {
+template <class Case>
+Evaluation evaluate_with_peer(const Case& c, const PeerAnswer& p,
+                              const ImplOfCase<Case>& impl = production_of<query_of_case<Case>>()) {
   const bool answered = p.supported && p.ok;
   if constexpr (std::is_same_v<Case, SegmentCylinderCase> || std::is_same_v<Case, SweepCylinderCase>) {
     return evaluate(c, impl, answered && p.hit ? &p.t : nullptr);

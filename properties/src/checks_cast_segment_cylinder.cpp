@@ -54,6 +54,10 @@ double disagreement_margin(const oracle::QSegment& s, const oracle::QCylinder& c
 
 const CastSegmentCylinderImpl kProductionCastSegmentCylinder = {
     "production", [](const Segment& s, const Cylinder& c) { return cast(s, c); }};
+template <>
+const ImplOf<QueryId::cast_segment_cylinder>& production_of<QueryId::cast_segment_cylinder>() {
+  return kProductionCastSegmentCylinder;
+}
 
 Evaluation evaluate(const SegmentCylinderCase& c, const CastSegmentCylinderImpl& impl, const double* peer_t) {
   Evaluation e;
@@ -233,18 +237,6 @@ CheckResult check_monotone(const SegmentCylinderCase& c, const CastSegmentCylind
   return std::nullopt;
 }
 
-CheckResult check_robust(const SegmentCylinderCase& c, const CastSegmentCylinderImpl& impl) {
-  const CastHit h = impl.cast(c.a, c.b);
-  if (!valid_case(c)) {
-    if (h.hit) return Failure{"robust-invalid-input", "invalid input reported a hit: " + describe(h)};
-    return std::nullopt;
-  }
-  if (!h.hit) return std::nullopt;
-  if (!finite_hit(h) || !(h.t >= 0 && h.t <= 1)) return Failure{"robust-finite-output", describe(h)};
-  if (!h.starts_inside && !(std::fabs(length(h.normal) - 1) <= 1e-12)) return Failure{"robust-unit-normal", describe(h)};
-  return std::nullopt;
-}
 
-CheckResult check_all(const SegmentCylinderCase& c, const CastSegmentCylinderImpl& impl) { return all_checks(c, impl); }
 
 }  // namespace geomcheck

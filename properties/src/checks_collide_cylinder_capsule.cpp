@@ -34,6 +34,10 @@ const CylinderCapsuleImpl kProductionCylinderCapsule = {
     [](const Cylinder& a, const Capsule& b) { return overlap(a, b); },
     [](const Cylinder& a, const Capsule& b) { return collide(a, b); },
 };
+template <>
+const ImplOf<QueryId::collide_cylinder_capsule>& production_of<QueryId::collide_cylinder_capsule>() {
+  return kProductionCylinderCapsule;
+}
 
 Evaluation evaluate(const CylinderCapsuleCase& c, const CylinderCapsuleImpl& impl, const Contact* peer) {
   Evaluation e;
@@ -188,19 +192,6 @@ CheckResult check_monotone(const CylinderCapsuleCase& c, const CylinderCapsuleIm
   return std::nullopt;
 }
 
-CheckResult check_robust(const CylinderCapsuleCase& c, const CylinderCapsuleImpl& impl) {
-  const bool ov = impl.overlap(c.a, c.b);
-  const Contact ct = impl.collide(c.a, c.b);
-  if (!valid_case(c)) {
-    if (ov || ct.hit) return Failure{"robust-invalid-input", "invalid input reported a hit: " + describe(ct, ov)};
-    return std::nullopt;
-  }
-  if (ct.hit && !finite_contact(ct)) return Failure{"robust-finite-output", describe(ct, ov)};
-  if (ct.hit && !(std::fabs(length(ct.normal) - 1) <= 1e-12)) return Failure{"robust-unit-normal", describe(ct, ov)};
-  if (ov != ct.hit) return Failure{"robust-overlap-vs-collide", describe(ct, ov)};
-  return std::nullopt;
-}
 
-CheckResult check_all(const CylinderCapsuleCase& c, const CylinderCapsuleImpl& impl) { return all_checks(c, impl); }
 
 }  // namespace geomcheck

@@ -99,6 +99,10 @@ const CylinderCylinderImpl kProductionCylinderCylinder = {
     [](const Cylinder& a, const Cylinder& b) { return overlap(a, b); },
     [](const Cylinder& a, const Cylinder& b) { return collide(a, b); },
 };
+template <>
+const ImplOf<QueryId::collide_cylinder_cylinder>& production_of<QueryId::collide_cylinder_cylinder>() {
+  return kProductionCylinderCylinder;
+}
 
 Evaluation evaluate(const CylinderCylinderCase& c, const CylinderCylinderImpl& impl, const Contact* peer) {
   Evaluation e;
@@ -301,19 +305,6 @@ CheckResult check_monotone(const CylinderCylinderCase& c, const CylinderCylinder
   return std::nullopt;
 }
 
-CheckResult check_robust(const CylinderCylinderCase& c, const CylinderCylinderImpl& impl) {
-  const bool ov = impl.overlap(c.a, c.b);
-  const Contact ct = impl.collide(c.a, c.b);
-  if (!valid_case(c)) {
-    if (ov || ct.hit) return Failure{"robust-invalid-input", "invalid input reported a hit: " + describe(ct, ov)};
-    return std::nullopt;
-  }
-  if (ct.hit && !finite_contact(ct)) return Failure{"robust-finite-output", describe(ct, ov)};
-  if (ct.hit && !(std::fabs(length(ct.normal) - 1) <= 1e-12)) return Failure{"robust-unit-normal", describe(ct, ov)};
-  if (ov != ct.hit) return Failure{"robust-overlap-vs-collide", describe(ct, ov)};
-  return std::nullopt;
-}
 
-CheckResult check_all(const CylinderCylinderCase& c, const CylinderCylinderImpl& impl) { return all_checks(c, impl); }
 
 }  // namespace geomcheck

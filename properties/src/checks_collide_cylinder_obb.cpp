@@ -64,6 +64,10 @@ const CylinderObbImpl kProductionCylinderObb = {
     [](const Cylinder& a, const Obb& b) { return overlap(a, b); },
     [](const Cylinder& a, const Obb& b) { return collide(a, b); },
 };
+template <>
+const ImplOf<QueryId::collide_cylinder_obb>& production_of<QueryId::collide_cylinder_obb>() {
+  return kProductionCylinderObb;
+}
 
 Evaluation evaluate(const CylinderObbCase& c, const CylinderObbImpl& impl, const Contact* peer) {
   Evaluation e;
@@ -187,19 +191,6 @@ CheckResult check_monotone(const CylinderObbCase& c, const CylinderObbImpl& impl
   return std::nullopt;
 }
 
-CheckResult check_robust(const CylinderObbCase& c, const CylinderObbImpl& impl) {
-  const bool ov = impl.overlap(c.a, c.b);
-  const Contact ct = impl.collide(c.a, c.b);
-  if (!valid_case(c)) {
-    if (ov || ct.hit) return Failure{"robust-invalid-input", "invalid input reported a hit: " + describe(ct, ov)};
-    return std::nullopt;
-  }
-  if (ct.hit && !finite_contact(ct)) return Failure{"robust-finite-output", describe(ct, ov)};
-  if (ct.hit && !(std::fabs(length(ct.normal) - 1) <= 1e-12)) return Failure{"robust-unit-normal", describe(ct, ov)};
-  if (ov != ct.hit) return Failure{"robust-overlap-vs-collide", describe(ct, ov)};
-  return std::nullopt;
-}
 
-CheckResult check_all(const CylinderObbCase& c, const CylinderObbImpl& impl) { return all_checks(c, impl); }
 
 }  // namespace geomcheck

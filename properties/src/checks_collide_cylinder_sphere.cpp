@@ -26,6 +26,10 @@ const CylinderSphereImpl kProductionCylinderSphere = {
     [](const Cylinder& a, const Sphere& b) { return overlap(a, b); },
     [](const Cylinder& a, const Sphere& b) { return collide(a, b); },
 };
+template <>
+const ImplOf<QueryId::collide_cylinder_sphere>& production_of<QueryId::collide_cylinder_sphere>() {
+  return kProductionCylinderSphere;
+}
 
 Evaluation evaluate(const CylinderSphereCase& c, const CylinderSphereImpl& impl, const Contact* peer) {
   Evaluation e;
@@ -182,19 +186,6 @@ CheckResult check_monotone(const CylinderSphereCase& c, const CylinderSphereImpl
   return std::nullopt;
 }
 
-CheckResult check_robust(const CylinderSphereCase& c, const CylinderSphereImpl& impl) {
-  const bool ov = impl.overlap(c.a, c.b);
-  const Contact ct = impl.collide(c.a, c.b);
-  if (!sphere_valid_case(c)) {
-    if (ov || ct.hit) return Failure{"robust-invalid-input", "invalid input reported a hit: " + describe(ct, ov)};
-    return std::nullopt;
-  }
-  if (ct.hit && !finite_contact(ct)) return Failure{"robust-finite-output", describe(ct, ov)};
-  if (ct.hit && !(std::fabs(length(ct.normal) - 1) <= 1e-12)) return Failure{"robust-unit-normal", describe(ct, ov)};
-  if (ov != ct.hit) return Failure{"robust-overlap-vs-collide", describe(ct, ov)};
-  return std::nullopt;
-}
 
-CheckResult check_all(const CylinderSphereCase& c, const CylinderSphereImpl& impl) { return all_checks(c, impl); }
 
 }  // namespace geomcheck

@@ -95,6 +95,10 @@ const CylinderTriangleImpl kProductionCylinderTriangle = {
     [](const Cylinder& a, const Triangle& b) { return overlap(a, b); },
     [](const Cylinder& a, const Triangle& b) { return collide(a, b); },
 };
+template <>
+const ImplOf<QueryId::collide_cylinder_triangle>& production_of<QueryId::collide_cylinder_triangle>() {
+  return kProductionCylinderTriangle;
+}
 
 Evaluation evaluate(const CylinderTriangleCase& c, const CylinderTriangleImpl& impl, const Contact* peer) {
   Evaluation e;
@@ -237,19 +241,6 @@ CheckResult check_monotone(const CylinderTriangleCase& c, const CylinderTriangle
   return std::nullopt;
 }
 
-CheckResult check_robust(const CylinderTriangleCase& c, const CylinderTriangleImpl& impl) {
-  const bool ov = impl.overlap(c.a, c.b);
-  const Contact ct = impl.collide(c.a, c.b);
-  if (!valid_case(c)) {
-    if (ov || ct.hit) return Failure{"robust-invalid-input", "invalid input reported a hit: " + describe(ct, ov)};
-    return std::nullopt;
-  }
-  if (ct.hit && !finite_contact(ct)) return Failure{"robust-finite-output", describe(ct, ov)};
-  if (ct.hit && !(std::fabs(length(ct.normal) - 1) <= 1e-12)) return Failure{"robust-unit-normal", describe(ct, ov)};
-  if (ov != ct.hit) return Failure{"robust-overlap-vs-collide", describe(ct, ov)};
-  return std::nullopt;
-}
 
-CheckResult check_all(const CylinderTriangleCase& c, const CylinderTriangleImpl& impl) { return all_checks(c, impl); }
 
 }  // namespace geomcheck

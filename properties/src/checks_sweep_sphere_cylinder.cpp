@@ -55,6 +55,10 @@ bool path_meets(const SweepCylinderCase& c, double t, const Q& dr) {
 
 const SweepSphereCylinderImpl kProductionSweepSphereCylinder = {
     "production", [](const MovingSphere& s, const Cylinder& c) { return sweep(s, c); }};
+template <>
+const ImplOf<QueryId::sweep_sphere_cylinder>& production_of<QueryId::sweep_sphere_cylinder>() {
+  return kProductionSweepSphereCylinder;
+}
 
 Evaluation evaluate(const SweepCylinderCase& c, const SweepSphereCylinderImpl& impl, const double* peer_t) {
   Evaluation e;
@@ -255,18 +259,6 @@ CheckResult check_monotone(const SweepCylinderCase& c, const SweepSphereCylinder
   return std::nullopt;
 }
 
-CheckResult check_robust(const SweepCylinderCase& c, const SweepSphereCylinderImpl& impl) {
-  const CastHit h = impl.sweep(c.a, c.b);
-  if (!valid_case(c)) {
-    if (h.hit) return Failure{"robust-invalid-input", "invalid input reported a hit: " + describe(h)};
-    return std::nullopt;
-  }
-  if (!h.hit) return std::nullopt;
-  if (!finite_hit(h) || !(h.t >= 0 && h.t <= 1)) return Failure{"robust-finite-output", describe(h)};
-  if (!h.starts_inside && !(std::fabs(length(h.normal) - 1) <= 1e-12)) return Failure{"robust-unit-normal", describe(h)};
-  return std::nullopt;
-}
 
-CheckResult check_all(const SweepCylinderCase& c, const SweepSphereCylinderImpl& impl) { return all_checks(c, impl); }
 
 }  // namespace geomcheck

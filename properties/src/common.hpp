@@ -36,18 +36,4 @@ double rel_error(const oracle::QInterval& x, double v, double scale);
 /// rims) within qnear of x; INFINITY when x is near no feature.
 double cylinder_normal_error(const oracle::QCylinder& c, const oracle::QVec& x, Vec3 n, const oracle::Q& qnear);
 
-/// Every check of a query, in order, stopping at the first failure: the
-/// body of each query's check_all (the overloads are the query's own).
-template <class Case, class Impl>
-CheckResult all_checks(const Case& c, const Impl& impl) {
-  if (auto f = check_robust(c, impl)) return f;
-  if (!is_valid(c.a) || !is_valid(c.b)) return std::nullopt;
-  if (auto f = check_oracle(c, impl)) return f;
-  if (auto f = check_consistency(c, impl)) return f;
-  if (auto f = check_symmetry(c, impl)) return f;
-  for (int m = 0; m < kNumMoves; ++m)
-    if (auto f = check_metamorphic(c, m, impl)) return f;
-  return check_monotone(c, impl);
-}
-
 }  // namespace geomcheck

@@ -26,7 +26,7 @@
 #include "geomcheck/detail/delaunay_build.hpp"
 #include "geomcheck/oracles/delaunay_2d.hpp"
 #include "geomcheck/pointset_file.hpp"
-#include "generators.hpp"
+#include "geomcheck/properties/generators.hpp"
 #include "support.hpp"
 
 namespace geomcheck {

@@ -29,7 +29,7 @@
 #include <string>
 #include <vector>
 
-#include "generators.hpp"
+#include "geomcheck/properties/generators.hpp"
 #include "geomcheck/collide_cylinder_mesh.hpp"
 #include "geomcheck/collide_cylinder_triangle.hpp"
 #include "geomcheck/properties/checks.hpp"

@@ -3,7 +3,7 @@
 // the certification of square-root brackets.
 #include <gtest/gtest.h>
 
-#include "generators.hpp"
+#include "geomcheck/properties/generators.hpp"
 #include "geomcheck/oracles/cast_segment_cylinder.hpp"
 #include "geomcheck/oracles/cylinder_sphere.hpp"
 

@@ -10,7 +10,7 @@
 #include <string>
 
 #include "geomcheck/properties/tolerances.hpp"
-#include "suites.hpp"
+#include "geomcheck/properties/spec.hpp"
 #include "support.hpp"
 
 namespace geomcheck {
@@ -49,7 +49,7 @@ double bound_of(const Tolerances& t, int k) {
 template <QueryId Q>
 Worst measure() {
   Worst w;
-  const auto gen = Suite<Q>::targeted();
+  const auto gen = Spec<Q>::targeted();
   const Tolerances tol = tolerances(Q);
   rc::Random random(kSeed);
   for (int i = 0, n = cases(); i < n; ++i) {
@@ -78,7 +78,7 @@ void expect_in_range(const char* query, const char* what, double worst, double b
                           << (where.empty() ? "" : "; the worst case is saved as " + where);
   if (cases() < kCases) return;  // a partial sample: upper bounds only
   EXPECT_GE(worst, bound / 100) << query << " " << what << ": the bound is stale (worst " << worst
-                                << " is below bound/100); tighten it in tolerances.hpp and the README";
+                                << " is below bound/100); tighten it in tolerances.hpp and docs/tolerances.md";
 }
 
 template <QueryId Q>

@@ -1,17 +1,18 @@
 // geomcheck — the generic properties of every registered query, run by
-// RapidCheck over the targeted generators (DESIGN.md section 4).
+// RapidCheck over the targeted generators of each query's spec.
 #include <gtest/gtest.h>
 
-#include "suites.hpp"
+#include "geomcheck/properties/spec.hpp"
+#include "support.hpp"
 
 namespace geomcheck {
 namespace {
 
 template <QueryId Q>
-void run(const std::string& what, const std::function<CheckResult(const typename Suite<Q>::Case&)>& check,
-         const rc::Gen<std::pair<typename Suite<Q>::Case, std::string>>& gen = Suite<Q>::targeted()) {
+void run(const std::string& what, const std::function<CheckResult(const typename Spec<Q>::Case&)>& check,
+         const rc::Gen<std::pair<typename Spec<Q>::Case, std::string>>& gen = Spec<Q>::targeted()) {
   const std::string name = std::string(info(Q).name) + "." + what;
-  const PropertyRun r = run_property<Q>(name, gen, check, [](const auto& c) { return Suite<Q>::hit(c); });
+  const PropertyRun r = run_property<Q>(name, gen, check, [](const auto& c) { return SpecOf<Q>::hit(c); });
   expect_passed(r, name);
 }
 
@@ -31,7 +32,7 @@ void all_moves(const std::string& what) {
   TEST(Q, metamorphic) { all_moves<QueryId::Q>("metamorphic"); }                                                    \
   TEST(Q, monotone) { run<QueryId::Q>("monotone", [](const auto& c) { return check_monotone(c); }); }               \
   TEST(Q, robust) {                                                                                                \
-    run<QueryId::Q>("robust", [](const auto& c) { return check_robust(c); }, robust_gen<QueryId::Q>());            \
+    run<QueryId::Q>("robust", [](const auto& c) { return check_robust(c); }, SpecOf<QueryId::Q>::robust());            \
   }
 
 #define GEOMCHECK_X(id, kind, A, B, summary) GEOMCHECK_PROPERTY_TESTS(id)

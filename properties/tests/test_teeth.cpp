@@ -3,20 +3,25 @@
 // counterexample saved as a case file.
 #include <gtest/gtest.h>
 
+#include <cctype>
+#include <functional>
 #include <iostream>
+#include <string>
+#include <vector>
 
-#include "suites.hpp"
-#include "teeth_variants.hpp"
+#include "geomcheck/properties/spec.hpp"
+#include "support.hpp"
+#include "geomcheck/properties/teeth.hpp"
 
 namespace geomcheck {
 namespace {
 
 template <QueryId Q>
-void expect_caught(const typename Suite<Q>::Impl& wrong) {
+void expect_caught(const typename Spec<Q>::Impl& wrong) {
   const std::string name = std::string(info(Q).name) + ".teeth." + wrong.name;
   const PropertyRun r = run_property<Q>(
-      name, Suite<Q>::targeted(), [&](const auto& c) { return check_all(c, wrong); },
-      [&](const auto& c) { return Suite<Q>::hit(c, wrong); });
+      name, Spec<Q>::targeted(), [&](const auto& c) { return check_all(c, wrong); },
+      [&](const auto& c) { return SpecOf<Q>::hit(c, wrong); });
   ASSERT_FALSE(r.passed) << "the suite did not catch the known-wrong variant '" << wrong.name << "' in "
                          << r.cases << " cases";
   ASSERT_FALSE(r.case_file.empty()) << "no shrunk counterexample was saved";
@@ -31,22 +36,42 @@ void expect_caught(const typename Suite<Q>::Impl& wrong) {
             << r.failure << "\n";
 }
 
-TEST(teeth, sphere_cylinder_as_capsule) { expect_caught<QueryId::collide_cylinder_sphere>(teeth::kCapsuleForCylinder); }
-TEST(teeth, cast_infinite_cylinder_no_caps) { expect_caught<QueryId::cast_segment_cylinder>(teeth::kInfiniteCylinder); }
-TEST(teeth, cast_ericson_as_printed) { expect_caught<QueryId::cast_segment_cylinder>(teeth::kEricsonPrinted); }
-TEST(teeth, capsule_cylinder_as_capsule_capsule) { expect_caught<QueryId::collide_cylinder_capsule>(teeth::kCapsuleCapsule); }
-TEST(teeth, sweep_without_corner_stage) { expect_caught<QueryId::sweep_sphere_cylinder>(teeth::kSweepNoCornerStage); }
-TEST(teeth, sweep_talk_one_rim_point) { expect_caught<QueryId::sweep_sphere_cylinder>(teeth::kSweepTalkRimPoint); }
-TEST(teeth, box_cylinder_as_box_capsule) { expect_caught<QueryId::collide_cylinder_obb>(teeth::kBoxAsCapsule); }
-TEST(teeth, box_talk_one_ray_per_plane) { expect_caught<QueryId::collide_cylinder_obb>(teeth::kBoxTalkRays); }
-TEST(teeth, triangle_without_cap_stage) { expect_caught<QueryId::collide_cylinder_triangle>(teeth::kTriangleNoCapStage); }
-TEST(teeth, cylinder_pair_without_false_positive_planes) {
-  expect_caught<QueryId::collide_cylinder_cylinder>(teeth::kCylinderNoPlanes);
+// Every known-wrong variant of every query's spec, a test each (named
+// <query>__<variant>), so that a variant added to a spec is held to this.
+struct Tooth {
+  std::string name;
+  std::function<void()> run;
+};
+std::vector<Tooth> all_teeth() {
+  std::vector<Tooth> out;
+  for_each_query([&](auto q) {
+    constexpr QueryId Q = decltype(q)::value;
+    for (const auto* v : Spec<Q>::variants()) {
+      std::string name = std::string(info(Q).name) + "__" + v->name;
+      for (char& ch : name)
+        if (!std::isalnum(static_cast<unsigned char>(ch))) ch = '_';
+      out.push_back({name, [v] { expect_caught<Q>(*v); }});
+    }
+  });
+  return out;
 }
-TEST(teeth, cylinder_pair_without_parallel_branch) {
-  expect_caught<QueryId::collide_cylinder_cylinder>(teeth::kCylinderNoParallelBranch);
-}
-TEST(teeth, cylinder_pair_plain_frame) { expect_caught<QueryId::collide_cylinder_cylinder>(teeth::kCylinderPlainFrame); }
+
+class Caught : public ::testing::Test {
+ public:
+  explicit Caught(std::function<void()> run) : run_(std::move(run)) {}
+  void TestBody() override { run_(); }
+
+ private:
+  std::function<void()> run_;
+};
+
+// Registered before main (as TEST does), one test per variant: teeth.<query>__<variant>.
+const int kRegistered = [] {
+  for (const Tooth& t : all_teeth())
+    ::testing::RegisterTest("teeth", t.name.c_str(), nullptr, nullptr, __FILE__, __LINE__,
+                            [run = t.run]() -> ::testing::Test* { return new Caught(run); });
+  return 0;
+}();
 
 }  // namespace
 }  // namespace geomcheck

@@ -100,6 +100,16 @@ template <QueryId Q> struct QueryTraits;
 GEOMCHECK_QUERY_LIST(GEOMCHECK_X)
 #undef GEOMCHECK_X
 
+/// The query whose case type is Case (a PairCase of its shapes).
+template <class Case> struct QueryOfCase;
+#define GEOMCHECK_X(id_, kind_, A, B, summary) \
+  template <> struct QueryOfCase<PairCase<A, B>> { static constexpr QueryId value = QueryId::id_; };
+GEOMCHECK_QUERY_LIST(GEOMCHECK_X)
+#undef GEOMCHECK_X
+/// The query whose case type is Case.
+template <class Case>
+inline constexpr QueryId query_of_case = QueryOfCase<Case>::value;
+
 /// Calls f(std::integral_constant<QueryId, id>{}) for every registered query.
 template <class F>
 void for_each_query(F&& f) {

@@ -23,48 +23,43 @@ struct Failure {
 };
 using CheckResult = std::optional<Failure>;
 
-/// The implementation under test of collide_cylinder_sphere.
-struct CylinderSphereImpl {
+/// A subject of a collide query (production, a known-wrong variant, another
+/// engine): overlap(A, B) and collide(A, B) under a name.
+template <class A, class B>
+struct CollideImpl {
   const char* name;
-  bool (*overlap)(const Cylinder&, const Sphere&);
-  Contact (*collide)(const Cylinder&, const Sphere&);
+  bool (*overlap)(const A&, const B&);
+  Contact (*collide)(const A&, const B&);
 };
-/// The implementation under test of cast_segment_cylinder.
-struct CastSegmentCylinderImpl {
+/// A subject of a cast query: cast(A, B), A the moving segment.
+template <class A, class B>
+struct CastImpl {
   const char* name;
-  CastHit (*cast)(const Segment&, const Cylinder&);
+  CastHit (*cast)(const A&, const B&);
 };
-
-/// The implementation under test of collide_cylinder_capsule.
-struct CylinderCapsuleImpl {
+/// A subject of a sweep query: sweep(A, B), A the moving shape.
+template <class A, class B>
+struct SweepImpl {
   const char* name;
-  bool (*overlap)(const Cylinder&, const Capsule&);
-  Contact (*collide)(const Cylinder&, const Capsule&);
-};
-/// The implementation under test of sweep_sphere_cylinder.
-struct SweepSphereCylinderImpl {
-  const char* name;
-  CastHit (*sweep)(const MovingSphere&, const Cylinder&);
+  CastHit (*sweep)(const A&, const B&);
 };
 
-/// The implementation under test of collide_cylinder_obb.
-struct CylinderObbImpl {
-  const char* name;
-  bool (*overlap)(const Cylinder&, const Obb&);
-  Contact (*collide)(const Cylinder&, const Obb&);
-};
-/// The implementation under test of collide_cylinder_triangle.
-struct CylinderTriangleImpl {
-  const char* name;
-  bool (*overlap)(const Cylinder&, const Triangle&);
-  Contact (*collide)(const Cylinder&, const Triangle&);
-};
-/// The implementation under test of collide_cylinder_cylinder.
-struct CylinderCylinderImpl {
-  const char* name;
-  bool (*overlap)(const Cylinder&, const Cylinder&);
-  Contact (*collide)(const Cylinder&, const Cylinder&);
-};
+/// The subject type of a query kind over shapes A and B.
+template <QueryKind K, class A, class B> struct ImplFor;
+template <class A, class B> struct ImplFor<QueryKind::Collide, A, B> { using type = CollideImpl<A, B>; };
+template <class A, class B> struct ImplFor<QueryKind::Cast, A, B> { using type = CastImpl<A, B>; };
+template <class A, class B> struct ImplFor<QueryKind::Sweep, A, B> { using type = SweepImpl<A, B>; };
+/// The subject type of query Q.
+template <QueryId Q>
+using ImplOf = typename ImplFor<QueryTraits<Q>::kind, typename QueryTraits<Q>::ShapeA, typename QueryTraits<Q>::ShapeB>::type;
+
+using CylinderSphereImpl = ImplOf<QueryId::collide_cylinder_sphere>;
+using CastSegmentCylinderImpl = ImplOf<QueryId::cast_segment_cylinder>;
+using CylinderCapsuleImpl = ImplOf<QueryId::collide_cylinder_capsule>;
+using SweepSphereCylinderImpl = ImplOf<QueryId::sweep_sphere_cylinder>;
+using CylinderObbImpl = ImplOf<QueryId::collide_cylinder_obb>;
+using CylinderTriangleImpl = ImplOf<QueryId::collide_cylinder_triangle>;
+using CylinderCylinderImpl = ImplOf<QueryId::collide_cylinder_cylinder>;
 
 extern const CylinderSphereImpl kProductionCylinderSphere;
 extern const CastSegmentCylinderImpl kProductionCastSegmentCylinder;
@@ -73,6 +68,15 @@ extern const SweepSphereCylinderImpl kProductionSweepSphereCylinder;
 extern const CylinderObbImpl kProductionCylinderObb;
 extern const CylinderTriangleImpl kProductionCylinderTriangle;
 extern const CylinderCylinderImpl kProductionCylinderCylinder;
+
+/// Production's subject of query Q (kProduction...), for generic code.
+template <QueryId Q> const ImplOf<Q>& production_of();
+#define GEOMCHECK_X(id, kind, A, B, summary) template <> const ImplOf<QueryId::id>& production_of<QueryId::id>();
+GEOMCHECK_QUERY_LIST(GEOMCHECK_X)
+#undef GEOMCHECK_X
+/// The subject type of the query whose case type is Case.
+template <class Case>
+using ImplOfCase = ImplOf<query_of_case<Case>>;
 
 using CylinderSphereCase = QueryTraits<QueryId::collide_cylinder_sphere>::Case;
 using SegmentCylinderCase = QueryTraits<QueryId::cast_segment_cylinder>::Case;
@@ -145,6 +149,18 @@ inline std::string verdict_word(QueryId id, const Evaluation& e) {
 /// Compares an evaluation with the query's tolerances (tolerances.hpp).
 CheckResult judge(QueryId id, const Evaluation& e);
 
+// --- every query, by kind (properties/src/kind_checks.cpp) ------------------
+/// Any input, valid or not: no crash; invalid input gives no hit; a hit's
+/// output is finite and its normal unit (a cast's or sweep's t in [0, 1]);
+/// collide queries: overlap agrees with collide's hit.
+template <class Case>
+CheckResult check_robust(const Case& c, const ImplOfCase<Case>& impl = production_of<query_of_case<Case>>());
+/// Every check of the query, in order, stopping at the first failure:
+/// robust, then (valid input only) oracle, consistency, symmetry, every
+/// metamorphic move, monotone.
+template <class Case>
+CheckResult check_all(const Case& c, const ImplOfCase<Case>& impl = production_of<query_of_case<Case>>());
+
 // --- collide_cylinder_sphere -------------------------------------------------
 /// Agreement with the exact oracle outside the band; depth, normal, point within bounds.
 CheckResult check_oracle(const CylinderSphereCase& c, const CylinderSphereImpl& impl = kProductionCylinderSphere);
@@ -157,10 +173,6 @@ CheckResult check_symmetry(const CylinderSphereCase& c, const CylinderSphereImpl
 CheckResult check_metamorphic(const CylinderSphereCase& c, int move, const CylinderSphereImpl& impl = kProductionCylinderSphere);
 /// Growing the sphere or the cylinder radius never turns overlap into separation.
 CheckResult check_monotone(const CylinderSphereCase& c, const CylinderSphereImpl& impl = kProductionCylinderSphere);
-/// Any input, valid or not: no crash, invalid gives no hit, valid gives finite output.
-CheckResult check_robust(const CylinderSphereCase& c, const CylinderSphereImpl& impl = kProductionCylinderSphere);
-/// Every check above (metamorphic over all moves).
-CheckResult check_all(const CylinderSphereCase& c, const CylinderSphereImpl& impl = kProductionCylinderSphere);
 
 // --- cast_segment_cylinder ---------------------------------------------------
 CheckResult check_oracle(const SegmentCylinderCase& c, const CastSegmentCylinderImpl& impl = kProductionCastSegmentCylinder);
@@ -171,8 +183,6 @@ CheckResult check_symmetry(const SegmentCylinderCase& c, const CastSegmentCylind
 CheckResult check_metamorphic(const SegmentCylinderCase& c, int move, const CastSegmentCylinderImpl& impl = kProductionCastSegmentCylinder);
 /// A wider cylinder or a longer segment never turns a hit into a miss (outside the band).
 CheckResult check_monotone(const SegmentCylinderCase& c, const CastSegmentCylinderImpl& impl = kProductionCastSegmentCylinder);
-CheckResult check_robust(const SegmentCylinderCase& c, const CastSegmentCylinderImpl& impl = kProductionCastSegmentCylinder);
-CheckResult check_all(const SegmentCylinderCase& c, const CastSegmentCylinderImpl& impl = kProductionCastSegmentCylinder);
 
 // --- collide_cylinder_capsule --------------------------------------------------
 /// Agreement with the engine outside the band; the depth claim (shallow
@@ -185,8 +195,6 @@ CheckResult check_symmetry(const CylinderCapsuleCase& c, const CylinderCapsuleIm
 CheckResult check_metamorphic(const CylinderCapsuleCase& c, int move, const CylinderCapsuleImpl& impl = kProductionCylinderCapsule);
 /// Growing either radius never turns overlap into separation (outside the band).
 CheckResult check_monotone(const CylinderCapsuleCase& c, const CylinderCapsuleImpl& impl = kProductionCylinderCapsule);
-CheckResult check_robust(const CylinderCapsuleCase& c, const CylinderCapsuleImpl& impl = kProductionCylinderCapsule);
-CheckResult check_all(const CylinderCapsuleCase& c, const CylinderCapsuleImpl& impl = kProductionCylinderCapsule);
 
 // --- sweep_sphere_cylinder -----------------------------------------------------
 /// Hit/miss agrees with the engine (the swept capsule against the cylinder)
@@ -204,8 +212,6 @@ CheckResult check_symmetry(const SweepCylinderCase& c, const SweepSphereCylinder
 CheckResult check_metamorphic(const SweepCylinderCase& c, int move, const SweepSphereCylinderImpl& impl = kProductionSweepSphereCylinder);
 /// A bigger ball, a wider cylinder or a longer sweep never turns a hit into a miss (outside the band).
 CheckResult check_monotone(const SweepCylinderCase& c, const SweepSphereCylinderImpl& impl = kProductionSweepSphereCylinder);
-CheckResult check_robust(const SweepCylinderCase& c, const SweepSphereCylinderImpl& impl = kProductionSweepSphereCylinder);
-CheckResult check_all(const SweepCylinderCase& c, const SweepSphereCylinderImpl& impl = kProductionSweepSphereCylinder);
 
 // --- collide_cylinder_obb ------------------------------------------------------
 /// Agreement with the engine outside the band; the depth claim (see the
@@ -220,8 +226,6 @@ CheckResult check_symmetry(const CylinderObbCase& c, const CylinderObbImpl& impl
 CheckResult check_metamorphic(const CylinderObbCase& c, int move, const CylinderObbImpl& impl = kProductionCylinderObb);
 /// A wider or longer cylinder or a bigger box never turns overlap into separation (outside the band).
 CheckResult check_monotone(const CylinderObbCase& c, const CylinderObbImpl& impl = kProductionCylinderObb);
-CheckResult check_robust(const CylinderObbCase& c, const CylinderObbImpl& impl = kProductionCylinderObb);
-CheckResult check_all(const CylinderObbCase& c, const CylinderObbImpl& impl = kProductionCylinderObb);
 /// Axes orthonormal to 16 eps (|a_i . a_j - delta_ij|): production's contract.
 bool obb_in_contract(const Obb& b);
 
@@ -241,8 +245,6 @@ CheckResult check_symmetry(const CylinderTriangleCase& c, const CylinderTriangle
 CheckResult check_metamorphic(const CylinderTriangleCase& c, int move, const CylinderTriangleImpl& impl = kProductionCylinderTriangle);
 /// A wider or longer cylinder or a bigger triangle never turns overlap into separation (outside the band).
 CheckResult check_monotone(const CylinderTriangleCase& c, const CylinderTriangleImpl& impl = kProductionCylinderTriangle);
-CheckResult check_robust(const CylinderTriangleCase& c, const CylinderTriangleImpl& impl = kProductionCylinderTriangle);
-CheckResult check_all(const CylinderTriangleCase& c, const CylinderTriangleImpl& impl = kProductionCylinderTriangle);
 
 // --- collide_cylinder_cylinder -------------------------------------------------
 /// Agreement with the engine outside the band; the point in both cylinders;
@@ -264,8 +266,6 @@ CheckResult check_symmetry(const CylinderCylinderCase& c, const CylinderCylinder
 CheckResult check_metamorphic(const CylinderCylinderCase& c, int move, const CylinderCylinderImpl& impl = kProductionCylinderCylinder);
 /// A wider or longer cylinder (either one) never turns overlap into separation (outside the band).
 CheckResult check_monotone(const CylinderCylinderCase& c, const CylinderCylinderImpl& impl = kProductionCylinderCylinder);
-CheckResult check_robust(const CylinderCylinderCase& c, const CylinderCylinderImpl& impl = kProductionCylinderCylinder);
-CheckResult check_all(const CylinderCylinderCase& c, const CylinderCylinderImpl& impl = kProductionCylinderCylinder);
 /// Production's depth over the certified penetration depth (Evaluation::depth_ratio):
 /// NaN when the shapes do not overlap, the enclosure is wider than 1% or the
 /// penetration depth is below 1e-9 * scale.

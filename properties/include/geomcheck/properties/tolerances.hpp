@@ -2,7 +2,7 @@
 //
 // All bounds are multiples of the case's `scale` (the largest coordinate
 // magnitude or extent in the case; oracle::case_scale). They mirror the
-// precision table in the README; tests/test_precision.cpp asserts, on a
+// precision table in docs/tolerances.md; tests/test_precision.cpp asserts, on a
 // fixed seed, that the worst observed error of each lies in
 // [bound / 100, bound], so a bound that is far too loose fails as stale.
 //

@@ -1,4 +1,6 @@
-// geomcheck — known-wrong variants of production (test tree only).
+// geomcheck — known-wrong variants of production: each property suite must
+// catch them (the teeth), and `geomcheck campaign --variant NAME` runs one in
+// production's place.
 #pragma once
 
 #include "geomcheck/properties/checks.hpp"

@@ -1,4 +1,4 @@
-#include "draw.hpp"
+#include "geomcheck/reports/draw.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,6 +1,6 @@
-// geomcheck — known-wrong variants of production, kept in the test tree so
-// the suite proves it can fail (DESIGN.md section 4, "Teeth").
-#include "teeth_variants.hpp"
+// geomcheck — known-wrong variants of production: the suites prove they can
+// fail by catching each of them (properties/tests/test_teeth.cpp).
+#include "geomcheck/properties/teeth.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,0 +1,18 @@
+# The registered query ids, read from the registry itself
+# (core/include/geomcheck/registry.hpp, one `X(id, ...)` line per query), so
+# that no list of queries is typed in a build file. Reconfigures when the
+# registry changes.
+function(geomcheck_query_ids out)
+  set(registry ${PROJECT_SOURCE_DIR}/core/include/geomcheck/registry.hpp)
+  set_property(DIRECTORY ${PROJECT_SOURCE_DIR} APPEND PROPERTY CMAKE_CONFIGURE_DEPENDS ${registry})
+  file(STRINGS ${registry} lines REGEX "^  X\\([a-z0-9_]+, ")
+  set(ids)
+  foreach(line IN LISTS lines)
+    string(REGEX REPLACE "^  X\\(([a-z0-9_]+), .*" "\\1" id "${line}")
+    list(APPEND ids ${id})
+  endforeach()
+  if(NOT ids)
+    message(FATAL_ERROR "no query ids found in ${registry}")
+  endif()
+  set(${out} ${ids} PARENT_SCOPE)
+endfunction()

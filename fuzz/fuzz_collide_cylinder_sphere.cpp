@@ -1,6 +1,0 @@
-// geomcheck — libFuzzer target for collide_cylinder_sphere (see fuzz_query.hpp for the input layout).
-#include "fuzz_query.hpp"
-
-extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-  return geomcheck::fuzz::run_one<geomcheck::QueryId::collide_cylinder_sphere>(data, size);
-}

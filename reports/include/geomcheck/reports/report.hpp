@@ -1,0 +1,91 @@
+// geomcheck — what a campaign writes: report.json, report.html (a precision
+// table, then per query the verdict mix, error percentiles, histograms and
+// the counterexamples drawn) and a page beside every saved counterexample.
+// The campaign (tools/campaign.cpp) fills one QueryReport per query; this
+// library turns them into files.
+#pragma once
+
+#include <filesystem>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "geomcheck/properties/tolerances.hpp"
+
+namespace geomcheck::report {
+
+/// A sample of one error measure (multiples of the case scale); non-finite values are left out.
+struct Series {
+  std::vector<double> v;
+  /// Adds x when finite.
+  void add(double x) {
+    if (std::isfinite(x)) v.push_back(x);
+  }
+  /// The p-quantile (0..1) of the sample; NaN when empty.
+  double pct(double p) {
+    if (v.empty()) return NAN;
+    std::sort(v.begin(), v.end());
+    return v[std::min(v.size() - 1, static_cast<std::size_t>(p * (v.size() - 1) + 0.5))];
+  }
+  /// Histogram of log10(error / scale), buckets -18..-4 plus "0".
+  std::vector<int> hist() const {
+    std::vector<int> h(16, 0);
+    for (double x : v) {
+      if (x <= 0) { ++h[0]; continue; }
+      int b = static_cast<int>(std::floor(std::log10(x))) + 19;  // 1e-18 -> bucket 1
+      h[std::clamp(b, 1, 15)]++;
+    }
+    return h;
+  }
+};
+
+
+/// Everything reported about one query of a campaign.
+struct QueryReport {
+  std::string name, summary;
+  int cases = 0, valid = 0, prod_hits = 0, truth_hits = 0;
+  std::map<std::string, int> verdicts;
+  int disagree = 0, excused = 0, beyond = 0, check_failures = 0;
+  double worst_margin = 0;
+  Series depth, normal, point, t;
+  int fcl_supported = 0, fcl_ok = 0, fcl_disagree = 0, fcl_beyond = 0;
+  Series fcl_depth, fcl_normal, fcl_point;  // the yardsticks of production's depth, normal, point
+  Series fcl_t_gap;  // production's t yardstick (the gap at FCL's t)
+  Series fcl_t;  // |t_FCL - t_exact| (absolute, t in [0, 1])
+  Series fcl_distance;  // |FCL distance - certified distance| on separated pairs FCL calls separated
+  int fcl_distance_asked = 0, fcl_distance_beyond = 0;  // distance's verdict (< 0: meet) beyond the band
+  std::vector<std::string> fcl_cases;  // FCL disagreements beyond the band, saved (all of them)
+  std::map<std::string, int> fcl_drawn;  // per kind of disagreement (the first 3 of each are drawn)
+  double prod_ns = NAN, oracle_us = NAN;
+  std::vector<std::string> counterexamples;
+  std::vector<std::string> drawings;      // production's counterexamples, drawn (first 12)
+  std::vector<std::string> fcl_drawings;  // FCL's disagreements beyond the band, drawn (the first 3 of each kind)
+  std::map<std::string, int> failures_by_property;
+  Tolerances tol{};
+  // Queries whose depth is an upper bound, not the penetration depth
+  // (collide_cylinder_cylinder): depth / certified penetration depth over
+  // the overlapping cases where the engine encloses it within 1%.
+  bool depth_is_bound = false;
+  Series depth_ratio;
+};
+
+
+/// One campaign run: what was run, and how to run it again.
+struct RunInfo {
+  unsigned long long seed = 0;
+  std::string per_query;   ///< the case counts, in words
+  std::string rerun;       ///< the command line that reproduces the run
+  std::string under_test;  ///< "production" or a variant's name
+};
+
+/// Writes report.json.
+void write_json(const std::filesystem::path& file, const RunInfo& run, std::vector<QueryReport>& reps);
+/// Writes report.html.
+void write_html(const std::filesystem::path& file, const RunInfo& run, std::vector<QueryReport>& reps);
+/// A counterexample's page: its drawing and the command that replays it.
+void write_counterexample_page(const std::filesystem::path& file, const std::string& name, const std::string& drawing,
+                               const std::string& subject, const std::string& case_path);
+/// s with <, > and & escaped for HTML.
+std::string html(const std::string& s);
+
+}  // namespace geomcheck::report

@@ -1,0 +1,272 @@
+#include "geomcheck/reports/report.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+
+namespace geomcheck::report {
+
+namespace {
+
+std::string jnum(double x) {
+  if (!std::isfinite(x)) return "null";
+  char b[40];
+  std::snprintf(b, sizeof b, "%.6g", x);
+  return b;
+}
+std::string jstr(const std::string& s) {
+  std::string o = "\"";
+  for (char c : s) {
+    if (c == '"' || c == '\\') o += '\\', o += c;
+    else if (c == '\n') o += "\\n";
+    else if (static_cast<unsigned char>(c) < 0x20) o += ' ';
+    else o += c;
+  }
+  return o + "\"";
+}
+std::string hnum(double x) {  // for a table cell: three digits, a dash for none
+  if (!std::isfinite(x)) return "&ndash;";
+  char b[32];
+  std::snprintf(b, sizeof b, "%.3g", x);
+  return b;
+}
+
+void write_series_json(std::ostream& o, const char* name, Series& s) {
+  o << "      " << jstr(name) << ": {\"n\": " << s.v.size() << ", \"p50\": " << jnum(s.pct(0.5))
+    << ", \"p90\": " << jnum(s.pct(0.9)) << ", \"p99\": " << jnum(s.pct(0.99)) << ", \"max\": " << jnum(s.pct(1.0))
+    << ", \"log10_histogram\": [";
+  const auto h = s.hist();
+  for (std::size_t i = 0; i < h.size(); ++i) o << (i ? ", " : "") << h[i];
+  o << "]}";
+}
+
+std::string hist_svg(const Series& s) {
+  const auto h = s.hist();
+  const int mx = std::max(1, *std::max_element(h.begin(), h.end()));
+  std::ostringstream o;
+  o << "<svg width='330' height='70' role='img'><title>log10 histogram</title>";
+  for (std::size_t i = 0; i < h.size(); ++i) {
+    const int bh = h[i] * 50 / mx;
+    o << "<rect x='" << 4 + i * 20 << "' y='" << 55 - bh << "' width='16' height='" << bh
+      << "' fill='#4a78c2'><title>" << (i == 0 ? std::string("0") : "1e" + std::to_string(int(i) - 19)) << ": "
+      << h[i] << "</title></rect>";
+  }
+  o << "<text x='2' y='68' font-size='9'>0</text><text x='60' y='68' font-size='9'>1e-16</text>"
+       "<text x='140' y='68' font-size='9'>1e-12</text><text x='220' y='68' font-size='9'>1e-8</text></svg>";
+  return o.str();
+}
+
+
+// The precision table: production and FCL, a row each, per query.
+void write_precision_table(std::ostream& h, std::vector<QueryReport>& reps) {
+  h << "<h2 id='precision'>Precision table: production and FCL against the exact oracle</h2>"
+       "<p>Every error is measured with the same exact yardstick for both engines, as a multiple of the case scale "
+       "(p50 / p99 / max over the cases where it applies). <b>verdicts</b>: disagreements with the certified "
+       "verdict where the exact answer is farther than the band from touching (collide: overlap or FCL's collide; "
+       "FCL's distance is counted apart: &lt; 0 meaning &lsquo;they meet&rsquo;). <b>depth</b>: distance of the "
+       "reported depth from the certified penetration depth. <b>normal</b>: how much farther the shapes overlap "
+       "along the reported normal than the true depth (0 for a minimal direction). <b>point</b>: how far the "
+       "reported point lies outside either shape. <b>distance</b>: |reported &minus; certified distance| on "
+       "separated pairs. <b>t</b>: the gap (or depth) of the segment point or ball at the reported t; "
+       "|&Delta;t| is FCL's t against the exact first touch, absolute.</p>"
+       "<table style='font-size:12px'><tr><th class='l'>query</th><th class='l'>engine</th><th>answered</th>"
+       "<th>verdicts beyond the band</th><th>depth</th><th>normal</th><th>point</th><th>distance</th>"
+       "<th>t</th><th>|&Delta;t|</th></tr>";
+  auto tri = [](Series& s) {
+    if (s.v.empty()) return std::string("&ndash;");
+    return hnum(s.pct(0.5)) + " / " + hnum(s.pct(0.99)) + " / " + hnum(s.pct(1.0));
+  };
+  for (QueryReport& r : reps) {
+    auto rate = [&](int n, int of) { return std::to_string(n) + (of ? " (" + hnum(100.0 * n / of) + "%)" : ""); };
+    Series none;
+    h << "<tr><td class='l' rowspan='2'><a href='#" << r.name << "'>" << r.name << "</a></td><td class='l'>production</td><td>"
+      << r.valid << "</td><td class='" << (r.beyond ? "bad" : "ok") << "'>" << rate(r.beyond, r.valid) << "</td><td>"
+      << tri(r.depth) << "</td><td>" << tri(r.normal) << "</td><td>" << tri(r.point) << "</td><td>&ndash;</td><td>"
+      << tri(r.t) << "</td><td>&ndash;</td></tr>";
+    h << "<tr><td class='l'>FCL</td><td>" << r.fcl_ok << "</td><td class='" << (r.fcl_beyond || r.fcl_distance_beyond ? "bad" : "ok")
+      << "'>" << rate(r.fcl_beyond, r.fcl_ok);
+    if (r.fcl_distance_asked) h << "<br>distance: " << rate(r.fcl_distance_beyond, r.fcl_distance_asked);
+    h << "</td><td>" << tri(r.fcl_depth) << "</td><td>" << tri(r.fcl_normal) << "</td><td>" << tri(r.fcl_point)
+      << "</td><td>" << tri(r.fcl_distance) << "</td><td>" << tri(r.fcl_t_gap) << "</td><td>" << tri(r.fcl_t)
+      << "</td></tr>";
+  }
+  h << "</table>";
+}
+
+// A row of the error table: n, percentiles, histogram, the bound.
+void error_row(std::ostream& h, const char* n, Series& s, double bound) {
+  if (s.v.empty()) return;
+  const double mx = s.pct(1.0);
+  h << "<tr><td class='l'>" << n << "</td><td>" << (bound > 0 ? jnum(bound) : std::string("&ndash;")) << "</td><td>" << s.v.size() << "</td><td>" << jnum(s.pct(0.5))
+    << "</td><td>" << jnum(s.pct(0.9)) << "</td><td>" << jnum(s.pct(0.99)) << "</td><td class='"
+    << (bound > 0 && mx > bound ? "bad" : "") << "'>" << jnum(mx) << "</td><td>" << hist_svg(s) << "</td></tr>";
+}
+
+// A query's section: its verdicts, errors, depth ratio, failures, drawings.
+void write_query_section(std::ostream& h, QueryReport& r) {
+  const bool clean = r.beyond == 0 && r.check_failures == 0;
+  h << "<h2 id='" << r.name << "'>" << r.name << "</h2><p>" << html(r.summary) << "</p><p class='"
+    << (clean ? "ok'>verified: no disagreement beyond the band, every property holds" : "bad'>FAILURES found")
+    << "</p><table><tr><th class='l'>measure</th><th>production</th><th>FCL</th></tr>"
+    << "<tr><td class='l'>cases (valid)</td><td>" << r.cases << " (" << r.valid << ")</td><td>" << r.fcl_ok << " answered</td></tr>"
+    << "<tr><td class='l'>hit rate (oracle " << jnum(r.valid ? double(r.truth_hits) / r.valid : NAN) << ")</td><td>"
+    << jnum(r.valid ? double(r.prod_hits) / r.valid : NAN) << "</td><td></td></tr>"
+    << "<tr><td class='l'>verdict disagreements</td><td>" << r.disagree << "</td><td>" << r.fcl_disagree << "</td></tr>"
+    << "<tr><td class='l'>beyond the band (" << jnum(r.tol.verdict) << " &times; scale)</td><td class='"
+    << (r.beyond ? "bad" : "ok") << "'>" << r.beyond << "</td><td class='" << (r.fcl_beyond ? "bad" : "ok") << "'>"
+    << r.fcl_beyond << "</td></tr>"
+    << "<tr><td class='l'>worst disagreement margin</td><td>" << jnum(r.worst_margin) << "</td><td></td></tr>"
+    << "<tr><td class='l'>property failures</td><td class='" << (r.check_failures ? "bad" : "ok") << "'>"
+    << r.check_failures << "</td><td></td></tr>"
+    << "<tr><td class='l'>production time per query</td><td>" << jnum(r.prod_ns) << " ns</td><td></td></tr>"
+    << "<tr><td class='l'>oracle+checks time per case</td><td>" << jnum(r.oracle_us) << " &micro;s</td><td></td></tr>"
+    << "</table><table><tr><th class='l'>verdict</th><th>cases</th></tr>";
+  for (const auto& [k, v] : r.verdicts) h << "<tr><td class='l'>" << k << "</td><td>" << v << "</td></tr>";
+  h << "</table><table><tr><th class='l'>error / scale</th><th>bound</th><th>n</th><th>p50</th><th>p90</th><th>p99</th><th>max</th><th>log10 histogram</th></tr>";
+  error_row(h, "depth", r.depth, r.tol.depth);
+  error_row(h, "normal", r.normal, r.tol.normal);
+  error_row(h, "point", r.point, r.tol.point);
+  error_row(h, "t", r.t, r.tol.t);
+  error_row(h, "FCL depth", r.fcl_depth, 0);
+  error_row(h, "FCL normal", r.fcl_normal, 0);
+  error_row(h, "FCL point", r.fcl_point, 0);
+  error_row(h, "FCL distance", r.fcl_distance, 0);
+  error_row(h, "FCL t", r.fcl_t_gap, 0);
+  error_row(h, "FCL |t - t_exact| (absolute)", r.fcl_t, 0);
+  h << "</table>";
+  if (r.depth_is_bound) {
+    // The depth is the overlap along the returned normal, not the minimal
+    // translation: how much larger than the penetration depth it is.
+    Series& q = r.depth_ratio;
+    h << "<table><tr><th class='l'>depth / penetration depth</th><th>n</th><th>min</th><th>p50</th><th>p90</th>"
+         "<th>p99</th><th>max</th></tr><tr><td class='l'>production (overlapping cases, penetration depth "
+         "certified to 1%)</td><td>"
+      << q.v.size() << "</td><td>" << jnum(q.pct(0.0)) << "</td><td>" << jnum(q.pct(0.5)) << "</td><td>"
+      << jnum(q.pct(0.9)) << "</td><td>" << jnum(q.pct(0.99)) << "</td><td>" << jnum(q.pct(1.0))
+      << "</td></tr></table><p>The contact's depth is the overlap of the shapes along its normal, an upper bound "
+         "of the penetration depth (1 where the normal is a minimal direction); only a depth below the "
+         "penetration depth is an error (the <b>depth</b> row above).</p>";
+  }
+  if (!r.failures_by_property.empty()) {
+    h << "<h3>failures</h3><ul>";
+    for (const auto& [k, v] : r.failures_by_property) h << "<li>" << html(k) << ": " << v << "</li>";
+    h << "</ul><p>counterexamples (replay with <code>geomcheck replay FILE</code>; each drawn in the "
+         ".html beside it):</p><ul>";
+    for (std::size_t k = 0; k < r.counterexamples.size() && k < 50; ++k)
+      h << "<li><code>" << html(r.counterexamples[k]) << "</code></li>";
+    if (r.counterexamples.size() > 50)
+      h << "<li>and " << r.counterexamples.size() - 50 << " more under <code>counterexamples/" << r.name << "/</code></li>";
+    h << "</ul><h3>counterexamples drawn (first " << r.drawings.size() << " of " << r.counterexamples.size() << ")</h3>";
+    for (const auto& d : r.drawings) h << d;
+  }
+  if (!r.fcl_drawings.empty()) {
+    h << "<h3>FCL's disagreements beyond the band, drawn (" << r.fcl_drawings.size() << " of " << r.fcl_cases.size()
+      << "; every one saved under <code>fcl-disagreements/" << r.name
+      << "/</code>, replay with <code>geomcheck replay DIR</code>)</h3>";
+    for (const auto& d : r.fcl_drawings) h << d;
+  }
+}
+
+}  // namespace
+
+std::string html(const std::string& s) {
+  std::string o;
+  for (char c : s) {
+    if (c == '<') o += "&lt;";
+    else if (c == '>') o += "&gt;";
+    else if (c == '&') o += "&amp;";
+    else o += c;
+  }
+  return o;
+}
+
+
+void write_json(const std::filesystem::path& file, const RunInfo& run, std::vector<QueryReport>& reps) {
+  std::ofstream js(file);
+  js << "{\n  \"tool\": \"geomcheck\",\n  \"seed\": " << run.seed << ",\n  \"cases_per_query\": " << jstr(run.per_query)
+     << ",\n  \"replay\": " << jstr(run.rerun) << ",\n  \"implementation\": " << jstr(run.under_test)
+     << ",\n  \"queries\": [\n";
+  for (std::size_t i = 0; i < reps.size(); ++i) {
+    QueryReport& r = reps[i];
+    js << "    {\n      \"id\": " << jstr(r.name) << ",\n      \"summary\": " << jstr(r.summary)
+       << ",\n      \"cases\": " << r.cases << ", \"valid\": " << r.valid << ", \"production_hits\": " << r.prod_hits
+       << ", \"oracle_hits\": " << r.truth_hits << ",\n      \"hit_rate\": " << jnum(r.valid ? double(r.prod_hits) / r.valid : NAN)
+       << ",\n      \"verdicts\": {";
+    bool first = true;
+    for (const auto& [k, v] : r.verdicts) js << (first ? "" : ", ") << jstr(k) << ": " << v, first = false;
+    js << "},\n      \"disagreements\": " << r.disagree << ", \"inside_band\": " << r.excused
+       << ", \"beyond_band\": " << r.beyond << ", \"worst_margin\": " << jnum(r.worst_margin)
+       << ", \"verdict_band\": " << jnum(r.tol.verdict) << ",\n      \"check_failures\": " << r.check_failures
+       << ", \"failures_by_property\": {";
+    first = true;
+    for (const auto& [k, v] : r.failures_by_property) js << (first ? "" : ", ") << jstr(k) << ": " << v, first = false;
+    js << "},\n      \"errors\": {\n";
+    write_series_json(js, "depth", r.depth);
+    js << ",\n";
+    write_series_json(js, "normal", r.normal);
+    js << ",\n";
+    write_series_json(js, "point", r.point);
+    js << ",\n";
+    write_series_json(js, "t", r.t);
+    js << "\n      },\n";
+    if (r.depth_is_bound) {
+      Series& q = r.depth_ratio;
+      js << "      \"depth_over_penetration_depth\": {\"n\": " << q.v.size() << ", \"min\": " << jnum(q.pct(0.0))
+         << ", \"p50\": " << jnum(q.pct(0.5)) << ", \"p90\": " << jnum(q.pct(0.9)) << ", \"p99\": " << jnum(q.pct(0.99))
+         << ", \"max\": " << jnum(q.pct(1.0)) << "},\n";
+    }
+    js << "      \"fcl\": {\"supported\": " << r.fcl_supported << ", \"answered\": " << r.fcl_ok
+       << ", \"disagreements\": " << r.fcl_disagree << ", \"beyond_band\": " << r.fcl_beyond << ",\n";
+    write_series_json(js, "depth", r.fcl_depth);
+    js << ",\n";
+    write_series_json(js, "normal", r.fcl_normal);
+    js << ",\n";
+    write_series_json(js, "point", r.fcl_point);
+    js << ",\n";
+    write_series_json(js, "t", r.fcl_t_gap);
+    js << ",\n";
+    write_series_json(js, "t_abs", r.fcl_t);
+    js << ",\n      \"distance_asked\": " << r.fcl_distance_asked
+       << ", \"distance_verdicts_beyond_band\": " << r.fcl_distance_beyond << ",\n";
+    write_series_json(js, "distance", r.fcl_distance);
+    js << ", \"cases\": [";
+    for (std::size_t k = 0; k < r.fcl_cases.size(); ++k) js << (k ? ", " : "") << jstr(r.fcl_cases[k]);
+    js << "]},\n      \"production_ns_per_query\": " << jnum(r.prod_ns) << ", \"oracle_us_per_case\": " << jnum(r.oracle_us)
+       << ",\n      \"counterexamples\": [";
+    for (std::size_t k = 0; k < r.counterexamples.size(); ++k) js << (k ? ", " : "") << jstr(r.counterexamples[k]);
+    js << "]\n    }" << (i + 1 < reps.size() ? "," : "") << "\n";
+  }
+  js << "  ]\n}\n";
+
+}
+
+void write_html(const std::filesystem::path& file, const RunInfo& run, std::vector<QueryReport>& reps) {
+  std::ofstream h(file);
+  h << "<!doctype html><html lang='en'><head><meta charset='utf-8'><title>geomcheck campaign report</title>"
+       "<style>body{font-family:sans-serif;margin:2em;max-width:1100px}table{border-collapse:collapse;margin:1em 0}"
+       "td,th{border:1px solid #bbb;padding:4px 8px;text-align:right}th{background:#eee}td.l,th.l{text-align:left}"
+       ".bad{color:#b00;font-weight:bold}.ok{color:#070}figure.cx{margin:1em 0;border-top:1px solid #ddd}"
+       "figure.cx svg{margin-right:6px}figcaption{font-size:12px;margin:4px 0;word-break:break-all}"
+       ".legend{font-size:12px;margin:2px 0}</style></head><body>"
+       "<h1>geomcheck campaign report</h1><p>seed <code>"
+    << run.seed << "</code>, " << html(run.per_query) << ", implementation under test: <b>" << html(run.under_test)
+    << "</b>. Errors are multiples of the case scale "
+       "(largest coordinate magnitude or extent). Rerun: <code>" << html(run.rerun) << "</code></p>";
+  write_precision_table(h, reps);
+  for (QueryReport& r : reps) write_query_section(h, r);
+  h << "</body></html>\n";
+}
+
+void write_counterexample_page(const std::filesystem::path& file, const std::string& name, const std::string& drawing,
+                               const std::string& subject, const std::string& case_path) {
+  std::ofstream page(file);
+  page << "<!doctype html><html lang='en'><head><meta charset='utf-8'><title>" << html(name)
+       << "</title><style>body{font-family:sans-serif;margin:2em}figcaption{font-size:12px;margin:4px 0}"
+          ".legend{font-size:12px}</style></head><body>"
+       << drawing << "<p>" << html(subject) << " fails this case; <code>geomcheck replay " << html(case_path)
+       << "</code> replays it against production.</p></body></html>\n";
+}
+
+}  // namespace geomcheck::report
