@@ -79,12 +79,12 @@ class QueryRun {
   using Impl = typename Spec<Q>::Impl;
 
   QueryRun(const CampaignOptions& opt, const std::filesystem::path& out_dir) : opt_(opt), out_dir_(out_dir) {
-    impl_ = SpecOf<Q>::subject(opt.variant);
-    if (!impl_) impl_ = &Spec<Q>::production();
+    impl_ = Spec<Q>::subject(opt.variant);
+    if (!impl_) impl_ = &production_of<Q>();
     rep_.name = info(Q).name;
     rep_.summary = info(Q).summary;
     rep_.tol = tolerances(Q);
-    rep_.depth_is_bound = Spec<Q>::claims.depth == Claims::Depth::UpperBound;
+    rep_.depth_is_bound = Spec<Q>::claims().depth == Claims::Depth::UpperBound;
   }
 
   QueryReport run(int threads) {
@@ -115,7 +115,7 @@ class QueryRun {
     int sink = 0;
     const int reps = 5;
     for (int r = 0; r < reps; ++r)
-      for (const auto& c : cases_) sink += SpecOf<Q>::hit(c.first, *impl_);
+      for (const auto& c : cases_) sink += Spec<Q>::hit(c.first, *impl_);
     const double ns = std::chrono::duration<double, std::nano>(Clock::now() - t0).count();
     rep_.prod_ns = ns / (reps * std::max<std::size_t>(1, cases_.size()));
     if (sink == -1) std::puts("");
@@ -287,7 +287,7 @@ class QueryRun {
 
 int campaign_cases(const CampaignOptions& opt, QueryId id) {
   if (opt.cases > 0) return opt.cases;
-  return visit_query(id, [](auto q) { return Spec<decltype(q)::value>::default_cases; });
+  return visit_query(id, [](auto q) { return Spec<decltype(q)::value>::default_cases(); });
 }
 
 std::vector<std::pair<std::string, std::string>> campaign_variants() {
@@ -313,8 +313,8 @@ int run_campaign(const CampaignOptions& opt) {
     constexpr QueryId Q = decltype(q)::value;
     if (!opt.queries.empty() && std::find(opt.queries.begin(), opt.queries.end(), info(Q).name) == opt.queries.end()) return;
     if (!opt.variant.empty()) {
-      const auto* subject = SpecOf<Q>::subject(opt.variant);
-      if (!subject || subject == &Spec<Q>::production()) return;  // not one of Q's variants
+      const auto* subject = Spec<Q>::subject(opt.variant);
+      if (!subject || subject == &production_of<Q>()) return;  // not one of Q's variants
     }
     reps.push_back(QueryRun<Q>(opt, out_dir).run(threads));
   });

@@ -1,6 +1,7 @@
 #include "peer.hpp"
 
 #include <cstdio>
+#include <type_traits>
 
 namespace geomcheck {
 
@@ -70,37 +71,31 @@ PeerAnswer with_distance(PeerAnswer p, const oracles::PeerDistance& d) {
   return p;
 }
 
+// How FCL answers a collide pair, after its depth: libccd's MPR everywhere
+// but the sphere (FCL's closed form) and the triangle (its mesh narrow phase).
+template <class B>
+const char* collide_note() {
+  if constexpr (std::is_same_v<B, Sphere>) return "";
+  else if constexpr (std::is_same_v<B, Triangle>)
+    return " (FCL's mesh narrow phase shapeTriangleIntersect; libccd MPR estimate, not the minimum)";
+  else return " (libccd MPR estimate, not the minimum)";
+}
+
 }  // namespace
 
-PeerAnswer peer(const CylinderSphereCase& c) {
-  return with_distance(contact_answer(oracles::fcl_collide(c.a, c.b)), oracles::fcl_distance(c.a, c.b));
+template <class Case>
+PeerAnswer peer(const Case& c) {
+  constexpr QueryKind kind = QueryTraits<query_of_case<Case>>::kind;
+  if constexpr (kind == QueryKind::Collide)
+    return with_distance(contact_answer(oracles::fcl_collide(c.a, c.b), collide_note<typename Case::ShapeB>()),
+                         oracles::fcl_distance(c.a, c.b));
+  else if constexpr (kind == QueryKind::Cast)
+    return cast_answer(oracles::fcl_cast(c.a, c.b), "FCL continuous collision of a radius-0 sphere");
+  else return cast_answer(oracles::fcl_sweep(c.a, c.b), "FCL continuous collision of the ball; no point or normal");
 }
 
-PeerAnswer peer(const SegmentCylinderCase& c) {
-  return cast_answer(oracles::fcl_cast(c.a, c.b), "FCL continuous collision of a radius-0 sphere");
-}
-
-PeerAnswer peer(const CylinderCapsuleCase& c) {
-  return with_distance(contact_answer(oracles::fcl_collide(c.a, c.b), " (libccd MPR estimate, not the minimum)"), oracles::fcl_distance(c.a, c.b));
-}
-
-PeerAnswer peer(const CylinderObbCase& c) {
-  return with_distance(contact_answer(oracles::fcl_collide(c.a, c.b), " (libccd MPR estimate, not the minimum)"), oracles::fcl_distance(c.a, c.b));
-}
-
-PeerAnswer peer(const CylinderTriangleCase& c) {
-  return with_distance(
-      contact_answer(oracles::fcl_collide(c.a, c.b),
-                     " (FCL's mesh narrow phase shapeTriangleIntersect; libccd MPR estimate, not the minimum)"),
-      oracles::fcl_distance(c.a, c.b));
-}
-
-PeerAnswer peer(const CylinderCylinderCase& c) {
-  return with_distance(contact_answer(oracles::fcl_collide(c.a, c.b), " (libccd MPR estimate, not the minimum)"), oracles::fcl_distance(c.a, c.b));
-}
-
-PeerAnswer peer(const SweepCylinderCase& c) {
-  return cast_answer(oracles::fcl_sweep(c.a, c.b), "FCL continuous collision of the ball; no point or normal");
-}
+#define GEOMCHECK_X(id, kind, A, B, summary) template PeerAnswer peer(const PairCase<A, B>&);
+GEOMCHECK_QUERY_LIST(GEOMCHECK_X)
+#undef GEOMCHECK_X
 
 }  // namespace geomcheck

@@ -24,19 +24,11 @@ struct PeerAnswer {
   std::string text;        ///< human readable
 };
 
-PeerAnswer peer(const CylinderSphereCase& c);
-PeerAnswer peer(const SegmentCylinderCase& c);
-/// fcl_collide(Cylinder, Capsule): libccd's MPR, depth not the minimum (see fcl_adapter.hpp).
-PeerAnswer peer(const CylinderCapsuleCase& c);
-/// fcl_sweep: continuous collision of the ball, hit and t only (see fcl_adapter.hpp).
-PeerAnswer peer(const SweepCylinderCase& c);
-/// fcl_collide(Cylinder, Obb): libccd's MPR on FCL's box, depth not the minimum (see fcl_adapter.hpp).
-PeerAnswer peer(const CylinderObbCase& c);
-/// fcl_collide(Cylinder, Triangle): FCL's per-triangle mesh narrow phase (shapeTriangleIntersect;
-/// fcl::collide has no cylinder/triangle pair), libccd's MPR, depth not the minimum (see fcl_adapter.hpp).
-PeerAnswer peer(const CylinderTriangleCase& c);
-/// fcl_collide(Cylinder, Cylinder): libccd's MPR on the two cylinders, depth not the minimum (see fcl_adapter.hpp).
-PeerAnswer peer(const CylinderCylinderCase& c);
+/// FCL's answer to a case of any registered query (oracles/fcl/fcl_adapter.hpp
+/// says how FCL is asked for each pair: libccd's MPR and GJK, guarded, or a
+/// closed form; continuous collision for casts and sweeps).
+template <class Case>
+PeerAnswer peer(const Case& c);
 
 /// `impl` (default: production) evaluated with FCL's answer scored against
 /// the same truth.

@@ -1,3 +1,11 @@
+// geomcheck — the checks of cast_segment_cylinder (declared for every query in checks.hpp).
+//
+// check_consistency: t in [0,1]; point == S(t) (to the bound); starts_inside
+// iff t == 0 from inside; unit normal.
+// check_symmetry: Segment reversed: same hit/miss outside the band; caps
+// swapped: same answer to the bounds.
+// check_monotone: A wider cylinder or a longer segment never turns a hit into
+// a miss (outside the band).
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -8,6 +16,7 @@
 #include "geomcheck/oracles/cast_segment_cylinder.hpp"
 #include "geomcheck/oracles/cylinder_sphere.hpp"
 #include "geomcheck/properties/checks.hpp"
+#include "geomcheck/properties/teeth.hpp"
 #include "geomcheck/properties/tolerances.hpp"
 #include "geomcheck/shape_traits.hpp"
 #include "moves.hpp"
@@ -52,12 +61,11 @@ double disagreement_margin(const oracle::QSegment& s, const oracle::QCylinder& c
 
 }  // namespace
 
-const CastSegmentCylinderImpl kProductionCastSegmentCylinder = {
-    "production", [](const Segment& s, const Cylinder& c) { return cast(s, c); }};
 template <>
-const ImplOf<QueryId::cast_segment_cylinder>& production_of<QueryId::cast_segment_cylinder>() {
-  return kProductionCastSegmentCylinder;
+const ImplOf<kId>& production_of<kId>() {
+  return production_subject<kId>();
 }
+
 
 Evaluation evaluate(const SegmentCylinderCase& c, const CastSegmentCylinderImpl& impl, const double* peer_t) {
   Evaluation e;
@@ -237,6 +245,13 @@ CheckResult check_monotone(const SegmentCylinderCase& c, const CastSegmentCylind
   return std::nullopt;
 }
 
-
+// The spec of cast_segment_cylinder: segment cast against a cylinder: the first hit from the segment start.
+// Claims (exact verdict, depth, point in both, the normal, the truth), the
+// default campaign's cases and the known-wrong variants (teeth.cpp).
+template <>
+const QuerySpec<kId>& spec_of<kId>() {
+  static const QuerySpec<kId> spec{{true, Claims::Depth::None, true, "the cylinder's outward surface normal at the hit (zero when the segment starts inside)", "closed form (oracles/src/cast_segment_cylinder.cpp): exact hit or miss, certified t"}, 100000, {&teeth::kInfiniteCylinder, &teeth::kEricsonPrinted}};
+  return spec;
+}
 
 }  // namespace geomcheck

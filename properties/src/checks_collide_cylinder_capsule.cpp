@@ -1,12 +1,24 @@
+// geomcheck — the checks of collide_cylinder_capsule (declared for every query in checks.hpp).
+//
+// check_oracle: Agreement with the engine outside the band; the depth claim
+// (shallow contacts: true depth and minimal-translation normal), point in
+// both.
+// check_consistency: overlap == collide.hit; unit normal; depth >= 0 equals
+// the overlap along the normal; no NaN.
+// check_symmetry: (A,B) and (B,A) agree, normal flips; caps swapped, capsule
+// reversed: same verdict (band), same depth.
+// check_monotone: Growing either radius never turns overlap into separation
+// (outside the band).
 #include <cmath>
 #include <sstream>
 
-#include "capsule_truth.hpp"
+#include "truth.hpp"
 #include "common.hpp"
 #include "contact_checks.hpp"
 #include "geomcheck/collide_cylinder_capsule.hpp"
 #include "geomcheck/oracles/cylinder_sphere.hpp"
 #include "geomcheck/properties/checks.hpp"
+#include "geomcheck/properties/teeth.hpp"
 #include "geomcheck/properties/tolerances.hpp"
 #include "moves.hpp"
 
@@ -29,15 +41,11 @@ double scale_of(const CylinderCapsuleCase& c) {
 
 }  // namespace
 
-const CylinderCapsuleImpl kProductionCylinderCapsule = {
-    "production",
-    [](const Cylinder& a, const Capsule& b) { return overlap(a, b); },
-    [](const Cylinder& a, const Capsule& b) { return collide(a, b); },
-};
 template <>
-const ImplOf<QueryId::collide_cylinder_capsule>& production_of<QueryId::collide_cylinder_capsule>() {
-  return kProductionCylinderCapsule;
+const ImplOf<kId>& production_of<kId>() {
+  return production_subject<kId>();
 }
+
 
 Evaluation evaluate(const CylinderCapsuleCase& c, const CylinderCapsuleImpl& impl, const Contact* peer) {
   Evaluation e;
@@ -130,7 +138,7 @@ CheckResult same_answer(const char* what, const CylinderCapsuleCase& c0, const C
 CheckResult check_symmetry(const CylinderCapsuleCase& c, const CylinderCapsuleImpl& impl) {
   const bool ov = impl.overlap(c.a, c.b);
   const Contact ct = impl.collide(c.a, c.b);
-  if (impl.overlap == kProductionCylinderCapsule.overlap) {
+  if (impl.overlap == production_of<kId>().overlap) {
     const Contact sw = collide(c.b, c.a);
     const bool sov = overlap(c.b, c.a);
     if (sov != ov || sw.hit != ct.hit || (ct.hit && !(sw.normal == -ct.normal)))
@@ -192,6 +200,13 @@ CheckResult check_monotone(const CylinderCapsuleCase& c, const CylinderCapsuleIm
   return std::nullopt;
 }
 
-
+// The spec of collide_cylinder_capsule: cylinder/capsule: exact verdict; the true depth while the capsule's segment stays outside the cylinder.
+// Claims (exact verdict, depth, point in both, the normal, the truth), the
+// default campaign's cases and the known-wrong variants (teeth.cpp).
+template <>
+const QuerySpec<kId>& spec_of<kId>() {
+  static const QuerySpec<kId> spec{{true, Claims::Depth::Shallow, true, "unit, from the cylinder towards the capsule", "certified engine (capsule = segment + ball): exact verdict, certified signed distance and penetration depth"}, 10000, {&teeth::kCapsuleCapsule}};
+  return spec;
+}
 
 }  // namespace geomcheck

@@ -1,14 +1,34 @@
+// geomcheck — the checks of collide_cylinder_cylinder (declared for every query in checks.hpp).
+//
+// check_oracle: Agreement with the engine outside the band; the point in both
+// cylinders; the depth never below the certified penetration depth by more
+// than the bound (it is the overlap along the returned normal, an upper bound
+// of the penetration depth, and need not equal it: see the query's header).
+// check_consistency: overlap == collide.hit; unit normal; depth >= 0 equals
+// the overlap along the normal; no NaN.
+// check_symmetry: (A,B) and (B,A): the same verdict (band), the normal flipped
+// and the depth equal to the bounds; caps swapped (either cylinder): same
+// verdict (band), same depth to the bound.
+// check_metamorphic: As for the other queries, but for a reflection of a scene
+// whose two axes lie exactly in one plane: there the normal may be the other
+// of a mirror pair (point bit-identical, depth to the bound); and for any
+// reflection, a tie: another normal with the point and the depth bit-
+// identical, as good as the returned one (the overlap along it, exactly,
+// equals the depth).
+// check_monotone: A wider or longer cylinder (either one) never turns overlap
+// into separation (outside the band).
 #include <algorithm>
 #include <cmath>
 #include <optional>
 #include <utility>
 
-#include "capsule_truth.hpp"
+#include "truth.hpp"
 #include "common.hpp"
 #include "contact_checks.hpp"
 #include "geomcheck/collide_cylinder_cylinder.hpp"
 #include "geomcheck/oracles/cylinder_sphere.hpp"
 #include "geomcheck/properties/checks.hpp"
+#include "geomcheck/properties/teeth.hpp"
 #include "geomcheck/properties/tolerances.hpp"
 #include "moves.hpp"
 
@@ -94,15 +114,11 @@ Score score_contact(const Contact& k, bool truth_hit, Verdict verdict, const ora
 
 }  // namespace
 
-const CylinderCylinderImpl kProductionCylinderCylinder = {
-    "production",
-    [](const Cylinder& a, const Cylinder& b) { return overlap(a, b); },
-    [](const Cylinder& a, const Cylinder& b) { return collide(a, b); },
-};
 template <>
-const ImplOf<QueryId::collide_cylinder_cylinder>& production_of<QueryId::collide_cylinder_cylinder>() {
-  return kProductionCylinderCylinder;
+const ImplOf<kId>& production_of<kId>() {
+  return production_subject<kId>();
 }
+
 
 Evaluation evaluate(const CylinderCylinderCase& c, const CylinderCylinderImpl& impl, const Contact* peer) {
   Evaluation e;
@@ -305,6 +321,13 @@ CheckResult check_monotone(const CylinderCylinderCase& c, const CylinderCylinder
   return std::nullopt;
 }
 
-
+// The spec of collide_cylinder_cylinder: cylinder/cylinder: exact verdict; a consistent contact (depth = overlap along the normal).
+// Claims (exact verdict, depth, point in both, the normal, the truth), the
+// default campaign's cases and the known-wrong variants (teeth.cpp).
+template <>
+const QuerySpec<kId>& spec_of<kId>() {
+  static const QuerySpec<kId> spec{{true, Claims::Depth::UpperBound, true, "unit, from the first cylinder towards the second: a consistent contact, not the minimal translation", "certified engine: exact verdict, certified signed distance, EPA penetration depth as a lower bound of the depth"}, 10000, {&teeth::kCylinderNoPlanes, &teeth::kCylinderNoParallelBranch, &teeth::kCylinderPlainFrame}};
+  return spec;
+}
 
 }  // namespace geomcheck

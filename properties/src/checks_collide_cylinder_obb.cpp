@@ -1,13 +1,25 @@
+// geomcheck — the checks of collide_cylinder_obb (declared for every query in checks.hpp).
+//
+// check_oracle: Agreement with the engine outside the band; the depth claim
+// (see the query's header), point in both. A box whose axes are not
+// orthonormal is outside production's contract: only the robust check applies.
+// check_consistency: overlap == collide.hit; unit normal; depth >= 0 equals
+// the overlap along the normal; no NaN.
+// check_symmetry: (A,B) and (B,A) agree, normal flips; caps swapped, box axes
+// permuted or negated: same verdict (band), same depth to the bound.
+// check_monotone: A wider or longer cylinder or a bigger box never turns
+// overlap into separation (outside the band).
 #include <cmath>
 #include <optional>
 #include <utility>
 
-#include "capsule_truth.hpp"
+#include "truth.hpp"
 #include "common.hpp"
 #include "contact_checks.hpp"
 #include "geomcheck/collide_cylinder_obb.hpp"
 #include "geomcheck/oracles/cylinder_sphere.hpp"
 #include "geomcheck/properties/checks.hpp"
+#include "geomcheck/properties/teeth.hpp"
 #include "geomcheck/properties/tolerances.hpp"
 #include "moves.hpp"
 
@@ -59,15 +71,11 @@ bool obb_in_contract(const Obb& b) {
   return true;
 }
 
-const CylinderObbImpl kProductionCylinderObb = {
-    "production",
-    [](const Cylinder& a, const Obb& b) { return overlap(a, b); },
-    [](const Cylinder& a, const Obb& b) { return collide(a, b); },
-};
 template <>
-const ImplOf<QueryId::collide_cylinder_obb>& production_of<QueryId::collide_cylinder_obb>() {
-  return kProductionCylinderObb;
+const ImplOf<kId>& production_of<kId>() {
+  return production_subject<kId>();
 }
+
 
 Evaluation evaluate(const CylinderObbCase& c, const CylinderObbImpl& impl, const Contact* peer) {
   Evaluation e;
@@ -131,7 +139,7 @@ CheckResult same_answer(const char* what, const CylinderObbCase& c0, const Cylin
 CheckResult check_symmetry(const CylinderObbCase& c, const CylinderObbImpl& impl) {
   const bool ov = impl.overlap(c.a, c.b);
   const Contact ct = impl.collide(c.a, c.b);
-  if (impl.overlap == kProductionCylinderObb.overlap) {
+  if (impl.overlap == production_of<kId>().overlap) {
     const Contact sw = collide(c.b, c.a);
     const bool sov = overlap(c.b, c.a);
     if (sov != ov || sw.hit != ct.hit || (ct.hit && !(sw.normal == -ct.normal)))
@@ -191,6 +199,13 @@ CheckResult check_monotone(const CylinderObbCase& c, const CylinderObbImpl& impl
   return std::nullopt;
 }
 
-
+// The spec of collide_cylinder_obb: cylinder/oriented box: exact verdict; the penetration depth over the Minkowski patches.
+// Claims (exact verdict, depth, point in both, the normal, the truth), the
+// default campaign's cases and the known-wrong variants (teeth.cpp).
+template <>
+const QuerySpec<kId>& spec_of<kId>() {
+  static const QuerySpec<kId> spec{{true, Claims::Depth::Penetration, true, "unit, from the cylinder towards the box: the minimal translation", "certified engine: exact verdict, certified signed distance, EPA penetration depth enclosure"}, 10000, {&teeth::kBoxAsCapsule, &teeth::kBoxTalkRays}};
+  return spec;
+}
 
 }  // namespace geomcheck

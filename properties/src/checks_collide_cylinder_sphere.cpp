@@ -1,3 +1,15 @@
+// geomcheck — the checks of collide_cylinder_sphere (declared for every query in checks.hpp).
+//
+// check_oracle: Agreement with the exact oracle outside the band; depth,
+// normal, point within bounds.
+// check_consistency: overlap == collide.hit; unit normal; depth >= 0 equals
+// the overlap along the normal; no NaN.
+// check_symmetry: (A,B) and (B,A) agree, normal flips; caps swapped gives the
+// same answer (to the band).
+// check_metamorphic: Sign flips and power-of-two scales bit-identical; axis
+// permutations and rigid motions agree outside the band.
+// check_monotone: Growing the sphere or the cylinder radius never turns
+// overlap into separation.
 #include <cmath>
 #include <cstdio>
 #include <sstream>
@@ -5,6 +17,7 @@
 #include "geomcheck/collide_cylinder_sphere.hpp"
 #include "geomcheck/oracles/cylinder_sphere.hpp"
 #include "geomcheck/properties/checks.hpp"
+#include "geomcheck/properties/teeth.hpp"
 #include "geomcheck/properties/tolerances.hpp"
 #include "geomcheck/shape_traits.hpp"
 #include "common.hpp"
@@ -21,15 +34,11 @@ bool sphere_valid_case(const CylinderSphereCase& c) { return is_valid(c.a) && is
 
 }  // namespace
 
-const CylinderSphereImpl kProductionCylinderSphere = {
-    "production",
-    [](const Cylinder& a, const Sphere& b) { return overlap(a, b); },
-    [](const Cylinder& a, const Sphere& b) { return collide(a, b); },
-};
 template <>
-const ImplOf<QueryId::collide_cylinder_sphere>& production_of<QueryId::collide_cylinder_sphere>() {
-  return kProductionCylinderSphere;
+const ImplOf<kId>& production_of<kId>() {
+  return production_subject<kId>();
 }
+
 
 Evaluation evaluate(const CylinderSphereCase& c, const CylinderSphereImpl& impl, const Contact* peer) {
   Evaluation e;
@@ -115,7 +124,7 @@ CheckResult check_symmetry(const CylinderSphereCase& c, const CylinderSphereImpl
   // Argument order: (Sphere, Cylinder) is production's wrapper, so this
   // property holds production's two entry points to each other; a variant
   // under test has no swapped entry point and is not checked here.
-  if (impl.overlap == kProductionCylinderSphere.overlap) {
+  if (impl.overlap == production_of<kId>().overlap) {
     const Contact sw = collide(c.b, c.a);
     const bool sov = overlap(c.b, c.a);
     if (sov != ov || sw.hit != ct.hit || (ct.hit && !(sw.normal == -ct.normal)))
@@ -186,6 +195,13 @@ CheckResult check_monotone(const CylinderSphereCase& c, const CylinderSphereImpl
   return std::nullopt;
 }
 
-
+// The spec of collide_cylinder_sphere: cylinder/sphere: overlap and collide with the true penetration depth.
+// Claims (exact verdict, depth, point in both, the normal, the truth), the
+// default campaign's cases and the known-wrong variants (teeth.cpp).
+template <>
+const QuerySpec<kId>& spec_of<kId>() {
+  static const QuerySpec<kId> spec{{true, Claims::Depth::Penetration, true, "unit, from the cylinder towards the sphere: the minimal translation", "closed form (oracles/src/cylinder_sphere.cpp): exact verdict, certified signed distance"}, 100000, {&teeth::kCapsuleForCylinder}};
+  return spec;
+}
 
 }  // namespace geomcheck

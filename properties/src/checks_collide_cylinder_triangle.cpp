@@ -1,14 +1,30 @@
+// geomcheck — the checks of collide_cylinder_triangle (declared for every query in checks.hpp).
+//
+// check_oracle: Agreement with the engine outside the band; the depth claim
+// (see the query's header), point in both. Every finite triangle is in the
+// contract (a degenerate one is its longest edge or its point).
+// check_consistency: overlap == collide.hit; unit normal; depth >= 0 equals
+// the overlap along the normal; no NaN.
+// check_symmetry: (A,B) and (B,A) agree, normal flips; caps swapped, triangle
+// vertices rotated or reversed: same verdict (band), same depth to the bound.
+// check_metamorphic: As for the other queries, but for a reflection of a scene
+// whose cylinder axis lies exactly in the triangle's plane: there the normal
+// is free (mirror pairs), the verdict and point bit-identical, the depth to
+// the bound.
+// check_monotone: A wider or longer cylinder or a bigger triangle never turns
+// overlap into separation (outside the band).
 #include <algorithm>
 #include <cmath>
 #include <optional>
 #include <utility>
 
-#include "capsule_truth.hpp"
+#include "truth.hpp"
 #include "common.hpp"
 #include "contact_checks.hpp"
 #include "geomcheck/collide_cylinder_triangle.hpp"
 #include "geomcheck/oracles/cylinder_sphere.hpp"
 #include "geomcheck/properties/checks.hpp"
+#include "geomcheck/properties/teeth.hpp"
 #include "geomcheck/properties/tolerances.hpp"
 #include "moves.hpp"
 
@@ -90,15 +106,11 @@ bool scene_coplanar(const CylinderTriangleCase& c) {
 
 }  // namespace
 
-const CylinderTriangleImpl kProductionCylinderTriangle = {
-    "production",
-    [](const Cylinder& a, const Triangle& b) { return overlap(a, b); },
-    [](const Cylinder& a, const Triangle& b) { return collide(a, b); },
-};
 template <>
-const ImplOf<QueryId::collide_cylinder_triangle>& production_of<QueryId::collide_cylinder_triangle>() {
-  return kProductionCylinderTriangle;
+const ImplOf<kId>& production_of<kId>() {
+  return production_subject<kId>();
 }
+
 
 Evaluation evaluate(const CylinderTriangleCase& c, const CylinderTriangleImpl& impl, const Contact* peer) {
   Evaluation e;
@@ -157,7 +169,7 @@ CheckResult same_answer(const char* what, const CylinderTriangleCase& c0, const 
 CheckResult check_symmetry(const CylinderTriangleCase& c, const CylinderTriangleImpl& impl) {
   const bool ov = impl.overlap(c.a, c.b);
   const Contact ct = impl.collide(c.a, c.b);
-  if (impl.overlap == kProductionCylinderTriangle.overlap) {
+  if (impl.overlap == production_of<kId>().overlap) {
     const Contact sw = collide(c.b, c.a);
     const bool sov = overlap(c.b, c.a);
     if (sov != ov || sw.hit != ct.hit || (ct.hit && !(sw.normal == -ct.normal)))
@@ -241,6 +253,13 @@ CheckResult check_monotone(const CylinderTriangleCase& c, const CylinderTriangle
   return std::nullopt;
 }
 
-
+// The spec of collide_cylinder_triangle: cylinder/triangle: exact verdict; the penetration depth over the Minkowski patches.
+// Claims (exact verdict, depth, point in both, the normal, the truth), the
+// default campaign's cases and the known-wrong variants (teeth.cpp).
+template <>
+const QuerySpec<kId>& spec_of<kId>() {
+  static const QuerySpec<kId> spec{{true, Claims::Depth::Penetration, true, "unit, from the cylinder towards the triangle: the minimal translation", "certified engine: exact verdict, certified signed distance, EPA penetration depth enclosure"}, 10000, {&teeth::kTriangleNoCapStage}};
+  return spec;
+}
 
 }  // namespace geomcheck

@@ -1,15 +1,29 @@
+// geomcheck — the checks of sweep_sphere_cylinder (declared for every query in checks.hpp).
+//
+// check_oracle: Hit/miss agrees with the engine (the swept capsule against the
+// cylinder) outside the band; t: the ball at t touches (to the bound) and the
+// sweep up to t stays out (bracketing, certified by the engine); point on the
+// cylinder at the ball; normal in the normal cone there.
+// check_consistency: t in [0,1]; starts_inside iff the ball meets the cylinder
+// at t = 0 (overlap(Cylinder, Sphere)); the ball at t meets the cylinder and
+// just before t does not (collide(Cylinder, Sphere)); the swept capsule up to
+// 1 agrees with overlap(Cylinder, Capsule) outside the band.
+// check_symmetry: Caps swapped: same answer to the bounds.
+// check_monotone: A bigger ball, a wider cylinder or a longer sweep never
+// turns a hit into a miss (outside the band).
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <sstream>
 
-#include "capsule_truth.hpp"
+#include "truth.hpp"
 #include "common.hpp"
 #include "geomcheck/collide_cylinder_capsule.hpp"
 #include "geomcheck/collide_cylinder_sphere.hpp"
 #include "geomcheck/oracles/cast_segment_cylinder.hpp"
 #include "geomcheck/oracles/cylinder_sphere.hpp"
 #include "geomcheck/properties/checks.hpp"
+#include "geomcheck/properties/teeth.hpp"
 #include "geomcheck/properties/tolerances.hpp"
 #include "geomcheck/sweep_sphere_cylinder.hpp"
 #include "moves.hpp"
@@ -53,12 +67,11 @@ bool path_meets(const SweepCylinderCase& c, double t, const Q& dr) {
 
 }  // namespace
 
-const SweepSphereCylinderImpl kProductionSweepSphereCylinder = {
-    "production", [](const MovingSphere& s, const Cylinder& c) { return sweep(s, c); }};
 template <>
-const ImplOf<QueryId::sweep_sphere_cylinder>& production_of<QueryId::sweep_sphere_cylinder>() {
-  return kProductionSweepSphereCylinder;
+const ImplOf<kId>& production_of<kId>() {
+  return production_subject<kId>();
 }
+
 
 Evaluation evaluate(const SweepCylinderCase& c, const SweepSphereCylinderImpl& impl, const double* peer_t) {
   Evaluation e;
@@ -259,6 +272,13 @@ CheckResult check_monotone(const SweepCylinderCase& c, const SweepSphereCylinder
   return std::nullopt;
 }
 
-
+// The spec of sweep_sphere_cylinder: a moving sphere swept against a cylinder: the first time of contact.
+// Claims (exact verdict, depth, point in both, the normal, the truth), the
+// default campaign's cases and the known-wrong variants (teeth.cpp).
+template <>
+const QuerySpec<kId>& spec_of<kId>() {
+  static const QuerySpec<kId> spec{{true, Claims::Depth::None, true, "the cylinder's outward surface normal at the contact (zero when the ball starts inside)", "certified engine: the swept ball (a capsule) against the cylinder; t bracketed"}, 10000, {&teeth::kSweepNoCornerStage, &teeth::kSweepTalkRimPoint}};
+  return spec;
+}
 
 }  // namespace geomcheck

@@ -8,7 +8,7 @@
 #include <optional>
 #include <string>
 
-#include "capsule_truth.hpp"
+#include "truth.hpp"
 #include "common.hpp"
 #include "geomcheck/properties/checks.hpp"
 #include "geomcheck/properties/tolerances.hpp"

@@ -82,7 +82,7 @@ bool same(const Contact& a, const Contact& b) {
 // hierarchies.
 rc::Gen<MeshCase> mesh_case(bool grid) {
   return rc::gen::exec([grid] {
-    const auto drawn = *gen::cylinder_triangle_case();
+    const auto drawn = *gen::targeted<QueryId::collide_cylinder_triangle>();
     const Cylinder cyl = drawn.first.a;
     const Triangle t = drawn.first.b;
     std::vector<Vec3> v{t.a, t.b, t.c};

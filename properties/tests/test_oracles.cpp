@@ -103,7 +103,7 @@ TEST(oracle_cast, hand_cases) {
 TEST(oracle_cross, point_oracle_agrees_with_zero_length_cast) {
   // A zero-length segment hits iff its point is in the cylinder: the two
   // oracles reach that by different algebra.
-  const auto gen = gen::cylinder_sphere_case();
+  const auto gen = gen::targeted<QueryId::collide_cylinder_sphere>();
   rc::Random random(7);
   int inside = 0;
   for (int i = 0; i < 3000; ++i) {
@@ -123,7 +123,7 @@ TEST(oracle_cross, point_oracle_agrees_with_zero_length_cast) {
 TEST(oracle_cross, cast_t_brackets_the_surface) {
   // At the certified t the segment point is on the surface: the signed
   // distance of S(t_lo) is >= 0 and of S(t_hi) <= 0 (for entries from outside).
-  const auto gen = gen::segment_cylinder_case();
+  const auto gen = gen::targeted<QueryId::cast_segment_cylinder>();
   rc::Random random(11);
   int checked = 0;
   for (int i = 0; i < 2000; ++i) {

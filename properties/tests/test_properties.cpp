@@ -12,7 +12,7 @@ template <QueryId Q>
 void run(const std::string& what, const std::function<CheckResult(const typename Spec<Q>::Case&)>& check,
          const rc::Gen<std::pair<typename Spec<Q>::Case, std::string>>& gen = Spec<Q>::targeted()) {
   const std::string name = std::string(info(Q).name) + "." + what;
-  const PropertyRun r = run_property<Q>(name, gen, check, [](const auto& c) { return SpecOf<Q>::hit(c); });
+  const PropertyRun r = run_property<Q>(name, gen, check, [](const auto& c) { return Spec<Q>::hit(c); });
   expect_passed(r, name);
 }
 
@@ -32,7 +32,7 @@ void all_moves(const std::string& what) {
   TEST(Q, metamorphic) { all_moves<QueryId::Q>("metamorphic"); }                                                    \
   TEST(Q, monotone) { run<QueryId::Q>("monotone", [](const auto& c) { return check_monotone(c); }); }               \
   TEST(Q, robust) {                                                                                                \
-    run<QueryId::Q>("robust", [](const auto& c) { return check_robust(c); }, SpecOf<QueryId::Q>::robust());            \
+    run<QueryId::Q>("robust", [](const auto& c) { return check_robust(c); }, Spec<QueryId::Q>::robust());            \
   }
 
 #define GEOMCHECK_X(id, kind, A, B, summary) GEOMCHECK_PROPERTY_TESTS(id)

@@ -21,7 +21,7 @@ void expect_caught(const typename Spec<Q>::Impl& wrong) {
   const std::string name = std::string(info(Q).name) + ".teeth." + wrong.name;
   const PropertyRun r = run_property<Q>(
       name, Spec<Q>::targeted(), [&](const auto& c) { return check_all(c, wrong); },
-      [&](const auto& c) { return SpecOf<Q>::hit(c, wrong); });
+      [&](const auto& c) { return Spec<Q>::hit(c, wrong); });
   ASSERT_FALSE(r.passed) << "the suite did not catch the known-wrong variant '" << wrong.name << "' in "
                          << r.cases << " cases";
   ASSERT_FALSE(r.case_file.empty()) << "no shrunk counterexample was saved";

@@ -4,17 +4,12 @@
 #include <cmath>
 #include <cstdio>
 #include <sstream>
+#include <type_traits>
 #include <vector>
 
-#include "geomcheck/cast_segment_cylinder.hpp"
-#include "geomcheck/collide_cylinder_capsule.hpp"
-#include "geomcheck/collide_cylinder_obb.hpp"
-#include "geomcheck/collide_cylinder_sphere.hpp"
-#include "geomcheck/collide_cylinder_cylinder.hpp"
-#include "geomcheck/collide_cylinder_triangle.hpp"
-#include "geomcheck/sweep_sphere_cylinder.hpp"
 #include "geomcheck/oracles/cast_segment_cylinder.hpp"
 #include "geomcheck/oracles/engine.hpp"
+#include "geomcheck/properties/checks.hpp"
 
 namespace geomcheck::draw {
 
@@ -264,16 +259,6 @@ Answer answer_of(const Contact& k, const std::string& who) {
 Answer answer_of(const CastHit& h, const std::string& who) {
   return {h.hit, h.point, h.normal, h.hit ? who + ": hit at t = " + fmt(h.t) + " (point and normal)" : who + ": miss"};
 }
-Answer from_contact(const Contact& k) { return answer_of(k, "production"); }
-Answer from_cast(const CastHit& h) { return answer_of(h, "production"); }
-
-Answer production_answer(const Cylinder& a, const Sphere& b) { return from_contact(collide(a, b)); }
-Answer production_answer(const Segment& a, const Cylinder& b) { return from_cast(cast(a, b)); }
-Answer production_answer(const Cylinder& a, const Capsule& b) { return from_contact(collide(a, b)); }
-Answer production_answer(const MovingSphere& a, const Cylinder& b) { return from_cast(sweep(a, b)); }
-Answer production_answer(const Cylinder& a, const Obb& b) { return from_contact(collide(a, b)); }
-Answer production_answer(const Cylinder& a, const Triangle& b) { return from_contact(collide(a, b)); }
-Answer production_answer(const Cylinder& a, const Cylinder& b) { return from_contact(collide(a, b)); }
 
 namespace {
 
@@ -340,21 +325,19 @@ std::vector<Mark> engine_witness(const oracle::ConvexShape& a, const oracle::Con
   }
 }
 
-template <class B>
-std::vector<Mark> collide_witness(const Cylinder& a, const B& b, const Vec3* hint) {
+template <class A, class B>
+std::vector<Mark> collide_witness(const A& a, const B& b, const Vec3* hint) {
   if (!is_valid(a) || !is_valid(b)) return {{Mark::Kind::PointNormal, kNowhere, Vec3{}, 0, kOracleColour, "oracle: invalid input"}};
-  return engine_witness(oracle::make_shape(a), oracle::make_shape(b), &a, hint);
+  const Cylinder* cyl = nullptr;
+  if constexpr (std::is_same_v<A, Cylinder>) cyl = &a;
+  return engine_witness(oracle::make_shape(a), oracle::make_shape(b), cyl, hint);
 }
 
 }  // namespace
 
-std::vector<Mark> oracle_witness(const Cylinder& a, const Sphere& b, const Vec3* hint) { return collide_witness(a, b, hint); }
-std::vector<Mark> oracle_witness(const Cylinder& a, const Capsule& b, const Vec3* hint) { return collide_witness(a, b, hint); }
-std::vector<Mark> oracle_witness(const Cylinder& a, const Obb& b, const Vec3* hint) { return collide_witness(a, b, hint); }
-std::vector<Mark> oracle_witness(const Cylinder& a, const Triangle& b, const Vec3* hint) { return collide_witness(a, b, hint); }
-std::vector<Mark> oracle_witness(const Cylinder& a, const Cylinder& b, const Vec3* hint) { return collide_witness(a, b, hint); }
+namespace {
 
-std::vector<Mark> oracle_witness(const Segment& s, const Cylinder& c, const Vec3*) {
+std::vector<Mark> cast_witness(const Segment& s, const Cylinder& c) {
   if (!is_valid(s) || !is_valid(c)) return {{Mark::Kind::PointNormal, kNowhere, Vec3{}, 0, kOracleColour, "oracle: invalid input"}};
   const oracle::CastTruth t = oracle::solve_cast(s, c);
   if (!t.hit) return {{Mark::Kind::PointNormal, kNowhere, Vec3{}, 0, kOracleColour, "oracle: miss"}};
@@ -363,7 +346,7 @@ std::vector<Mark> oracle_witness(const Segment& s, const Cylinder& c, const Vec3
            std::string("oracle: first touch S(t), t = ") + fmt(tm) + " (" + oracle::to_string(t.feature) + ")"}};
 }
 
-std::vector<Mark> oracle_witness(const MovingSphere& m, const Cylinder& c, const Vec3*) {
+std::vector<Mark> sweep_witness(const MovingSphere& m, const Cylinder& c) {
   if (!is_valid(m) || !is_valid(c)) return {{Mark::Kind::PointNormal, kNowhere, Vec3{}, 0, kOracleColour, "oracle: invalid input"}};
   const oracle::ImpactResult r =
       oracle::time_of_impact(oracle::make_shape(Sphere{m.c, m.r}), oracle::to_q(m.delta), oracle::make_shape(c));
@@ -381,23 +364,41 @@ std::vector<Mark> oracle_witness(const MovingSphere& m, const Cylinder& c, const
   }
 }
 
+}  // namespace
+
+template <QueryId Q>
+Answer production_answer(const typename QueryTraits<Q>::Case& c) {
+  const auto& impl = production_of<Q>();
+  if constexpr (QueryTraits<Q>::kind == QueryKind::Collide) return answer_of(impl.collide(c.a, c.b), "production");
+  else if constexpr (QueryTraits<Q>::kind == QueryKind::Cast) return answer_of(impl.cast(c.a, c.b), "production");
+  else return answer_of(impl.sweep(c.a, c.b), "production");
+}
+
+template <QueryId Q>
+std::vector<Mark> oracle_witness(const typename QueryTraits<Q>::Case& c, const Vec3* hint) {
+  if constexpr (QueryTraits<Q>::kind == QueryKind::Collide) return collide_witness(c.a, c.b, hint);
+  else if constexpr (QueryTraits<Q>::kind == QueryKind::Cast) return cast_witness(c.a, c.b);
+  else return sweep_witness(c.a, c.b);
+}
+
 template <class A, class B>
 std::string views(const A& a, const B& b, const std::string& title, const std::vector<Mark>& extra,
                   const Answer* answer) {
+  constexpr QueryId Q = query_of_case<PairCase<A, B>>;
+  const PairCase<A, B> c{a, b};
   const Figure shapes[2] = {figure(a), figure(b)};
-  const Answer ans = answer ? *answer : production_answer(a, b);
+  const Answer ans = answer ? *answer : production_answer<Q>(c);
   std::vector<Mark> marks{{Mark::Kind::PointNormal, ans.hit ? ans.point : kNowhere, ans.normal, 0, "#d00", ans.label}};
-  for (const Mark& m : oracle_witness(a, b, ans.hit ? &ans.point : nullptr)) marks.push_back(m);
+  for (const Mark& m : oracle_witness<Q>(c, ans.hit ? &ans.point : nullptr)) marks.push_back(m);
   marks.insert(marks.end(), extra.begin(), extra.end());
   return render(shapes, marks, title);
 }
 
-template std::string views(const Cylinder&, const Sphere&, const std::string&, const std::vector<Mark>&, const Answer*);
-template std::string views(const Segment&, const Cylinder&, const std::string&, const std::vector<Mark>&, const Answer*);
-template std::string views(const Cylinder&, const Capsule&, const std::string&, const std::vector<Mark>&, const Answer*);
-template std::string views(const MovingSphere&, const Cylinder&, const std::string&, const std::vector<Mark>&, const Answer*);
-template std::string views(const Cylinder&, const Obb&, const std::string&, const std::vector<Mark>&, const Answer*);
-template std::string views(const Cylinder&, const Triangle&, const std::string&, const std::vector<Mark>&, const Answer*);
-template std::string views(const Cylinder&, const Cylinder&, const std::string&, const std::vector<Mark>&, const Answer*);
+#define GEOMCHECK_X(id, kind, A, B, summary)                                                                       \
+  template Answer production_answer<QueryId::id>(const PairCase<A, B>&);                                        \
+  template std::vector<Mark> oracle_witness<QueryId::id>(const PairCase<A, B>&, const Vec3*);                   \
+  template std::string views(const A&, const B&, const std::string&, const std::vector<Mark>&, const Answer*);
+GEOMCHECK_QUERY_LIST(GEOMCHECK_X)
+#undef GEOMCHECK_X
 
 }  // namespace geomcheck::draw

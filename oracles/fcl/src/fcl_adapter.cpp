@@ -43,6 +43,49 @@ constexpr double kCcdEps = 2.220446049250313e-16;
 std::string describe(const std::exception& e) { return std::string("FCL threw: ") + e.what(); }
 const char* kUnknownThrow = "FCL threw a non-standard exception";
 
+/// Runs f() and returns its answer; an exception (FCL's, Eigen's, a
+/// conversion's) becomes an answer R that is not ok, saying why.
+template <class R, class F>
+R guarded(F&& f) {
+  try {
+    return f();
+  } catch (const std::exception& e) {
+    R out;
+    out.error = describe(e);
+    return out;
+  } catch (...) {
+    R out;
+    out.error = kUnknownThrow;
+    return out;
+  }
+}
+/// guarded(f), an exception's reason kept in `out` (its other fields as they were).
+template <class R, class F>
+R guarded_into(R out, F&& f) {
+  try {
+    return f();
+  } catch (const std::exception& e) {
+    out.ok = false;
+    out.error = describe(e);
+  } catch (...) {
+    out.ok = false;
+    out.error = kUnknownThrow;
+  }
+  return out;
+}
+/// A yes/no answer of FCL's: false on an exception, its reason in *error.
+template <class F>
+bool guarded_bool(std::string* error, F&& f) {
+  try {
+    return f();
+  } catch (const std::exception& e) {
+    if (error) *error = describe(e);
+  } catch (...) {
+    if (error) *error = kUnknownThrow;
+  }
+  return false;
+}
+
 /// FCL's contact (a hit), checked for garbage. `zero_normal_touch`: accept
 /// libccd MPR's touching contact (see below).
 PeerContact contact_from(const fcl::Vector3d& pos, const fcl::Vector3d& normal, double depth,
@@ -397,15 +440,10 @@ PeerCast continuous_collide(const Moving& moving, const Cylinder& c, FclCastMeth
     out.error = kInvalidInput;
     return out;
   }
-  try {
+  return guarded_into(out, [&]() -> PeerCast {
     return cast_conservative_advancement(motion_of(moving), c,
                                          method != FclCastMethod::kConservativeAdvancementOnce);
-  } catch (const std::exception& e) {
-    out.error = describe(e);
-  } catch (...) {
-    out.error = kUnknownThrow;
-  }
-  return out;
+  });
 }
 
 }  // namespace
@@ -466,21 +504,13 @@ bool overlap_on(const Pair& pair) {
 /// MPR).
 template <class Pair>
 PeerContact collide_on(const Pair& pair, bool zero_normal_touch = false) {
-  try {
+  return guarded<PeerContact>([&]() -> PeerContact {
     fcl::CollisionRequestd req(1, true);
     req.gjk_solver_type = fcl::GST_LIBCCD;
     fcl::CollisionResultd res;
     fcl::collide(&pair.a.shape, pair.a.pose, &pair.b.shape, pair.b.pose, req, res);
     return contact_from(res, zero_normal_touch);
-  } catch (const std::exception& e) {
-    PeerContact out;
-    out.error = describe(e);
-    return out;
-  } catch (...) {
-    PeerContact out;
-    out.error = kUnknownThrow;
-    return out;
-  }
+  });
 }
 
 /// FCL's distance and nearest points, checked for garbage.
@@ -499,21 +529,13 @@ PeerDistance distance_from(double dist, const fcl::Vector3d& p1, const fcl::Vect
 
 template <class Pair>
 PeerDistance distance_on(const Pair& pair) {
-  PeerDistance out;
-  try {
+  return guarded<PeerDistance>([&]() -> PeerDistance {
     fcl::DistanceRequestd req(true);
     req.gjk_solver_type = fcl::GST_LIBCCD;
     fcl::DistanceResultd res;
     fcl::distance(&pair.a.shape, pair.a.pose, &pair.b.shape, pair.b.pose, req, res);
-    out = distance_from(res.min_distance, res.nearest_points[0], res.nearest_points[1]);
-  } catch (const std::exception& e) {
-    out.ok = false;
-    out.error = describe(e);
-  } catch (...) {
-    out.ok = false;
-    out.error = kUnknownThrow;
-  }
-  return out;
+    return distance_from(res.min_distance, res.nearest_points[0], res.nearest_points[1]);
+  });
 }
 
 /// The solver of FCL's per-triangle narrow phase as fcl::collide and
@@ -554,7 +576,7 @@ FclMesh::FclMesh(const TriangleMesh& m) {
 }
 
 PeerContact fcl_collide_prepared(const FclCylinder& cyl, const FclMesh& mesh, int max_contacts, int* contacts) {
-  try {
+  return guarded<PeerContact>([&]() -> PeerContact {
     fcl::CollisionRequestd req(static_cast<std::size_t>(std::max(max_contacts, 1)), true);
     req.gjk_solver_type = fcl::GST_LIBCCD;
     fcl::CollisionResultd res;
@@ -570,15 +592,7 @@ PeerContact fcl_collide_prepared(const FclCylinder& cyl, const FclMesh& mesh, in
       if (res.getContact(i).penetration_depth > res.getContact(deepest).penetration_depth) deepest = i;
     const fcl::Contactd& c = res.getContact(deepest);
     return contact_from(c.pos, -c.normal, c.penetration_depth, true);
-  } catch (const std::exception& e) {
-    PeerContact out;
-    out.error = describe(e);
-    return out;
-  } catch (...) {
-    PeerContact out;
-    out.error = kUnknownThrow;
-    return out;
-  }
+  });
 }
 
 bool fcl_overlap_prepared(const FclCylinderTriangle& pair) {
@@ -586,7 +600,7 @@ bool fcl_overlap_prepared(const FclCylinderTriangle& pair) {
 }
 
 PeerContact fcl_collide_prepared(const FclCylinderTriangle& pair) {
-  try {
+  return guarded<PeerContact>([&]() -> PeerContact {
     fcl::Vector3d point = fcl::Vector3d::Zero(), normal = fcl::Vector3d::Zero();
     double depth = 0;
     if (!triangle_solver().shapeTriangleIntersect(pair.a.shape, pair.a.pose, pair.b.a, pair.b.b, pair.b.c, &point,
@@ -596,32 +610,16 @@ PeerContact fcl_collide_prepared(const FclCylinderTriangle& pair) {
       return out;
     }
     return contact_from(point, normal, depth, true);
-  } catch (const std::exception& e) {
-    PeerContact out;
-    out.error = describe(e);
-    return out;
-  } catch (...) {
-    PeerContact out;
-    out.error = kUnknownThrow;
-    return out;
-  }
+  });
 }
 
 PeerDistance fcl_distance_prepared(const FclCylinderTriangle& pair) {
-  try {
+  return guarded<PeerDistance>([&]() -> PeerDistance {
     double dist = 0;
     fcl::Vector3d p1 = fcl::Vector3d::Zero(), p2 = fcl::Vector3d::Zero();
     triangle_solver().shapeTriangleDistance(pair.a.shape, pair.a.pose, pair.b.a, pair.b.b, pair.b.c, &dist, &p1, &p2);
     return distance_from(dist, p1, p2);
-  } catch (const std::exception& e) {
-    PeerDistance out;
-    out.error = describe(e);
-    return out;
-  } catch (...) {
-    PeerDistance out;
-    out.error = kUnknownThrow;
-    return out;
-  }
+  });
 }
 
 PeerContact fcl_collide(const Cylinder& a, const Sphere& b) {
@@ -630,17 +628,9 @@ PeerContact fcl_collide(const Cylinder& a, const Sphere& b) {
     out.error = kInvalidInput;
     return out;
   }
-  try {
+  return guarded<PeerContact>([&]() -> PeerContact {
     return fcl_collide_prepared(FclCylinderSphere(a, b));
-  } catch (const std::exception& e) {
-    PeerContact out;
-    out.error = describe(e);
-    return out;
-  } catch (...) {
-    PeerContact out;
-    out.error = kUnknownThrow;
-    return out;
-  }
+  });
 }
 
 bool fcl_overlap(const Cylinder& a, const Sphere& b, std::string* error) {
@@ -649,14 +639,9 @@ bool fcl_overlap(const Cylinder& a, const Sphere& b, std::string* error) {
     if (error) *error = kInvalidInput;
     return false;
   }
-  try {
+  return guarded_bool(error, [&]() -> bool {
     return fcl_overlap_prepared(FclCylinderSphere(a, b));
-  } catch (const std::exception& e) {
-    if (error) *error = describe(e);
-  } catch (...) {
-    if (error) *error = kUnknownThrow;
-  }
-  return false;
+  });
 }
 
 PeerDistance fcl_distance(const Cylinder& a, const Sphere& b) {
@@ -665,17 +650,9 @@ PeerDistance fcl_distance(const Cylinder& a, const Sphere& b) {
     out.error = kInvalidInput;
     return out;
   }
-  try {
+  return guarded<PeerDistance>([&]() -> PeerDistance {
     return distance_on(FclCylinderSphere(a, b));
-  } catch (const std::exception& e) {  // the conversion
-    PeerDistance out;
-    out.error = describe(e);
-    return out;
-  } catch (...) {
-    PeerDistance out;
-    out.error = kUnknownThrow;
-    return out;
-  }
+  });
 }
 
 PeerCast fcl_cast(const Segment& s, const Cylinder& c, FclCastMethod method) {
@@ -720,7 +697,7 @@ PeerContact guarded_collide(const Cylinder& a, const B& b) {
     out.error = why;
     return out;
   }
-  try {
+  return guarded_into(out, [&]() -> PeerContact {
     const typename PairOf<B>::type pair(a, b);
     const MprAnswer r = guarded_mpr(libccd(pair.a), libccd(pair.b), true);
     if (r.error) {
@@ -732,12 +709,7 @@ PeerContact guarded_collide(const Cylinder& a, const B& b) {
       return out;
     }
     return contact_from(r.point, r.normal, r.depth, true);
-  } catch (const std::exception& e) {
-    out.error = describe(e);
-  } catch (...) {
-    out.error = kUnknownThrow;
-  }
-  return out;
+  });
 }
 
 template <class B>
@@ -747,17 +719,13 @@ bool guarded_overlap(const Cylinder& a, const B& b, std::string* error) {
     if (error) *error = why;
     return false;
   }
-  try {
+  return guarded_bool(error, [&]() -> bool {
     const typename PairOf<B>::type pair(a, b);
     const MprAnswer r = guarded_mpr(libccd(pair.a), libccd(pair.b), false);
     if (!r.error) return r.hit;
     if (error) *error = r.error;
-  } catch (const std::exception& e) {
-    if (error) *error = describe(e);
-  } catch (...) {
-    if (error) *error = kUnknownThrow;
-  }
-  return false;
+    return false;
+  });
 }
 
 template <class B>
@@ -771,15 +739,10 @@ PeerDistance guarded_distance(const Cylinder& a, const B& b) {
     out.error = "outside FCL's range";
     return out;
   }
-  try {
+  return guarded_into(out, [&]() -> PeerDistance {
     const typename PairOf<B>::type pair(a, b);
     return guarded_gjk_distance(libccd(pair.a), libccd(pair.b));
-  } catch (const std::exception& e) {
-    out.error = describe(e);
-  } catch (...) {
-    out.error = kUnknownThrow;
-  }
-  return out;
+  });
 }
 
 }  // namespace

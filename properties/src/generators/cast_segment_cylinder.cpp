@@ -1,11 +1,17 @@
 // geomcheck — generators of cast_segment_cylinder: targeted modes and wild doubles.
+//
+// targeted:
+// Segment/cylinder casts: random, parallel to the axis into a cap, grazing
+// the side, tangent to the rim, aimed at the rim +- a gap, starting
+// inside, zero length, through both caps, exact Pythagorean touches.
 #include "common.hpp"
 
 namespace geomcheck::gen {
 
 using namespace detail;
 
-rc::Gen<std::pair<SegmentCylinderCase, std::string>> segment_cylinder_case() {
+template <>
+rc::Gen<Tagged<QueryTraits<QueryId::cast_segment_cylinder>::Case>> targeted<QueryId::cast_segment_cylinder>() {
   return rc::gen::resize(100, rc::gen::exec([]() -> std::pair<SegmentCylinderCase, std::string> {
     const int mode = pick_int(0, 8);
     if (mode == 8) {  // exact: tangent lines, rim touches, endpoint on the surface
@@ -119,7 +125,8 @@ rc::Gen<std::pair<SegmentCylinderCase, std::string>> segment_cylinder_case() {
   }));
 }
 
-rc::Gen<SegmentCylinderCase> wild_segment_cylinder() {
+template <>
+rc::Gen<QueryTraits<QueryId::cast_segment_cylinder>::Case> wild<QueryId::cast_segment_cylinder>() {
   return rc::gen::exec([]() -> SegmentCylinderCase {
     return {{wild_vec(), wild_vec()}, {wild_vec(), wild_vec(), *wild_double()}};
   });

@@ -1,4 +1,12 @@
 // geomcheck — generators of collide_cylinder_capsule: targeted modes and wild doubles.
+//
+// targeted:
+// Cylinder/capsule pairs: random, parallel, anti-parallel and coaxial to
+// the axis (exactly and 1e-8 / 1e-16 from parallel), perpendicular to it,
+// an end sphere at the rim, cap or side, grazing the rim, crossing a cap
+// plane, the segment inside the cylinder (touching +- k ulps, or a small or
+// large gap either way), exact Pythagorean touches, zero capsule radius (a
+// segment), zero cylinder radius, p == q (a sphere).
 #include "common.hpp"
 
 namespace geomcheck::gen {
@@ -132,7 +140,8 @@ std::pair<CylinderCapsuleCase, std::string> exact_segment_capsule() {
 
 }  // namespace
 
-rc::Gen<std::pair<CylinderCapsuleCase, std::string>> cylinder_capsule_case() {
+template <>
+rc::Gen<Tagged<QueryTraits<QueryId::collide_cylinder_capsule>::Case>> targeted<QueryId::collide_cylinder_capsule>() {
   return rc::gen::resize(100, rc::gen::exec([]() -> std::pair<CylinderCapsuleCase, std::string> {
     const int mode = pick_int(0, 9);
     if (mode == 8) return exact_cylinder_capsule();
@@ -246,7 +255,8 @@ rc::Gen<std::pair<CylinderCapsuleCase, std::string>> cylinder_capsule_case() {
   }));
 }
 
-rc::Gen<CylinderCapsuleCase> wild_cylinder_capsule() {
+template <>
+rc::Gen<QueryTraits<QueryId::collide_cylinder_capsule>::Case> wild<QueryId::collide_cylinder_capsule>() {
   return rc::gen::exec([]() -> CylinderCapsuleCase {
     return {{wild_vec(), wild_vec(), *wild_double()}, {wild_vec(), wild_vec(), *wild_double()}};
   });

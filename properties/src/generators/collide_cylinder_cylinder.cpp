@@ -1,4 +1,39 @@
 // geomcheck — generators of collide_cylinder_cylinder: targeted modes and wild doubles.
+//
+// targeted:
+// Cylinder/cylinder pairs. Modes, by tag:
+// random[-through]              random poses in scenes of 2^-60..2^60
+// (some far from the origin; disks and
+// needles among them); -through: B's middle
+// inside A;
+// [anti-]parallel-side[-ANGLE-radial|tangential]  side by side, the axes
+// rA + rB (+ gap) apart, ANGLE 1e-4, 1e-8,
+// 1e-12 or 1e-16 radians from parallel, made
+// exactly (a coordinate that is zero at one
+// end: nothing rounds it away);
+// coaxial|stacked|stacked-rim[-anti][-ANGLE]  B's cap on A's top cap plane
+// (exactly, k ulps off, a gap or overlapping),
+// on the axis, beside it, or rA + rB beside
+// it (the rims meet at a point);
+// perp-side-side|side-on-cap|cap-on-side|through  perpendicular crossings;
+// cap-|side-|rim-on-<spot>      B's cap, side or rim at A's rim
+// (rim-above, rim-side, rim-diag), a cap or
+// its side (touching +- ulps, a gap either
+// way);
+// ratio-...                     the same with both cylinders disks or
+// needles (length / radius 1e-6..1e6);
+// exact-...                     exact integer constructions (parallel
+// sides rA + rB apart, stacked caps, rims
+// meeting, perpendicular sides, a side on a
+// cap, a cap tangent to a side, zero radii),
+// exact moves; -touch / -ulps-in / -ulps-out.
+// Suffixes: -touch, -ulps-in / -ulps-out (k ulps), -gap / -deep. Exact
+// moves (permutation, flips, 2^-60..2^60) keep ulp-sized features; other
+// constructions are also placed by a rounded rigid motion. Either cylinder
+// comes first.
+//
+// wild:
+// Wild doubles everywhere; a quarter of the pairs keep one ordinary cylinder.
 #include "common.hpp"
 
 namespace geomcheck::gen {
@@ -347,7 +382,8 @@ CylCase exact_cylinder_cylinder() {
 
 }  // namespace
 
-rc::Gen<std::pair<CylinderCylinderCase, std::string>> cylinder_cylinder_case() {
+template <>
+rc::Gen<Tagged<QueryTraits<QueryId::collide_cylinder_cylinder>::Case>> targeted<QueryId::collide_cylinder_cylinder>() {
   return rc::gen::resize(100, rc::gen::exec([]() -> std::pair<CylinderCylinderCase, std::string> {
     CylCase c;
     switch (pick_int(0, 12)) {
@@ -369,7 +405,8 @@ rc::Gen<std::pair<CylinderCylinderCase, std::string>> cylinder_cylinder_case() {
   }));
 }
 
-rc::Gen<CylinderCylinderCase> wild_cylinder_cylinder() {
+template <>
+rc::Gen<QueryTraits<QueryId::collide_cylinder_cylinder>::Case> wild<QueryId::collide_cylinder_cylinder>() {
   return rc::gen::resize(100, rc::gen::exec([]() -> CylinderCylinderCase {
     Cylinder a{wild_vec(), wild_vec(), *wild_double()}, b{wild_vec(), wild_vec(), *wild_double()};
     if (pick_int(0, 3) == 0) {  // one of them an ordinary cylinder

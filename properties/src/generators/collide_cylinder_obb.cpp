@@ -1,4 +1,54 @@
 // geomcheck — generators of collide_cylinder_obb: targeted modes and wild doubles.
+//
+// targeted:
+// Cylinder/box pairs. Box frames are orthonormal (to 4 eps; either
+// handedness, axes stored in any order and sign): signed permutations,
+// times a 3-4-5 or 5-12-13 rotation about a coordinate axis or a product of
+// two, or rounded random rotations (unit quaternions). Modes, by tag:
+// random                        random poses;
+// corner-/edge-/face-<spot>     a box corner, edge or face at the rim
+// (rim-above: just above the cap outside the
+// rim, rim-side: beside the side, rim-diag),
+// a cap or the side;
+// corner-pocket                 a corner over the cap disc within r of the
+// cap centre, the box beyond the cap plane
+// (in the bounding capsule, not in the
+// cylinder: a certain miss);
+// offray                        a tilted box whose corner nearest the axis
+// is above the cap while its section by the
+// cap plane lies beside that corner's radial
+// line (-deep: overlapping the disc, -gap:
+// the mirrored near miss);
+// capface-above|below           a box face on a cap plane (an edge or a
+// corner of it at in-plane radius r + gap;
+// capface-above-over: the face over the disc,
+// touching the cap);
+// cyl-in-box, box-in-cyl        containment (-snug: touching inside);
+// thin-flat|tilted|edgewise     a disk-like cylinder (length 1e-6..1e-12
+// of r) resting on a box face or its edge;
+// axis-edge[-1e-8|-1e-16]       a box edge parallel (or nearly) to the
+// axis beside the side;
+// side-face[-aligned]           a box face tangent to the side;
+// flat-box, segment-box, point-box, zero-radius  zero extents (one, two,
+// three), zero cylinder radius, at a spot;
+// pattern-kiss|slab-face|slab-side|stand|lie|f32  patterns from public
+// bug reports (gaps ~1e-8 of the scene, thin
+// slabs 100 x 100 x 0.1, resting on a big
+// box, coordinates rounded to float at
+// offsets 40..100);
+// exact-...                     exact integer constructions (a corner on
+// the rim of a Pythagorean radius at the cap
+// height, faces tangent to the side or on a
+// cap, inscribed and circumscribed boxes,
+// zero extents, zero radius), exact moves.
+// Suffixes: -touch (touching, then the radius and the extents grown or
+// shrunk by up to 2 ulps), -gap / -deep (a small or large gap either way);
+// exact touches: -touch / -ulps-in / -ulps-out (the radius or a cap moved
+// by k ulps). Scales 2^-20..2^20, optionally far from the origin.
+//
+// wild:
+// Wild doubles everywhere; a quarter of the boxes keep a valid frame with
+// wild centre and extents.
 #include "common.hpp"
 
 namespace geomcheck::gen {
@@ -487,7 +537,8 @@ ObbCase obb_pattern() {
 
 }  // namespace
 
-rc::Gen<std::pair<CylinderObbCase, std::string>> cylinder_obb_case() {
+template <>
+rc::Gen<Tagged<QueryTraits<QueryId::collide_cylinder_obb>::Case>> targeted<QueryId::collide_cylinder_obb>() {
   return rc::gen::resize(100, rc::gen::exec([]() -> std::pair<CylinderObbCase, std::string> {
     const int mode = pick_int(0, 13);
     if (mode == 12 || mode == 13) return exact_cylinder_obb();
@@ -510,7 +561,8 @@ rc::Gen<std::pair<CylinderObbCase, std::string>> cylinder_obb_case() {
   }));
 }
 
-rc::Gen<CylinderObbCase> wild_cylinder_obb() {
+template <>
+rc::Gen<QueryTraits<QueryId::collide_cylinder_obb>::Case> wild<QueryId::collide_cylinder_obb>() {
   return rc::gen::resize(100, rc::gen::exec([]() -> CylinderObbCase {
     const Cylinder a{wild_vec(), wild_vec(), *wild_double()};
     Obb b;

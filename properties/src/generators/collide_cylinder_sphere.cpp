@@ -1,11 +1,21 @@
 // geomcheck — generators of collide_cylinder_sphere: targeted modes and wild doubles.
+//
+// targeted:
+// Cylinder/sphere pairs: random, at the rim, on a cap plane, on the side
+// (touching +- k ulps, or a small or large gap either way), exactly touching
+// Pythagorean constructions, centre inside, sphere containing the
+// cylinder, zero radii; scales 2^-20..2^20, optionally far from the origin.
+//
+// wild:
+// Any shapes, valid or not, from wild doubles (robustness).
 #include "common.hpp"
 
 namespace geomcheck::gen {
 
 using namespace detail;
 
-rc::Gen<std::pair<CylinderSphereCase, std::string>> cylinder_sphere_case() {
+template <>
+rc::Gen<Tagged<QueryTraits<QueryId::collide_cylinder_sphere>::Case>> targeted<QueryId::collide_cylinder_sphere>() {
   return rc::gen::resize(100, rc::gen::exec([]() -> std::pair<CylinderSphereCase, std::string> {
     const int mode = pick_int(0, 7);
     if (mode == 7) {  // exact Pythagorean touch, nudged by k ulps
@@ -100,7 +110,8 @@ rc::Gen<std::pair<CylinderSphereCase, std::string>> cylinder_sphere_case() {
   }));
 }
 
-rc::Gen<CylinderSphereCase> wild_cylinder_sphere() {
+template <>
+rc::Gen<QueryTraits<QueryId::collide_cylinder_sphere>::Case> wild<QueryId::collide_cylinder_sphere>() {
   return rc::gen::exec([]() -> CylinderSphereCase {
     return {{wild_vec(), wild_vec(), *wild_double()}, {wild_vec(), *wild_double()}};
   });

@@ -1,4 +1,67 @@
 // geomcheck — generators of collide_cylinder_triangle: targeted modes and wild doubles.
+//
+// targeted:
+// Cylinder/triangle pairs. Modes, by tag:
+// random                        random triangles near the cylinder;
+// vertex-/edge-/face-<spot>     a triangle vertex, edge or face at the rim
+// (rim-above, rim-side, rim-diag), a cap or
+// the side; edges along the rim's or the
+// side's circle (-along: tangent to the
+// rim, to the side), across it (-across:
+// crossing the rim, along the axis on the
+// side) or any way across the normal;
+// point-|segment-|collinear-|sliver-<vertex|edge>-<spot>  degenerate
+// triangles at the same contacts (a point,
+// two equal vertices, three collinear, the
+// third vertex 1e-8, 1e-16 or 2^-30..2^-60
+// of the edge off the line);
+// capplane-above|on|below-vertex|edge|over  a triangle parallel to a cap
+// (above it: a certain miss; in its plane;
+// inside the slab) with a vertex or an edge
+// at in-plane radius r + gap, or over the
+// disc;
+// axisplane-through|chord-side|cap|corner-vertex|edge, -across,
+// axisplane-through-axis-edge,
+// axisplane-beside              a triangle in a plane parallel to the
+// axis (through it, cutting a chord, at
+// r + gap), a vertex or an edge at the
+// section's long side, short side or
+// corner (in-plane gap), covering a
+// point of the section, or with an edge
+// along the axis (-axis-edge: its ends a
+// few ulps off the axis line);
+// capcross-deep|gap|touch|outside  a tilted triangle through a cap plane
+// whose point nearest the axis segment is
+// beyond the cap (within r of its centre)
+// while its vertex W pokes through the disc
+// (-deep: overlapping), hovers over it
+// (-gap), touches it, or pokes through just
+// outside the rim (-outside: a miss); also
+// collapsed (segment-, collinear-, sliver-);
+// huge-stand|tilted|lie[-edge]  a small cylinder on a triangle 10^2..10^4
+// times its size (touching, a tiny or small
+// gap or penetration; -edge: the contact on
+// the triangle's edge);
+// thin-flat|tilted|edgewise[-edge]  a disk-like cylinder (length 1e-6..1e-12
+// of r) on a triangle;
+// pattern-f32                   vertex/edge/face contacts at offsets
+// 40..100, every value rounded to float;
+// exact-...                     exact integer constructions (a vertex on
+// the rim, the side or a cap, edges tangent
+// to the side or the rim, triangles in the
+// cap plane at the rim or over the disc, an
+// edge across a zero-radius cylinder; also
+// point-, segment-, collinear-), exact moves.
+// Suffixes: -touch (touching, then the radius grown or shrunk and the
+// triangle moved by up to 2 ulps), -gap / -deep (a small or large gap
+// either way); exact touches: -touch / -ulps-in / -ulps-out / -ulps-off,
+// exact -gap / -deep (moved exactly: out along the contact normal, or from
+// the contact 2^-1..2^-25 of the way towards the cylinder's centre). Scales
+// 2^-20..2^20, optionally far from the origin.
+//
+// wild:
+// Wild doubles everywhere; a quarter of the triangles repeat a vertex
+// (segment and point triangles).
 #include "common.hpp"
 
 namespace geomcheck::gen {
@@ -540,7 +603,8 @@ TriCase exact_cylinder_triangle() {
 
 }  // namespace
 
-rc::Gen<std::pair<CylinderTriangleCase, std::string>> cylinder_triangle_case() {
+template <>
+rc::Gen<Tagged<QueryTraits<QueryId::collide_cylinder_triangle>::Case>> targeted<QueryId::collide_cylinder_triangle>() {
   return rc::gen::resize(100, rc::gen::exec([]() -> std::pair<CylinderTriangleCase, std::string> {
     const int mode = pick_int(0, 14);
     if (mode == 12 || mode == 13) return exact_cylinder_triangle();
@@ -562,7 +626,8 @@ rc::Gen<std::pair<CylinderTriangleCase, std::string>> cylinder_triangle_case() {
   }));
 }
 
-rc::Gen<CylinderTriangleCase> wild_cylinder_triangle() {
+template <>
+rc::Gen<QueryTraits<QueryId::collide_cylinder_triangle>::Case> wild<QueryId::collide_cylinder_triangle>() {
   return rc::gen::resize(100, rc::gen::exec([]() -> CylinderTriangleCase {
     const Cylinder a{wild_vec(), wild_vec(), *wild_double()};
     Triangle b{wild_vec(), wild_vec(), wild_vec()};

@@ -1,4 +1,13 @@
 // geomcheck — generators of sweep_sphere_cylinder: targeted modes and wild doubles.
+//
+// targeted:
+// Sphere sweeps against a cylinder: random, aimed past the rim corner from
+// above the cap, from the side and diagonally (touching +- k ulps, a gap
+// either way, or inside the corner pocket of the augmented cylinder),
+// along the axis into a cap, grazing the side and the rim, starting inside
+// or touching, ending touching, zero, tiny and huge displacements, exact
+// Pythagorean constructions; scales 2^-20..2^20, optionally far from the
+// origin.
 #include "common.hpp"
 
 namespace geomcheck::gen {
@@ -104,7 +113,8 @@ std::pair<SweepCylinderCase, std::string> exact_sweep_cylinder() {
 
 }  // namespace
 
-rc::Gen<std::pair<SweepCylinderCase, std::string>> sweep_cylinder_case() {
+template <>
+rc::Gen<Tagged<QueryTraits<QueryId::sweep_sphere_cylinder>::Case>> targeted<QueryId::sweep_sphere_cylinder>() {
   return rc::gen::resize(100, rc::gen::exec([]() -> std::pair<SweepCylinderCase, std::string> {
     const int mode = pick_int(0, 9);
     if (mode == 9) return exact_sweep_cylinder();
@@ -238,7 +248,8 @@ rc::Gen<std::pair<SweepCylinderCase, std::string>> sweep_cylinder_case() {
   }));
 }
 
-rc::Gen<SweepCylinderCase> wild_sweep_cylinder() {
+template <>
+rc::Gen<QueryTraits<QueryId::sweep_sphere_cylinder>::Case> wild<QueryId::sweep_sphere_cylinder>() {
   return rc::gen::exec([]() -> SweepCylinderCase {
     return {{wild_vec(), *wild_double(), wild_vec()}, {wild_vec(), wild_vec(), *wild_double()}};
   });

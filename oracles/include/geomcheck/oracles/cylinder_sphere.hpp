@@ -14,6 +14,7 @@
 #pragma once
 
 #include "geomcheck/oracles/exact.hpp"
+#include "geomcheck/oracles/solids.hpp"
 
 namespace geomcheck::oracle {
 
@@ -30,23 +31,9 @@ struct CylinderSphereTruth {
 CylinderSphereTruth solve_cylinder_sphere(const QCylinder& cyl, const QSphere& s);
 CylinderSphereTruth solve_cylinder_sphere(const Cylinder& cyl, const Sphere& s);
 
-/// Signed distance from point x to the cylinder surface (< 0 inside).
-QInterval signed_distance(const QCylinder& cyl, const QVec& x);
-/// Signed distance from point x to the sphere surface (< 0 inside).
-QInterval signed_distance(const QSphere& s, const QVec& x);
-
-/// Support function of the cylinder along n (any non-zero n, not normalised):
-/// max over the cylinder of n.x.
-QInterval support(const QCylinder& cyl, const QVec& n);
-/// Support function of the sphere along n (not normalised).
-QInterval support(const QSphere& s, const QVec& n);
-
 /// Overlap of A and B measured along unit(n): (h_A(n) + h_B(-n)) / |n|.
 /// For overlapping shapes its minimum over n is the penetration depth.
 QInterval overlap_along(const QCylinder& a, const QSphere& b, const QVec& n);
-
-/// |b - a| computed without overflow, clamped to the largest double.
-double extent(Vec3 a, Vec3 b);
 
 /// Scale of a case: the largest coordinate magnitude or extent.
 double case_scale(const Cylinder& c, const Sphere& s);

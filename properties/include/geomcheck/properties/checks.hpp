@@ -9,6 +9,7 @@
 #include <cmath>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "geomcheck/oracles/exact.hpp"
 #include "geomcheck/registry.hpp"
@@ -61,19 +62,76 @@ using CylinderObbImpl = ImplOf<QueryId::collide_cylinder_obb>;
 using CylinderTriangleImpl = ImplOf<QueryId::collide_cylinder_triangle>;
 using CylinderCylinderImpl = ImplOf<QueryId::collide_cylinder_cylinder>;
 
-extern const CylinderSphereImpl kProductionCylinderSphere;
-extern const CastSegmentCylinderImpl kProductionCastSegmentCylinder;
-extern const CylinderCapsuleImpl kProductionCylinderCapsule;
-extern const SweepSphereCylinderImpl kProductionSweepSphereCylinder;
-extern const CylinderObbImpl kProductionCylinderObb;
-extern const CylinderTriangleImpl kProductionCylinderTriangle;
-extern const CylinderCylinderImpl kProductionCylinderCylinder;
 
-/// Production's subject of query Q (kProduction...), for generic code.
+/// Production's subject of query Q (defined in properties/src/checks_<id>.cpp).
 template <QueryId Q> const ImplOf<Q>& production_of();
 #define GEOMCHECK_X(id, kind, A, B, summary) template <> const ImplOf<QueryId::id>& production_of<QueryId::id>();
 GEOMCHECK_QUERY_LIST(GEOMCHECK_X)
 #undef GEOMCHECK_X
+
+/// Production's subject of Q made from its entry points in core/ (overlap and
+/// collide, cast, or sweep, found by the shapes' types): what production_of<Q>
+/// returns. Instantiated where the query's core header is included.
+template <QueryId Q>
+const ImplOf<Q>& production_subject() {
+  using A = typename QueryTraits<Q>::ShapeA;
+  using B = typename QueryTraits<Q>::ShapeB;
+  if constexpr (QueryTraits<Q>::kind == QueryKind::Collide) {
+    static const ImplOf<Q> subject{"production", [](const A& a, const B& b) { return overlap(a, b); },
+                                   [](const A& a, const B& b) { return collide(a, b); }};
+    return subject;
+  } else if constexpr (QueryTraits<Q>::kind == QueryKind::Cast) {
+    static const ImplOf<Q> subject{"production", [](const A& a, const B& b) { return cast(a, b); }};
+    return subject;
+  } else {
+    static const ImplOf<Q> subject{"production", [](const A& a, const B& b) { return sweep(a, b); }};
+    return subject;
+  }
+}
+
+/// What a subject claims about its answers. The checks hold it to these
+/// claims and the report prints them beside the figures.
+struct Claims {
+  /// What a collide query's depth is.
+  enum class Depth {
+    None,         ///< cast and sweep queries: no depth
+    Penetration,  ///< the true penetration depth (minimal translation)
+    Shallow,      ///< the true penetration depth while the contact is shallow (see the query's header)
+    UpperBound,   ///< a consistent contact: the overlap along the normal, an upper bound of the penetration depth
+  };
+  bool exact_verdict = true;  ///< the verdict is exact outside the verdict band
+  Depth depth = Depth::None;
+  bool point_in_both = true;  ///< collide: the point lies in both shapes (cast, sweep: on B)
+  const char* normal = "";    ///< the normal's convention, in words
+  const char* truth = "";     ///< what the truth is computed by
+};
+
+/// Words for a depth claim, for reports.
+inline const char* to_string(Claims::Depth d) {
+  switch (d) {
+    case Claims::Depth::None: return "none";
+    case Claims::Depth::Penetration: return "penetration depth";
+    case Claims::Depth::Shallow: return "penetration depth while shallow";
+    case Claims::Depth::UpperBound: return "overlap along the normal (upper bound)";
+  }
+  return "?";
+}
+
+/// The facts of query Q that are not code: what production claims, how many
+/// cases a default campaign runs, and the known-wrong variants (teeth.hpp),
+/// each of which the suites must catch.
+template <QueryId Q>
+struct QuerySpec {
+  Claims claims;
+  int default_cases = 0;
+  std::vector<const ImplOf<Q>*> variants;
+};
+/// Query Q's spec (defined at the end of properties/src/checks_<id>.cpp).
+template <QueryId Q> const QuerySpec<Q>& spec_of();
+#define GEOMCHECK_X(id, kind, A, B, summary) template <> const QuerySpec<QueryId::id>& spec_of<QueryId::id>();
+GEOMCHECK_QUERY_LIST(GEOMCHECK_X)
+#undef GEOMCHECK_X
+
 /// The subject type of the query whose case type is Case.
 template <class Case>
 using ImplOfCase = ImplOf<query_of_case<Case>>;
@@ -130,16 +188,6 @@ struct Evaluation {
   double depth_ratio = NAN;
 };
 
-// `peer` (collide: a contact; cast, sweep: a t), when given, is scored into
-// Evaluation::peer against the same truth (computed once).
-Evaluation evaluate(const CylinderSphereCase& c, const CylinderSphereImpl& impl = kProductionCylinderSphere, const Contact* peer = nullptr);
-Evaluation evaluate(const SegmentCylinderCase& c, const CastSegmentCylinderImpl& impl = kProductionCastSegmentCylinder, const double* peer_t = nullptr);
-Evaluation evaluate(const CylinderCapsuleCase& c, const CylinderCapsuleImpl& impl = kProductionCylinderCapsule, const Contact* peer = nullptr);
-Evaluation evaluate(const SweepCylinderCase& c, const SweepSphereCylinderImpl& impl = kProductionSweepSphereCylinder, const double* peer_t = nullptr);
-Evaluation evaluate(const CylinderObbCase& c, const CylinderObbImpl& impl = kProductionCylinderObb, const Contact* peer = nullptr);
-Evaluation evaluate(const CylinderTriangleCase& c, const CylinderTriangleImpl& impl = kProductionCylinderTriangle, const Contact* peer = nullptr);
-Evaluation evaluate(const CylinderCylinderCase& c, const CylinderCylinderImpl& impl = kProductionCylinderCylinder, const Contact* peer = nullptr);
-
 /// The oracle's verdict in the words of case files' `oracle-verdict`:
 /// collide queries overlapping / touching / separated, casts hit / miss.
 inline std::string verdict_word(QueryId id, const Evaluation& e) {
@@ -161,115 +209,44 @@ CheckResult check_robust(const Case& c, const ImplOfCase<Case>& impl = productio
 template <class Case>
 CheckResult check_all(const Case& c, const ImplOfCase<Case>& impl = production_of<query_of_case<Case>>());
 
-// --- collide_cylinder_sphere -------------------------------------------------
-/// Agreement with the exact oracle outside the band; depth, normal, point within bounds.
-CheckResult check_oracle(const CylinderSphereCase& c, const CylinderSphereImpl& impl = kProductionCylinderSphere);
-/// overlap == collide.hit; unit normal; depth >= 0 equals the overlap along the normal; no NaN.
-CheckResult check_consistency(const CylinderSphereCase& c, const CylinderSphereImpl& impl = kProductionCylinderSphere);
-/// (A,B) and (B,A) agree, normal flips; caps swapped gives the same answer (to the band).
-CheckResult check_symmetry(const CylinderSphereCase& c, const CylinderSphereImpl& impl = kProductionCylinderSphere);
-/// Sign flips and power-of-two scales bit-identical; axis permutations and
-/// rigid motions agree outside the band.
-CheckResult check_metamorphic(const CylinderSphereCase& c, int move, const CylinderSphereImpl& impl = kProductionCylinderSphere);
-/// Growing the sphere or the cylinder radius never turns overlap into separation.
-CheckResult check_monotone(const CylinderSphereCase& c, const CylinderSphereImpl& impl = kProductionCylinderSphere);
+// --- every query: the checks that are the query's own ----------------------
+// Declared here for every registered query; each defined in
+// properties/src/checks_<id>.cpp, whose head says what it means there.
+//   evaluate           the subject held against the truth on one case (a peer's
+//                      answer, when given, scored against the same truth);
+//   check_oracle       agreement with the truth outside the verdict band, and
+//                      every error within its bound (tolerances.hpp);
+//   check_consistency  the answer agrees with itself (overlap and collide, t and
+//                      point, a unit normal, the depth along the normal);
+//   check_symmetry     the same solids stated another way give the same answer;
+//   check_metamorphic  move `move` (0..kNumMoves-1) of the scene moves the answer;
+//   check_monotone     a superset never loses the hit (outside the band).
 
-// --- cast_segment_cylinder ---------------------------------------------------
-CheckResult check_oracle(const SegmentCylinderCase& c, const CastSegmentCylinderImpl& impl = kProductionCastSegmentCylinder);
-/// t in [0,1]; point == S(t) (to the bound); starts_inside iff t == 0 from inside; unit normal.
-CheckResult check_consistency(const SegmentCylinderCase& c, const CastSegmentCylinderImpl& impl = kProductionCastSegmentCylinder);
-/// Segment reversed: same hit/miss outside the band; caps swapped: same answer to the bounds.
-CheckResult check_symmetry(const SegmentCylinderCase& c, const CastSegmentCylinderImpl& impl = kProductionCastSegmentCylinder);
-CheckResult check_metamorphic(const SegmentCylinderCase& c, int move, const CastSegmentCylinderImpl& impl = kProductionCastSegmentCylinder);
-/// A wider cylinder or a longer segment never turns a hit into a miss (outside the band).
-CheckResult check_monotone(const SegmentCylinderCase& c, const CastSegmentCylinderImpl& impl = kProductionCastSegmentCylinder);
+/// What a peer's answer is, by query kind: a contact (collide) or a first t.
+template <QueryKind K> struct PeerAnswerOf { using type = Contact; };
+template <> struct PeerAnswerOf<QueryKind::Cast> { using type = double; };
+template <> struct PeerAnswerOf<QueryKind::Sweep> { using type = double; };
 
-// --- collide_cylinder_capsule --------------------------------------------------
-/// Agreement with the engine outside the band; the depth claim (shallow
-/// contacts: true depth and minimal-translation normal), point in both.
-CheckResult check_oracle(const CylinderCapsuleCase& c, const CylinderCapsuleImpl& impl = kProductionCylinderCapsule);
-/// overlap == collide.hit; unit normal; depth >= 0 equals the overlap along the normal; no NaN.
-CheckResult check_consistency(const CylinderCapsuleCase& c, const CylinderCapsuleImpl& impl = kProductionCylinderCapsule);
-/// (A,B) and (B,A) agree, normal flips; caps swapped, capsule reversed: same verdict (band), same depth.
-CheckResult check_symmetry(const CylinderCapsuleCase& c, const CylinderCapsuleImpl& impl = kProductionCylinderCapsule);
-CheckResult check_metamorphic(const CylinderCapsuleCase& c, int move, const CylinderCapsuleImpl& impl = kProductionCylinderCapsule);
-/// Growing either radius never turns overlap into separation (outside the band).
-CheckResult check_monotone(const CylinderCapsuleCase& c, const CylinderCapsuleImpl& impl = kProductionCylinderCapsule);
+#define GEOMCHECK_X(id, kind, A, B, summary)                                                                     \
+  Evaluation evaluate(const PairCase<A, B>& c, const ImplOf<QueryId::id>& impl = production_of<QueryId::id>(),    \
+                      const PeerAnswerOf<QueryKind::kind>::type* peer = nullptr);                               \
+  CheckResult check_oracle(const PairCase<A, B>& c, const ImplOf<QueryId::id>& impl = production_of<QueryId::id>()); \
+  CheckResult check_consistency(const PairCase<A, B>& c,                                                        \
+                                const ImplOf<QueryId::id>& impl = production_of<QueryId::id>());               \
+  CheckResult check_symmetry(const PairCase<A, B>& c, const ImplOf<QueryId::id>& impl = production_of<QueryId::id>()); \
+  CheckResult check_metamorphic(const PairCase<A, B>& c, int move,                                              \
+                                const ImplOf<QueryId::id>& impl = production_of<QueryId::id>());               \
+  CheckResult check_monotone(const PairCase<A, B>& c, const ImplOf<QueryId::id>& impl = production_of<QueryId::id>());
+GEOMCHECK_QUERY_LIST(GEOMCHECK_X)
+#undef GEOMCHECK_X
 
-// --- sweep_sphere_cylinder -----------------------------------------------------
-/// Hit/miss agrees with the engine (the swept capsule against the cylinder)
-/// outside the band; t: the ball at t touches (to the bound) and the sweep up
-/// to t stays out (bracketing, certified by the engine); point on the
-/// cylinder at the ball; normal in the normal cone there.
-CheckResult check_oracle(const SweepCylinderCase& c, const SweepSphereCylinderImpl& impl = kProductionSweepSphereCylinder);
-/// t in [0,1]; starts_inside iff the ball meets the cylinder at t = 0
-/// (overlap(Cylinder, Sphere)); the ball at t meets the cylinder and just
-/// before t does not (collide(Cylinder, Sphere)); the swept capsule up to 1
-/// agrees with overlap(Cylinder, Capsule) outside the band.
-CheckResult check_consistency(const SweepCylinderCase& c, const SweepSphereCylinderImpl& impl = kProductionSweepSphereCylinder);
-/// Caps swapped: same answer to the bounds.
-CheckResult check_symmetry(const SweepCylinderCase& c, const SweepSphereCylinderImpl& impl = kProductionSweepSphereCylinder);
-CheckResult check_metamorphic(const SweepCylinderCase& c, int move, const SweepSphereCylinderImpl& impl = kProductionSweepSphereCylinder);
-/// A bigger ball, a wider cylinder or a longer sweep never turns a hit into a miss (outside the band).
-CheckResult check_monotone(const SweepCylinderCase& c, const SweepSphereCylinderImpl& impl = kProductionSweepSphereCylinder);
-
-// --- collide_cylinder_obb ------------------------------------------------------
-/// Agreement with the engine outside the band; the depth claim (see the
-/// query's header), point in both. A box whose axes are not orthonormal is
-/// outside production's contract: only the robust check applies.
-CheckResult check_oracle(const CylinderObbCase& c, const CylinderObbImpl& impl = kProductionCylinderObb);
-/// overlap == collide.hit; unit normal; depth >= 0 equals the overlap along the normal; no NaN.
-CheckResult check_consistency(const CylinderObbCase& c, const CylinderObbImpl& impl = kProductionCylinderObb);
-/// (A,B) and (B,A) agree, normal flips; caps swapped, box axes permuted or
-/// negated: same verdict (band), same depth to the bound.
-CheckResult check_symmetry(const CylinderObbCase& c, const CylinderObbImpl& impl = kProductionCylinderObb);
-CheckResult check_metamorphic(const CylinderObbCase& c, int move, const CylinderObbImpl& impl = kProductionCylinderObb);
-/// A wider or longer cylinder or a bigger box never turns overlap into separation (outside the band).
-CheckResult check_monotone(const CylinderObbCase& c, const CylinderObbImpl& impl = kProductionCylinderObb);
+// --- helpers of single queries ------------------------------------------------
 /// Axes orthonormal to 16 eps (|a_i . a_j - delta_ij|): production's contract.
 bool obb_in_contract(const Obb& b);
-
-// --- collide_cylinder_triangle -------------------------------------------------
-/// Agreement with the engine outside the band; the depth claim (see the
-/// query's header), point in both. Every finite triangle is in the contract
-/// (a degenerate one is its longest edge or its point).
-CheckResult check_oracle(const CylinderTriangleCase& c, const CylinderTriangleImpl& impl = kProductionCylinderTriangle);
-/// overlap == collide.hit; unit normal; depth >= 0 equals the overlap along the normal; no NaN.
-CheckResult check_consistency(const CylinderTriangleCase& c, const CylinderTriangleImpl& impl = kProductionCylinderTriangle);
-/// (A,B) and (B,A) agree, normal flips; caps swapped, triangle vertices
-/// rotated or reversed: same verdict (band), same depth to the bound.
-CheckResult check_symmetry(const CylinderTriangleCase& c, const CylinderTriangleImpl& impl = kProductionCylinderTriangle);
-/// As for the other queries, but for a reflection of a scene whose cylinder
-/// axis lies exactly in the triangle's plane: there the normal is free
-/// (mirror pairs), the verdict and point bit-identical, the depth to the bound.
-CheckResult check_metamorphic(const CylinderTriangleCase& c, int move, const CylinderTriangleImpl& impl = kProductionCylinderTriangle);
-/// A wider or longer cylinder or a bigger triangle never turns overlap into separation (outside the band).
-CheckResult check_monotone(const CylinderTriangleCase& c, const CylinderTriangleImpl& impl = kProductionCylinderTriangle);
-
-// --- collide_cylinder_cylinder -------------------------------------------------
-/// Agreement with the engine outside the band; the point in both cylinders;
-/// the depth never below the certified penetration depth by more than the
-/// bound (it is the overlap along the returned normal, an upper bound of the
-/// penetration depth, and need not equal it: see the query's header).
-CheckResult check_oracle(const CylinderCylinderCase& c, const CylinderCylinderImpl& impl = kProductionCylinderCylinder);
-/// overlap == collide.hit; unit normal; depth >= 0 equals the overlap along the normal; no NaN.
-CheckResult check_consistency(const CylinderCylinderCase& c, const CylinderCylinderImpl& impl = kProductionCylinderCylinder);
-/// (A,B) and (B,A): the same verdict (band), the normal flipped and the depth
-/// equal to the bounds; caps swapped (either cylinder): same verdict (band),
-/// same depth to the bound.
-CheckResult check_symmetry(const CylinderCylinderCase& c, const CylinderCylinderImpl& impl = kProductionCylinderCylinder);
-/// As for the other queries, but for a reflection of a scene whose two axes
-/// lie exactly in one plane: there the normal may be the other of a mirror
-/// pair (point bit-identical, depth to the bound); and for any reflection,
-/// a tie: another normal with the point and the depth bit-identical, as good
-/// as the returned one (the overlap along it, exactly, equals the depth).
-CheckResult check_metamorphic(const CylinderCylinderCase& c, int move, const CylinderCylinderImpl& impl = kProductionCylinderCylinder);
-/// A wider or longer cylinder (either one) never turns overlap into separation (outside the band).
-CheckResult check_monotone(const CylinderCylinderCase& c, const CylinderCylinderImpl& impl = kProductionCylinderCylinder);
 /// Production's depth over the certified penetration depth (Evaluation::depth_ratio):
 /// NaN when the shapes do not overlap, the enclosure is wider than 1% or the
 /// penetration depth is below 1e-9 * scale.
-double depth_ratio(const CylinderCylinderCase& c, const CylinderCylinderImpl& impl = kProductionCylinderCylinder);
+double depth_ratio(const CylinderCylinderCase& c, const CylinderCylinderImpl& impl = production_of<QueryId::collide_cylinder_cylinder>());
 
 /// Number of metamorphic moves understood by check_metamorphic (0..kNumMoves-1).
 inline constexpr int kNumMoves = 6;

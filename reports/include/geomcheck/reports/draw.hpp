@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "geomcheck/registry.hpp"
 #include "geomcheck/results.hpp"
 #include "geomcheck/shapes.hpp"
 
@@ -19,13 +20,9 @@ struct Answer {
   std::string label;  ///< e.g. "production: hit, depth 0.25"
 };
 
-Answer production_answer(const Cylinder& a, const Sphere& b);
-Answer production_answer(const Segment& a, const Cylinder& b);
-Answer production_answer(const Cylinder& a, const Capsule& b);
-Answer production_answer(const MovingSphere& a, const Cylinder& b);
-Answer production_answer(const Cylinder& a, const Obb& b);
-Answer production_answer(const Cylinder& a, const Triangle& b);
-Answer production_answer(const Cylinder& a, const Cylinder& b);
+/// Production's answer to the case of query Q.
+template <QueryId Q>
+Answer production_answer(const typename QueryTraits<Q>::Case& c);
 /// Any implementation's answer; `who` heads the label ("production", a variant's name).
 Answer answer_of(const Contact& k, const std::string& who);
 Answer answer_of(const CastHit& h, const std::string& who);
@@ -50,13 +47,8 @@ struct Mark {
 /// S(t); a sweep, the ball at its first touch. Empty for invalid input or
 /// when the oracle cannot say. `hint`: a point worth trying as the certified
 /// common point (the drawn answer's).
-std::vector<Mark> oracle_witness(const Cylinder& a, const Sphere& b, const Vec3* hint = nullptr);
-std::vector<Mark> oracle_witness(const Segment& a, const Cylinder& b, const Vec3* hint = nullptr);
-std::vector<Mark> oracle_witness(const Cylinder& a, const Capsule& b, const Vec3* hint = nullptr);
-std::vector<Mark> oracle_witness(const MovingSphere& a, const Cylinder& b, const Vec3* hint = nullptr);
-std::vector<Mark> oracle_witness(const Cylinder& a, const Obb& b, const Vec3* hint = nullptr);
-std::vector<Mark> oracle_witness(const Cylinder& a, const Triangle& b, const Vec3* hint = nullptr);
-std::vector<Mark> oracle_witness(const Cylinder& a, const Cylinder& b, const Vec3* hint = nullptr);
+template <QueryId Q>
+std::vector<Mark> oracle_witness(const typename QueryTraits<Q>::Case& c, const Vec3* hint = nullptr);
 
 /// Three views of shapes A (blue) and B (orange), production's answer
 /// (red), the oracle's witness (green) and `extra` marks, fitted to all of

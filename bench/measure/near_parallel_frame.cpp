@@ -1,10 +1,13 @@
 // geomcheck — verdicts of the compensated and the plain frame on near-parallel side-by-side pairs.
-// Build: g++ -std=c++17 -O2 -DGAP=3e-10 -Icore/include -Ioracles/include tools/measure/near_parallel_frame.cpp \
-//     build/default/oracles/libgeomcheck_oracles.a build/default/core/libgeomcheck_core.a -lgmp -lmpfr -o near_parallel
+// Built with -DGEOMCHECK_MEASURE=ON (the release preset): build/release/bench/measure/near_parallel_frame.
 #include <cstdio>
 #include <random>
 #include <cmath>
 #include "geomcheck/detail/cylinder_pair.hpp"
+
+#ifndef GAP
+#define GAP 3e-10  // the gap, as a multiple of the scale; -DGAP=... for another
+#endif
 #include "geomcheck/oracles/engine.hpp"
 using namespace geomcheck; using namespace geomcheck::oracle;
 int main() {

@@ -1,7 +1,5 @@
 // geomcheck — depth / certified penetration depth of collide(Cylinder, Cylinder) on random pairs.
-// Build (from the repository root, after the default build):
-//   g++ -std=c++17 -O2 -Icore/include -Ioracles/include tools/measure/depth_ratio.cpp \
-//     build/default/oracles/libgeomcheck_oracles.a build/default/core/libgeomcheck_core.a -lgmp -lmpfr -o depth_ratio
+// Built with -DGEOMCHECK_MEASURE=ON (the release preset): build/release/bench/measure/depth_ratio.
 //   ./depth_ratio 3000 0   (mode 1: near-parallel, 2: parallel)
 #include <cstdio>
 #include <random>

@@ -1,8 +1,8 @@
 // geomcheck — what a consistent (not minimal) cylinder/box contact would cost and give up,
 // against production's collide(Cylinder, Obb), which is the penetration depth.
 //
-// Question behind it (issue box-triangle-mesh): the box's collide target is 10x FCL's MPR
-// collide, and production's exact penetration depth is 0.3x. This driver times, on the same
+// Question behind it: a target of 10x FCL's MPR collide for the box's collide, where
+// production's exact penetration depth is 0.3x. This driver times, on the same
 // contact pairs, production's collide and a prototype that keeps production's verdict and
 // point (overlap) and takes as its normal the best of the closed-form Minkowski patch normals
 // (+-u, +-box axes, +-u x box axis, the side x vertex radial directions) and three Newton
@@ -12,8 +12,7 @@
 // collide_cylinder_cylinder's); and the same without the Newton steps. It prints the times and
 // depth / penetration depth.
 //
-// Build and run (from the repository root):
-//   g++ -std=c++17 -O3 -DNDEBUG -Icore/include tools/measure/box_fast_contact.cpp core/src/collide_cylinder_obb.cpp -o box_fast_contact
+// Built with -DGEOMCHECK_MEASURE=ON (the release preset): build/release/bench/measure/box_fast_contact.
 //   ./box_fast_contact 4096 [seed]
 #include <algorithm>
 #include <chrono>

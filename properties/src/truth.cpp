@@ -1,4 +1,4 @@
-#include "capsule_truth.hpp"
+#include "truth.hpp"
 
 #include "common.hpp"
 

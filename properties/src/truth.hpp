@@ -1,6 +1,6 @@
-// geomcheck — the exact answer for a capsule (or a swept ball: the capsule
-// of its path) or a polytope (box, triangle) against a cylinder, through the
-// certified engine (internal to properties/).
+// geomcheck — the truth of the engine-backed queries, through the certified
+// engine: a capsule (or a swept ball: the capsule of its path) or a polytope
+// (box, triangle, cylinder) against a cylinder (internal to properties/).
 #pragma once
 
 #include <cmath>

@@ -2,9 +2,7 @@
 // triangles of size about 1 near a random cylinder, about a third of them
 // overlapping), for counting instructions per call under callgrind and for
 // checking that a change leaves every answer as it was (the printed sum).
-// Build (from the repository root, after the default build):
-//   g++ -std=c++17 -O2 -Icore/include tools/measure/triangle_calls.cpp \
-//     build/default/core/libgeomcheck_core.a -o triangle_calls
+// Built with -DGEOMCHECK_MEASURE=ON (the release preset): build/release/bench/measure/triangle_calls.
 //   valgrind --tool=callgrind ./triangle_calls   (instructions / 20000 = per call)
 #include <cstdio>
 #include <random>

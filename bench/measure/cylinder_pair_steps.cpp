@@ -3,10 +3,7 @@
 // number of Newton steps on the circles of side normals, on the contact pairs
 // of bench_collide_cylinder_cylinder's layout.
 //
-// Build (from the repository root, after `cmake --build build/release`), one line:
-//   g++ -std=c++17 -O3 -DNDEBUG -Icore/include -Ioracles/include -Ibench
-//     tools/measure/cylinder_pair_steps.cpp build/release/oracles/libgeomcheck_oracles.a
-//     build/release/core/libgeomcheck_core.a -lgmp -lmpfr -o cylinder_pair_steps
+// Built with -DGEOMCHECK_MEASURE=ON (the release preset): build/release/bench/measure/cylinder_pair_steps.
 //   ./cylinder_pair_steps [pairs=2000] [seed=1]
 #include <algorithm>
 #include <chrono>
