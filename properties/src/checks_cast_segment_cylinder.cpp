@@ -20,8 +20,18 @@
 #include "geomcheck/properties/tolerances.hpp"
 #include "geomcheck/shape_traits.hpp"
 #include "moves.hpp"
+#include "moving_checks.hpp"
 
 namespace geomcheck {
+
+// The spec of cast_segment_cylinder: segment cast against a cylinder: the first hit from the segment start.
+// Claims (exact verdict, depth, point in both, the normal, the truth), the
+// default campaign's cases and the known-wrong variants (teeth.cpp).
+template <>
+const QuerySpec<QueryId::cast_segment_cylinder>& spec_of<QueryId::cast_segment_cylinder>() {
+  static const QuerySpec<QueryId::cast_segment_cylinder> spec{{true, Claims::Depth::None, true, "the cylinder's outward surface normal at the hit (zero when the segment starts inside)", "closed form (oracles/src/cast_segment_cylinder.cpp): exact hit or miss, certified t"}, 100000, {&teeth::kInfiniteCylinder, &teeth::kEricsonPrinted}};
+  return spec;
+}
 
 namespace {
 
@@ -58,14 +68,7 @@ double disagreement_margin(const oracle::QSegment& s, const oracle::QCylinder& c
   return std::exp2(hi);
 }
 
-
 }  // namespace
-
-template <>
-const ImplOf<kId>& production_of<kId>() {
-  return production_subject<kId>();
-}
-
 
 Evaluation evaluate(const SegmentCylinderCase& c, const CastSegmentCylinderImpl& impl, const double* peer_t) {
   Evaluation e;
@@ -161,35 +164,11 @@ CheckResult check_consistency(const SegmentCylinderCase& c, const CastSegmentCyl
   return std::nullopt;
 }
 
-namespace {
-// Two production answers that should agree on hit/miss: fail unless one of
-// the two cases is inside the band.
-CheckResult same_verdict(const char* what, const SegmentCylinderCase& c0, const SegmentCylinderCase& c1,
-                         const CastSegmentCylinderImpl& impl) {
-  const CastHit h0 = impl.cast(c0.a, c0.b), h1 = impl.cast(c1.a, c1.b);
-  if (h0.hit == h1.hit) return std::nullopt;
-  const Evaluation e0 = evaluate(c0, impl), e1 = evaluate(c1, impl);
-  if (e0.near_boundary || e1.near_boundary) return std::nullopt;
-  return Failure{what, describe(h0) + " vs " + describe(h1) + "; oracle: " + e0.truth_text + " / " + e1.truth_text};
-}
-}  // namespace
-
 CheckResult check_symmetry(const SegmentCylinderCase& c, const CastSegmentCylinderImpl& impl) {
   if (!valid_case(c)) return std::nullopt;
   if (auto f = same_verdict("symmetry-segment-reversed", c, {{c.a.b, c.a.a}, c.b}, impl)) return f;
-  const SegmentCylinderCase sw{c.a, {c.b.q, c.b.p, c.b.r}};
-  if (auto f = same_verdict("symmetry-caps-swapped", c, sw, impl)) return f;
-  const CastHit h0 = impl.cast(c.a, c.b), h1 = impl.cast(sw.a, sw.b);
-  if (h0.hit && h1.hit && h0.starts_inside != h1.starts_inside) {
-    // Both answers stand when the case is within the band of touching (then
-    // t_err is not even measured); otherwise the start must be in the band.
-    const Evaluation e = evaluate(c, impl);
-    if (!e.near_boundary && !(e.t_err <= tolerances(kId).t))
-      return Failure{"symmetry-caps-swapped-start", describe(h0) + " vs " + describe(h1)};
-  }
-  return std::nullopt;
+  return caps_swapped(c, impl);
 }
-
 
 CheckResult check_metamorphic(const SegmentCylinderCase& c, int move, const CastSegmentCylinderImpl& impl) {
   if (!valid_case(c)) return std::nullopt;
@@ -200,17 +179,9 @@ CheckResult check_metamorphic(const SegmentCylinderCase& c, int move, const Cast
   // collapses to p == q): the moved case is then no longer the same solid.
   if (!valid_case(t)) return std::nullopt;
   const std::string what = std::string("metamorphic-") + move_name(move);
-  if (m.exact()) {
-    const CastHit h0 = impl.cast(c.a, c.b), h1 = impl.cast(t.a, t.b);
-    if (h0.hit != h1.hit) return Failure{what, "verdict changed: " + describe(h0) + " vs " + describe(h1)};
-    // On a cylinder thinner than the scene's rounding level (r = 0: a
-    // segment) the side normal is any perpendicular: a free choice.
-    const bool free_normal = !(c.b.r > 64 * 0x1p-52 * oracle::case_scale(c.a, c.b));
-    if (h0.hit && !(h0.t == h1.t && h0.starts_inside == h1.starts_inside && m.pt(h0.point) == h1.point &&
-                    (free_normal || m.vec(h0.normal) == h1.normal)))
-      return Failure{what, "answer not bit-identical: " + describe(h0) + " vs " + describe(h1)};
-    return std::nullopt;
-  }
+  // On a cylinder thinner than the scene's rounding level (r = 0: a
+  // segment) the side normal is any perpendicular: a free choice.
+  if (m.exact()) return exact_move_kept(what, m, c, t, impl, !(c.b.r > 64 * 0x1p-52 * oracle::case_scale(c.a, c.b)));
   if (move != 5) return same_verdict(what.c_str(), c, t, impl);
   // The rigid motion moves the solid by rigid_slack: a change of verdict is a
   // failure only when the original case is certain beyond band + slack.
@@ -243,15 +214,6 @@ CheckResult check_monotone(const SegmentCylinderCase& c, const CastSegmentCylind
   if (is_finite(far) && lost({{c.a.a, far}, c.b}))
     return Failure{"monotone-segment-length", "hit, but the segment extended to twice its length misses"};
   return std::nullopt;
-}
-
-// The spec of cast_segment_cylinder: segment cast against a cylinder: the first hit from the segment start.
-// Claims (exact verdict, depth, point in both, the normal, the truth), the
-// default campaign's cases and the known-wrong variants (teeth.cpp).
-template <>
-const QuerySpec<kId>& spec_of<kId>() {
-  static const QuerySpec<kId> spec{{true, Claims::Depth::None, true, "the cylinder's outward surface normal at the hit (zero when the segment starts inside)", "closed form (oracles/src/cast_segment_cylinder.cpp): exact hit or miss, certified t"}, 100000, {&teeth::kInfiniteCylinder, &teeth::kEricsonPrinted}};
-  return spec;
 }
 
 }  // namespace geomcheck

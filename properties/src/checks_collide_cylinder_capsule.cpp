@@ -24,6 +24,15 @@
 
 namespace geomcheck {
 
+// The spec of collide_cylinder_capsule: cylinder/capsule: exact verdict; the true depth while the capsule's segment stays outside the cylinder.
+// Claims (exact verdict, depth, point in both, the normal, the truth), the
+// default campaign's cases and the known-wrong variants (teeth.cpp).
+template <>
+const QuerySpec<QueryId::collide_cylinder_capsule>& spec_of<QueryId::collide_cylinder_capsule>() {
+  static const QuerySpec<QueryId::collide_cylinder_capsule> spec{{true, Claims::Depth::Shallow, true, "unit, from the cylinder towards the capsule", "certified engine (capsule = segment + ball): exact verdict, certified signed distance and penetration depth"}, 10000, {&teeth::kCapsuleCapsule}};
+  return spec;
+}
+
 namespace {
 
 constexpr QueryId kId = QueryId::collide_cylinder_capsule;
@@ -41,24 +50,10 @@ double scale_of(const CylinderCapsuleCase& c) {
 
 }  // namespace
 
-template <>
-const ImplOf<kId>& production_of<kId>() {
-  return production_subject<kId>();
-}
-
-
 Evaluation evaluate(const CylinderCapsuleCase& c, const CylinderCapsuleImpl& impl, const Contact* peer) {
   Evaluation e;
-  const bool ov = impl.overlap(c.a, c.b);
-  const Contact ct = impl.collide(c.a, c.b);
-  e.prod_hit = ov;
-  e.prod_text = describe(ct, ov);
-  e.valid = valid_case(c);
-  if (!e.valid) {
-    e.truth_text = "invalid input: no overlap";
-    e.disagree = ov || ct.hit;
-    return e;
-  }
+  Contact ct;
+  if (!start_evaluation(e, c, impl, ct)) return e;
   const Tolerances tol = tolerances(kId);
   e.scale = scale_of(c);
   const oracle::ConvexShape cyl = oracle::make_shape(c.a);
@@ -66,20 +61,7 @@ Evaluation evaluate(const CylinderCapsuleCase& c, const CylinderCapsuleImpl& imp
   const Q r = oracle::to_q(c.b.r);
   const Q band = times_scale(tol.verdict, e.scale);
   const CapsuleTruth truth = capsule_truth(cyl, p, q, r, band);
-  e.verdict = truth.verdict;
-  e.truth_hit = truth.verdict != oracle::Verdict::Separated;
-  e.signed_distance = nearest_to_zero(truth.signed_distance, e.scale);
-  e.truth_text = truth.text;
-  e.disagree = e.prod_hit != e.truth_hit;
-  e.near_boundary = !(truth.signed_distance.lo > band || truth.signed_distance.hi < -band);
-  if (e.disagree) {
-    e.margin = std::fabs(e.signed_distance) / e.scale;
-    e.excused = e.near_boundary;
-  }
-  // Separated: the capsule's core is outside and D - r enclosed to 1e-20 * scale.
-  if (truth.verdict == oracle::Verdict::Separated &&
-      truth.signed_distance.hi - truth.signed_distance.lo <= times_scale(1e-12, e.scale))
-    e.distance = truth.signed_distance.mid();
+  settle_verdict(e, truth, band);
   // One contact (production's or the peer's) against the truth.
   auto score = [&](const Contact& k, double& unit_err, double& depth_err, double& normal_err, double& point_err) {
     if (!k.hit || !finite_contact(k)) return;
@@ -136,48 +118,30 @@ CheckResult same_answer(const char* what, const CylinderCapsuleCase& c0, const C
 }  // namespace
 
 CheckResult check_symmetry(const CylinderCapsuleCase& c, const CylinderCapsuleImpl& impl) {
-  const bool ov = impl.overlap(c.a, c.b);
-  const Contact ct = impl.collide(c.a, c.b);
-  if (impl.overlap == production_of<kId>().overlap) {
-    const Contact sw = collide(c.b, c.a);
-    const bool sov = overlap(c.b, c.a);
-    if (sov != ov || sw.hit != ct.hit || (ct.hit && !(sw.normal == -ct.normal)))
-      return Failure{"symmetry-argument-order", describe(ct, ov) + " vs swapped " + describe(sw, sov)};
-  }
+  if (auto f = argument_order(c, impl)) return f;
   if (!valid_case(c)) return std::nullopt;
   if (auto f = same_answer("symmetry-caps-swapped", c, {{c.a.q, c.a.p, c.a.r}, c.b}, impl)) return f;
   return same_answer("symmetry-capsule-reversed", c, {c.a, {c.b.q, c.b.p, c.b.r}}, impl);
 }
 
 CheckResult check_metamorphic(const CylinderCapsuleCase& c, int move, const CylinderCapsuleImpl& impl) {
-  if (!valid_case(c)) return std::nullopt;
-  const moves::Move m{move};
-  if (!moves::applicable(c, move)) return std::nullopt;
-  const CylinderCapsuleCase t{moves::apply(m, c.a), moves::apply(m, c.b)};
-  if (!valid_case(t)) return std::nullopt;
-  const bool ov = impl.overlap(c.a, c.b), ov2 = impl.overlap(t.a, t.b);
-  const Contact ct = impl.collide(c.a, c.b), ct2 = impl.collide(t.a, t.b);
-  const std::string what = std::string("metamorphic-") + move_name(move);
-  if (m.exact()) {
-    if (ov != ov2 || ct.hit != ct2.hit) return Failure{what, "verdict changed: " + describe(ct, ov) + " vs " + describe(ct2, ov2)};
+  auto kept = [&](const CylinderCapsuleCase&, const MovedAnswers& a) -> CheckResult {
     // The normal is a free choice where the contact's radial offset is at
     // the rounding level (then any perpendicular serves): production's
     // contact point on the axis line.
     const Vec3 d = c.a.q - c.a.p;
-    const double rho = length(cross(ct.point - c.a.p, d)) / length(d);
+    const double rho = length(cross(a.ct.point - c.a.p, d)) / length(d);
     const bool free_normal = !(rho > 64 * 0x1p-52 * scale_of(c));
-    if (ct.hit && !(m.pt(ct.point) == ct2.point && (free_normal || m.vec(ct.normal) == ct2.normal) &&
-                    m.len(ct.depth) == ct2.depth)) {
-      // A deep contact's normal is the best of a few candidate directions:
-      // on a tie (a symmetric scene) either is right, and consistency holds
-      // each to depth = overlap along it. Point and depth stay bit-identical.
-      const bool same_but_normal = m.pt(ct.point) == ct2.point && m.len(ct.depth) == ct2.depth;
-      if (!(same_but_normal && std::isnan(evaluate(c, impl).depth_err)))
-        return Failure{what, "answer not bit-identical: " + describe(ct, ov) + " vs " + describe(ct2, ov2)};
-    }
-    return std::nullopt;
-  }
-  return verdict_kept(kId, what, c, t, move, moves::rigid_slack(c.a), impl, ct, ov, ct2, ov2);
+    const bool same_but_normal = a.m.pt(a.ct.point) == a.ct2.point && a.m.len(a.ct.depth) == a.ct2.depth;
+    if (same_but_normal && (free_normal || a.m.vec(a.ct.normal) == a.ct2.normal)) return std::nullopt;
+    // A deep contact's normal is the best of a few candidate directions:
+    // on a tie (a symmetric scene) either is right, and consistency holds
+    // each to depth = overlap along it. Point and depth stay bit-identical.
+    if (same_but_normal && std::isnan(evaluate(c, impl).depth_err)) return std::nullopt;
+    return a.not_identical();
+  };
+  return collide_metamorphic(
+      c, move, impl, valid_case, [](const CylinderCapsuleCase& x) { return moves::rigid_slack(x.a); }, kept);
 }
 
 CheckResult check_monotone(const CylinderCapsuleCase& c, const CylinderCapsuleImpl& impl) {
@@ -198,15 +162,6 @@ CheckResult check_monotone(const CylinderCapsuleCase& c, const CylinderCapsuleIm
   if (std::isfinite(rc) && lost({Cylinder{c.a.p, c.a.q, rc}, c.b}))
     return Failure{"monotone-cylinder-radius", fmt("overlap with cylinder radius %.17g but not with %.17g", c.a.r, rc)};
   return std::nullopt;
-}
-
-// The spec of collide_cylinder_capsule: cylinder/capsule: exact verdict; the true depth while the capsule's segment stays outside the cylinder.
-// Claims (exact verdict, depth, point in both, the normal, the truth), the
-// default campaign's cases and the known-wrong variants (teeth.cpp).
-template <>
-const QuerySpec<kId>& spec_of<kId>() {
-  static const QuerySpec<kId> spec{{true, Claims::Depth::Shallow, true, "unit, from the cylinder towards the capsule", "certified engine (capsule = segment + ball): exact verdict, certified signed distance and penetration depth"}, 10000, {&teeth::kCapsuleCapsule}};
-  return spec;
 }
 
 }  // namespace geomcheck

@@ -34,6 +34,15 @@
 
 namespace geomcheck {
 
+// The spec of collide_cylinder_cylinder: cylinder/cylinder: exact verdict; a consistent contact (depth = overlap along the normal).
+// Claims (exact verdict, depth, point in both, the normal, the truth), the
+// default campaign's cases and the known-wrong variants (teeth.cpp).
+template <>
+const QuerySpec<QueryId::collide_cylinder_cylinder>& spec_of<QueryId::collide_cylinder_cylinder>() {
+  static const QuerySpec<QueryId::collide_cylinder_cylinder> spec{{true, Claims::Depth::UpperBound, true, "unit, from the first cylinder towards the second: a consistent contact, not the minimal translation", "certified engine: exact verdict, certified signed distance, EPA penetration depth as a lower bound of the depth"}, 10000, {&teeth::kCylinderNoPlanes, &teeth::kCylinderNoParallelBranch, &teeth::kCylinderPlainFrame}};
+  return spec;
+}
+
 namespace {
 
 constexpr QueryId kId = QueryId::collide_cylinder_cylinder;
@@ -114,48 +123,20 @@ Score score_contact(const Contact& k, bool truth_hit, Verdict verdict, const ora
 
 }  // namespace
 
-template <>
-const ImplOf<kId>& production_of<kId>() {
-  return production_subject<kId>();
-}
-
-
 Evaluation evaluate(const CylinderCylinderCase& c, const CylinderCylinderImpl& impl, const Contact* peer) {
   Evaluation e;
-  const bool ov = impl.overlap(c.a, c.b);
-  const Contact ct = impl.collide(c.a, c.b);
-  e.prod_hit = ov;
-  e.prod_text = describe(ct, ov);
-  e.valid = valid_case(c);
-  if (!e.valid) {
-    e.truth_text = "invalid input: no overlap";
-    e.disagree = ov || ct.hit;
-    return e;
-  }
+  Contact ct;
+  if (!start_evaluation(e, c, impl, ct)) return e;
   e.scale = scale_of(c);
   const Tolerances tol = tolerances(kId);
   const oracle::ConvexShape sa = oracle::make_shape(c.a), sb = oracle::make_shape(c.b);
   const Q band = times_scale(tol.verdict, e.scale);
   const PolytopeTruth truth = polytope_truth(sa, sb, band);
-  e.verdict = truth.verdict;
-  e.truth_hit = truth.verdict != Verdict::Separated;
-  e.signed_distance = nearest_to_zero(truth.signed_distance, e.scale);
-  e.truth_text = truth.text;
-  e.disagree = e.prod_hit != e.truth_hit;
-  e.near_boundary = !(truth.signed_distance.lo > band || truth.signed_distance.hi < -band);
-  if (e.disagree) {
-    // The certain part of the margin: the enclosure's distance from zero.
-    // Two curved surfaces nearly parallel can leave GJK's enclosure wide
-    // (2.4e-20 to 2.5e-8 for axes 1e-12 from parallel touching to 2e-20),
-    // and its midpoint would be a guess.
-    const QInterval& sd = truth.signed_distance;
-    const Q certain = sd.lo > 0 ? sd.lo : (sd.hi < 0 ? Q(-sd.hi) : Q(0));
-    e.margin = oracle::to_double(certain) / e.scale;
-    e.excused = e.near_boundary;
-  }
-  if (truth.verdict == Verdict::Separated &&
-      truth.signed_distance.hi - truth.signed_distance.lo <= times_scale(1e-12, e.scale))
-    e.distance = truth.signed_distance.mid();
+  // The margin of a disagreement is the certain part of the enclosure, its
+  // distance from zero. Two curved surfaces nearly parallel can leave GJK's
+  // enclosure wide (2.4e-20 to 2.5e-8 for axes 1e-12 from parallel touching
+  // to 2e-20), and its midpoint would be a guess.
+  settle_verdict(e, truth, band, true);
   // The depth is not claimed minimal (see the query's header): the normal
   // has no error of its own (consistency holds the depth to the overlap
   // along it); the depth only fails below the penetration depth.
@@ -226,57 +207,47 @@ CheckResult check_symmetry(const CylinderCylinderCase& c, const CylinderCylinder
 }
 
 CheckResult check_metamorphic(const CylinderCylinderCase& c, int move, const CylinderCylinderImpl& impl) {
-  if (!valid_case(c)) return std::nullopt;
-  const moves::Move m{move};
-  if (!moves::applicable(c, move)) return std::nullopt;
-  const CylinderCylinderCase t{moves::apply(m, c.a), moves::apply(m, c.b)};
-  if (!valid_case(t)) return std::nullopt;
-  const bool ov = impl.overlap(c.a, c.b), ov2 = impl.overlap(t.a, t.b);
-  const Contact ct = impl.collide(c.a, c.b), ct2 = impl.collide(t.a, t.b);
-  const std::string what = std::string("metamorphic-") + move_name(move);
-  if (m.exact()) {
-    if (ov != ov2 || ct.hit != ct2.hit) return Failure{what, "verdict changed: " + describe(ct, ov) + " vs " + describe(ct2, ov2)};
-    if (!ct.hit) return std::nullopt;
+  auto kept = [&](const CylinderCylinderCase& t, const MovedAnswers& a) -> CheckResult {
     // A tie between candidate directions, certified: the moved normal,
     // measured exactly in the moved scene, overlaps the shapes as much as
     // the depth returned there (to the bound). Consistency holds the
     // returned normal to that depth, so both are answers.
     auto moved_normal_as_good = [&] {
       const QInterval along =
-          overlap_along(oracle::make_shape(t.a), oracle::make_shape(t.b), oracle::to_q(m.vec(ct.normal)));
+          overlap_along(oracle::make_shape(t.a), oracle::make_shape(t.b), oracle::to_q(a.m.vec(a.ct.normal)));
       return std::isfinite(oracle::to_double(along.hi)) &&
-             rel_error(along, ct2.depth, scale_of(t)) <= 2 * tolerances(kId).depth;
+             rel_error(along, a.ct2.depth, scale_of(t)) <= 2 * tolerances(kId).depth;
     };
-    if ((move == 0 || move == 1) && axes_coplanar(c) && !(m.vec(ct.normal) == ct2.normal)) {
+    if ((move == 0 || move == 1) && axes_coplanar(c) && !(a.m.vec(a.ct.normal) == a.ct2.normal)) {
       // A reflection of a scene symmetric in the plane of the two axes: the
       // normal may be the other of a mirror pair (and the depth, computed
       // along it, differ by rounding). The point does not depend on the
       // normal: still bit-identical.
-      if (!(m.pt(ct.point) == ct2.point))
-        return Failure{what, "point not bit-identical (axes in one plane): " + describe(ct, ov) + " vs " +
-                                 describe(ct2, ov2)};
-      const double d = std::fabs(m.len(ct.depth) - ct2.depth) / scale_of(c);
+      if (!(a.m.pt(a.ct.point) == a.ct2.point))
+        return Failure{a.what, "point not bit-identical (axes in one plane): " + describe(a.ct, a.ov) + " vs " +
+                                 describe(a.ct2, a.ov2)};
+      const double d = std::fabs(a.m.len(a.ct.depth) - a.ct2.depth) / scale_of(c);
       if (!(d <= 2 * tolerances(kId).depth))
-        return Failure{what + "-depth", fmt("depth differs by %.3g * scale (axes in one plane); ", d) +
-                                            describe(ct, ov) + " vs " + describe(ct2, ov2)};
-      const Vec3 w = common_plane_normal(t), n = m.vec(ct.normal);
+        return Failure{a.what + "-depth", fmt("depth differs by %.3g * scale (axes in one plane); ", d) +
+                                            describe(a.ct, a.ov) + " vs " + describe(a.ct2, a.ov2)};
+      const Vec3 w = common_plane_normal(t), n = a.m.vec(a.ct.normal);
       const Vec3 mirror = n - (2 * dot(n, w)) * w;
       // Coaxial (w = 0): every plane through the axis is a mirror; the
       // normal's axial part and its length are what is left to compare.
       const bool coaxial = max_abs(w) == 0;
       const Vec3 u = t.a.q - t.a.p;
-      const bool ok = coaxial ? std::fabs(dot(n - ct2.normal, u)) <= 64 * 0x1p-52 * length(u) &&
-                                    std::fabs(length(ct2.normal) - 1) <= tolerances(kId).unit
-                              : length(mirror - ct2.normal) <= 64 * 0x1p-52;
+      const bool ok = coaxial ? std::fabs(dot(n - a.ct2.normal, u)) <= 64 * 0x1p-52 * length(u) &&
+                                    std::fabs(length(a.ct2.normal) - 1) <= tolerances(kId).unit
+                              : length(mirror - a.ct2.normal) <= 64 * 0x1p-52;
       // Or a tie of another pair: a scene may have a second symmetry
       // (regression 0016: A a disk across B, its centre in B's mid plane to
       // rounding, so that +-A's axis overlap equally).
       if (!ok && !moved_normal_as_good())
-        return Failure{what + "-normal", "normal neither the moved one nor its mirror image (axes in one plane): " +
-                                             describe(ct, ov) + " vs " + describe(ct2, ov2)};
+        return Failure{a.what + "-normal", "normal neither the moved one nor its mirror image (axes in one plane): " +
+                                             describe(a.ct, a.ov) + " vs " + describe(a.ct2, a.ov2)};
       return std::nullopt;
     }
-    if (m.pt(ct.point) == ct2.point && m.vec(ct.normal) == ct2.normal && m.len(ct.depth) == ct2.depth)
+    if (a.m.pt(a.ct.point) == a.ct2.point && a.m.vec(a.ct.normal) == a.ct2.normal && a.m.len(a.ct.depth) == a.ct2.depth)
       return std::nullopt;
     // A tie: the normal is the best of a few candidate directions, and a
     // reflection turns the common perpendicular (a cross product) round, so
@@ -285,13 +256,13 @@ CheckResult check_metamorphic(const CylinderCylinderCase& c, int move, const Cyl
     // Accepted only with the point and the depth bit-identical and the
     // moved normal, measured exactly in the moved scene, as good as the one
     // returned there (consistency holds that one to the depth).
-    if ((move == 0 || move == 1) && m.pt(ct.point) == ct2.point && m.len(ct.depth) == ct2.depth &&
+    if ((move == 0 || move == 1) && a.m.pt(a.ct.point) == a.ct2.point && a.m.len(a.ct.depth) == a.ct2.depth &&
         moved_normal_as_good())
       return std::nullopt;
-    return Failure{what, "answer not bit-identical: " + describe(ct, ov) + " vs " + describe(ct2, ov2)};
-  }
-  const double slack = std::max(moves::rigid_slack(c.a), moves::rigid_slack(c.b));
-  return verdict_kept(kId, what, c, t, move, slack, impl, ct, ov, ct2, ov2);
+    return a.not_identical();
+  };
+  auto slack = [](const CylinderCylinderCase& x) { return std::max(moves::rigid_slack(x.a), moves::rigid_slack(x.b)); };
+  return collide_metamorphic(c, move, impl, valid_case, slack, kept);
 }
 
 CheckResult check_monotone(const CylinderCylinderCase& c, const CylinderCylinderImpl& impl) {
@@ -319,15 +290,6 @@ CheckResult check_monotone(const CylinderCylinderCase& c, const CylinderCylinder
       return Failure{std::string("monotone-length-") + name, "overlap lost when the cylinder is extended beyond p"};
   }
   return std::nullopt;
-}
-
-// The spec of collide_cylinder_cylinder: cylinder/cylinder: exact verdict; a consistent contact (depth = overlap along the normal).
-// Claims (exact verdict, depth, point in both, the normal, the truth), the
-// default campaign's cases and the known-wrong variants (teeth.cpp).
-template <>
-const QuerySpec<kId>& spec_of<kId>() {
-  static const QuerySpec<kId> spec{{true, Claims::Depth::UpperBound, true, "unit, from the first cylinder towards the second: a consistent contact, not the minimal translation", "certified engine: exact verdict, certified signed distance, EPA penetration depth as a lower bound of the depth"}, 10000, {&teeth::kCylinderNoPlanes, &teeth::kCylinderNoParallelBranch, &teeth::kCylinderPlainFrame}};
-  return spec;
 }
 
 }  // namespace geomcheck

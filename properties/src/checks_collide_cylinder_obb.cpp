@@ -25,6 +25,15 @@
 
 namespace geomcheck {
 
+// The spec of collide_cylinder_obb: cylinder/oriented box: exact verdict; the penetration depth over the Minkowski patches.
+// Claims (exact verdict, depth, point in both, the normal, the truth), the
+// default campaign's cases and the known-wrong variants (teeth.cpp).
+template <>
+const QuerySpec<QueryId::collide_cylinder_obb>& spec_of<QueryId::collide_cylinder_obb>() {
+  static const QuerySpec<QueryId::collide_cylinder_obb> spec{{true, Claims::Depth::Penetration, true, "unit, from the cylinder towards the box: the minimal translation", "certified engine: exact verdict, certified signed distance, EPA penetration depth enclosure"}, 10000, {&teeth::kBoxAsCapsule, &teeth::kBoxTalkRays}};
+  return spec;
+}
+
 namespace {
 
 constexpr QueryId kId = QueryId::collide_cylinder_obb;
@@ -71,24 +80,10 @@ bool obb_in_contract(const Obb& b) {
   return true;
 }
 
-template <>
-const ImplOf<kId>& production_of<kId>() {
-  return production_subject<kId>();
-}
-
-
 Evaluation evaluate(const CylinderObbCase& c, const CylinderObbImpl& impl, const Contact* peer) {
   Evaluation e;
-  const bool ov = impl.overlap(c.a, c.b);
-  const Contact ct = impl.collide(c.a, c.b);
-  e.prod_hit = ov;
-  e.prod_text = describe(ct, ov);
-  e.valid = valid_case(c);
-  if (!e.valid) {
-    e.truth_text = "invalid input: no overlap";
-    e.disagree = ov || ct.hit;
-    return e;
-  }
+  Contact ct;
+  if (!start_evaluation(e, c, impl, ct)) return e;
   e.scale = scale_of(c);
   if (!obb_in_contract(c.b)) {
     // Outside production's contract: no verdict is owed (robust checks only).
@@ -100,19 +95,7 @@ Evaluation evaluate(const CylinderObbCase& c, const CylinderObbImpl& impl, const
   const oracle::ConvexShape cyl = oracle::make_shape(c.a), box = oracle::make_shape(c.b);
   const Q band = times_scale(tol.verdict, e.scale);
   const PolytopeTruth truth = polytope_truth(cyl, box, band);
-  e.verdict = truth.verdict;
-  e.truth_hit = truth.verdict != Verdict::Separated;
-  e.signed_distance = nearest_to_zero(truth.signed_distance, e.scale);
-  e.truth_text = truth.text;
-  e.disagree = e.prod_hit != e.truth_hit;
-  e.near_boundary = !(truth.signed_distance.lo > band || truth.signed_distance.hi < -band);
-  if (e.disagree) {
-    e.margin = std::fabs(e.signed_distance) / e.scale;
-    e.excused = e.near_boundary;
-  }
-  if (truth.verdict == Verdict::Separated &&
-      truth.signed_distance.hi - truth.signed_distance.lo <= times_scale(1e-12, e.scale))
-    e.distance = truth.signed_distance.mid();
+  settle_verdict(e, truth, band);
   // Production's contact and the peer's against the same truth (EPA once).
   const oracle::QCylinder qcyl = oracle::to_q(c.a);
   const std::function<Q(Vec3)> outside_b = [&](Vec3 x) { return oracle::contains(box, oracle::to_q(x)) ? Q(0) : box_distance_up(c.b, x); };
@@ -137,14 +120,7 @@ CheckResult same_answer(const char* what, const CylinderObbCase& c0, const Cylin
 }  // namespace
 
 CheckResult check_symmetry(const CylinderObbCase& c, const CylinderObbImpl& impl) {
-  const bool ov = impl.overlap(c.a, c.b);
-  const Contact ct = impl.collide(c.a, c.b);
-  if (impl.overlap == production_of<kId>().overlap) {
-    const Contact sw = collide(c.b, c.a);
-    const bool sov = overlap(c.b, c.a);
-    if (sov != ov || sw.hit != ct.hit || (ct.hit && !(sw.normal == -ct.normal)))
-      return Failure{"symmetry-argument-order", describe(ct, ov) + " vs swapped " + describe(sw, sov)};
-  }
+  if (auto f = argument_order(c, impl)) return f;
   if (!valid_case(c) || !obb_in_contract(c.b)) return std::nullopt;
   if (auto f = same_answer("symmetry-caps-swapped", c, {{c.a.q, c.a.p, c.a.r}, c.b}, impl)) return f;
   // The same box with its axes cycled (extents with them), and with one
@@ -157,21 +133,9 @@ CheckResult check_symmetry(const CylinderObbCase& c, const CylinderObbImpl& impl
 }
 
 CheckResult check_metamorphic(const CylinderObbCase& c, int move, const CylinderObbImpl& impl) {
-  if (!valid_case(c) || !obb_in_contract(c.b)) return std::nullopt;
-  const moves::Move m{move};
-  if (!moves::applicable(c, move)) return std::nullopt;
-  const CylinderObbCase t{moves::apply(m, c.a), moves::apply(m, c.b)};
-  if (!valid_case(t) || !obb_in_contract(t.b)) return std::nullopt;
-  const bool ov = impl.overlap(c.a, c.b), ov2 = impl.overlap(t.a, t.b);
-  const Contact ct = impl.collide(c.a, c.b), ct2 = impl.collide(t.a, t.b);
-  const std::string what = std::string("metamorphic-") + move_name(move);
-  if (m.exact()) {
-    if (ov != ov2 || ct.hit != ct2.hit) return Failure{what, "verdict changed: " + describe(ct, ov) + " vs " + describe(ct2, ov2)};
-    if (ct.hit && !(m.pt(ct.point) == ct2.point && m.vec(ct.normal) == ct2.normal && m.len(ct.depth) == ct2.depth))
-      return Failure{what, "answer not bit-identical: " + describe(ct, ov) + " vs " + describe(ct2, ov2)};
-    return std::nullopt;
-  }
-  return verdict_kept(kId, what, c, t, move, moves::rigid_slack(c.a), impl, ct, ov, ct2, ov2);
+  return collide_metamorphic(
+      c, move, impl, [](const CylinderObbCase& x) { return valid_case(x) && obb_in_contract(x.b); },
+      [](const CylinderObbCase& x) { return moves::rigid_slack(x.a); }, bit_identical<CylinderObbCase>);
 }
 
 CheckResult check_monotone(const CylinderObbCase& c, const CylinderObbImpl& impl) {
@@ -197,15 +161,6 @@ CheckResult check_monotone(const CylinderObbCase& c, const CylinderObbImpl& impl
   if (is_finite(q2) && d + c.a.p == c.a.q && q2 - c.a.q == d && lost({Cylinder{c.a.p, q2, c.a.r}, c.b}))
     return Failure{"monotone-cylinder-length", "overlap lost when the cylinder is extended beyond q"};
   return std::nullopt;
-}
-
-// The spec of collide_cylinder_obb: cylinder/oriented box: exact verdict; the penetration depth over the Minkowski patches.
-// Claims (exact verdict, depth, point in both, the normal, the truth), the
-// default campaign's cases and the known-wrong variants (teeth.cpp).
-template <>
-const QuerySpec<kId>& spec_of<kId>() {
-  static const QuerySpec<kId> spec{{true, Claims::Depth::Penetration, true, "unit, from the cylinder towards the box: the minimal translation", "certified engine: exact verdict, certified signed distance, EPA penetration depth enclosure"}, 10000, {&teeth::kBoxAsCapsule, &teeth::kBoxTalkRays}};
-  return spec;
 }
 
 }  // namespace geomcheck

@@ -26,6 +26,15 @@
 
 namespace geomcheck {
 
+// The spec of collide_cylinder_sphere: cylinder/sphere: overlap and collide with the true penetration depth.
+// Claims (exact verdict, depth, point in both, the normal, the truth), the
+// default campaign's cases and the known-wrong variants (teeth.cpp).
+template <>
+const QuerySpec<QueryId::collide_cylinder_sphere>& spec_of<QueryId::collide_cylinder_sphere>() {
+  static const QuerySpec<QueryId::collide_cylinder_sphere> spec{{true, Claims::Depth::Penetration, true, "unit, from the cylinder towards the sphere: the minimal translation", "closed form (oracles/src/cylinder_sphere.cpp): exact verdict, certified signed distance"}, 100000, {&teeth::kCapsuleForCylinder}};
+  return spec;
+}
+
 namespace {
 
 constexpr QueryId kId = QueryId::collide_cylinder_sphere;
@@ -34,24 +43,10 @@ bool sphere_valid_case(const CylinderSphereCase& c) { return is_valid(c.a) && is
 
 }  // namespace
 
-template <>
-const ImplOf<kId>& production_of<kId>() {
-  return production_subject<kId>();
-}
-
-
 Evaluation evaluate(const CylinderSphereCase& c, const CylinderSphereImpl& impl, const Contact* peer) {
   Evaluation e;
-  const bool ov = impl.overlap(c.a, c.b);
-  const Contact ct = impl.collide(c.a, c.b);
-  e.prod_hit = ov;
-  e.prod_text = describe(ct, ov);
-  e.valid = sphere_valid_case(c);
-  if (!e.valid) {
-    e.truth_text = "invalid input: no overlap";
-    e.disagree = ov || ct.hit;
-    return e;
-  }
+  Contact ct;
+  if (!start_evaluation(e, c, impl, ct)) return e;
   const Tolerances tol = tolerances(kId);
   e.scale = oracle::case_scale(c.a, c.b);
   const oracle::QCylinder qa = oracle::to_q(c.a);
@@ -119,17 +114,9 @@ CheckResult check_consistency(const CylinderSphereCase& c, const CylinderSphereI
 }
 
 CheckResult check_symmetry(const CylinderSphereCase& c, const CylinderSphereImpl& impl) {
+  if (auto f = argument_order(c, impl)) return f;
   const bool ov = impl.overlap(c.a, c.b);
   const Contact ct = impl.collide(c.a, c.b);
-  // Argument order: (Sphere, Cylinder) is production's wrapper, so this
-  // property holds production's two entry points to each other; a variant
-  // under test has no swapped entry point and is not checked here.
-  if (impl.overlap == production_of<kId>().overlap) {
-    const Contact sw = collide(c.b, c.a);
-    const bool sov = overlap(c.b, c.a);
-    if (sov != ov || sw.hit != ct.hit || (ct.hit && !(sw.normal == -ct.normal)))
-      return Failure{"symmetry-argument-order", describe(ct, ov) + " vs swapped " + describe(sw, sov)};
-  }
   // Same solid, caps swapped.
   const CylinderSphereCase s{{c.a.q, c.a.p, c.a.r}, c.b};
   const bool ov2 = impl.overlap(s.a, s.b);
@@ -151,34 +138,23 @@ CheckResult check_symmetry(const CylinderSphereCase& c, const CylinderSphereImpl
   return std::nullopt;
 }
 
-
 CheckResult check_metamorphic(const CylinderSphereCase& c, int move, const CylinderSphereImpl& impl) {
-  if (!sphere_valid_case(c)) return std::nullopt;
-  const moves::Move m{move};
-  if (!moves::applicable(c, move)) return std::nullopt;
-  const CylinderSphereCase t{moves::apply(m, c.a), moves::apply(m, c.b)};
-  // A rounded move can destroy a degenerate shape (an axis one ulp long
-  // collapses to p == q): the moved case is then no longer the same solid.
-  if (!sphere_valid_case(t)) return std::nullopt;
-  const bool ov = impl.overlap(c.a, c.b), ov2 = impl.overlap(t.a, t.b);
-  const Contact ct = impl.collide(c.a, c.b), ct2 = impl.collide(t.a, t.b);
-  const std::string what = std::string("metamorphic-") + move_name(move);
-  if (m.exact()) {
-    if (ov != ov2 || ct.hit != ct2.hit) return Failure{what, "verdict changed: " + describe(ct, ov) + " vs " + describe(ct2, ov2)};
-    // On the axis the side normal is any perpendicular (a free choice), so
-    // only there the normal may differ.
-    // Production treats a radial offset at the rounding level of the case as
-    // no direction (then any perpendicular is a minimal-translation normal,
-    // and check_oracle holds it to that); use the same notion here.
+  // On the axis the side normal is any perpendicular (a free choice), so
+  // only there the normal may differ. Production treats a radial offset at
+  // the rounding level of the case as no direction (then any perpendicular
+  // is a minimal-translation normal, and check_oracle holds it to that); the
+  // same notion here.
+  auto kept = [&](const CylinderSphereCase&, const MovedAnswers& a) -> CheckResult {
     const Vec3 d = c.a.q - c.a.p;
     const double rho = length(cross(c.b.c - c.a.p, d)) / length(d);
     const bool free_normal = !(rho > 64 * 0x1p-52 * oracle::case_scale(c.a, c.b));
-    if (ct.hit && !(m.pt(ct.point) == ct2.point && (free_normal || m.vec(ct.normal) == ct2.normal) &&
-                    m.len(ct.depth) == ct2.depth))
-      return Failure{what, "answer not bit-identical: " + describe(ct, ov) + " vs " + describe(ct2, ov2)};
-    return std::nullopt;
-  }
-  return verdict_kept(kId, what, c, t, move, moves::rigid_slack(c.a), impl, ct, ov, ct2, ov2);
+    if (a.m.pt(a.ct.point) == a.ct2.point && (free_normal || a.m.vec(a.ct.normal) == a.ct2.normal) &&
+        a.m.len(a.ct.depth) == a.ct2.depth)
+      return std::nullopt;
+    return a.not_identical();
+  };
+  return collide_metamorphic(
+      c, move, impl, sphere_valid_case, [](const CylinderSphereCase& x) { return moves::rigid_slack(x.a); }, kept);
 }
 
 CheckResult check_monotone(const CylinderSphereCase& c, const CylinderSphereImpl& impl) {
@@ -193,15 +169,6 @@ CheckResult check_monotone(const CylinderSphereCase& c, const CylinderSphereImpl
   if (std::isfinite(rc) && !impl.overlap(Cylinder{c.a.p, c.a.q, rc}, c.b))
     return Failure{"monotone-cylinder-radius", fmt("overlap with cylinder radius %.17g but not with %.17g", c.a.r, rc)};
   return std::nullopt;
-}
-
-// The spec of collide_cylinder_sphere: cylinder/sphere: overlap and collide with the true penetration depth.
-// Claims (exact verdict, depth, point in both, the normal, the truth), the
-// default campaign's cases and the known-wrong variants (teeth.cpp).
-template <>
-const QuerySpec<kId>& spec_of<kId>() {
-  static const QuerySpec<kId> spec{{true, Claims::Depth::Penetration, true, "unit, from the cylinder towards the sphere: the minimal translation", "closed form (oracles/src/cylinder_sphere.cpp): exact verdict, certified signed distance"}, 100000, {&teeth::kCapsuleForCylinder}};
-  return spec;
 }
 
 }  // namespace geomcheck

@@ -27,8 +27,18 @@
 #include "geomcheck/properties/tolerances.hpp"
 #include "geomcheck/sweep_sphere_cylinder.hpp"
 #include "moves.hpp"
+#include "moving_checks.hpp"
 
 namespace geomcheck {
+
+// The spec of sweep_sphere_cylinder: a moving sphere swept against a cylinder: the first time of contact.
+// Claims (exact verdict, depth, point in both, the normal, the truth), the
+// default campaign's cases and the known-wrong variants (teeth.cpp).
+template <>
+const QuerySpec<QueryId::sweep_sphere_cylinder>& spec_of<QueryId::sweep_sphere_cylinder>() {
+  static const QuerySpec<QueryId::sweep_sphere_cylinder> spec{{true, Claims::Depth::None, true, "the cylinder's outward surface normal at the contact (zero when the ball starts inside)", "certified engine: the swept ball (a capsule) against the cylinder; t bracketed"}, 10000, {&teeth::kSweepNoCornerStage, &teeth::kSweepTalkRimPoint}};
+  return spec;
+}
 
 namespace {
 
@@ -66,12 +76,6 @@ bool path_meets(const SweepCylinderCase& c, double t, const Q& dr) {
 }
 
 }  // namespace
-
-template <>
-const ImplOf<kId>& production_of<kId>() {
-  return production_subject<kId>();
-}
-
 
 Evaluation evaluate(const SweepCylinderCase& c, const SweepSphereCylinderImpl& impl, const double* peer_t) {
   Evaluation e;
@@ -205,28 +209,9 @@ CheckResult check_consistency(const SweepCylinderCase& c, const SweepSphereCylin
   return std::nullopt;
 }
 
-namespace {
-CheckResult same_verdict(const char* what, const SweepCylinderCase& c0, const SweepCylinderCase& c1,
-                         const SweepSphereCylinderImpl& impl) {
-  const CastHit h0 = impl.sweep(c0.a, c0.b), h1 = impl.sweep(c1.a, c1.b);
-  if (h0.hit == h1.hit) return std::nullopt;
-  const Evaluation e0 = evaluate(c0, impl), e1 = evaluate(c1, impl);
-  if (e0.near_boundary || e1.near_boundary) return std::nullopt;
-  return Failure{what, describe(h0) + " vs " + describe(h1) + "; oracle: " + e0.truth_text + " / " + e1.truth_text};
-}
-}  // namespace
-
 CheckResult check_symmetry(const SweepCylinderCase& c, const SweepSphereCylinderImpl& impl) {
   if (!valid_case(c)) return std::nullopt;
-  const SweepCylinderCase sw{c.a, {c.b.q, c.b.p, c.b.r}};
-  if (auto f = same_verdict("symmetry-caps-swapped", c, sw, impl)) return f;
-  const CastHit h0 = impl.sweep(c.a, c.b), h1 = impl.sweep(sw.a, sw.b);
-  if (h0.hit && h1.hit && h0.starts_inside != h1.starts_inside) {
-    const Evaluation e = evaluate(c, impl);
-    if (!e.near_boundary && !(e.t_err <= tolerances(kId).t))
-      return Failure{"symmetry-caps-swapped-start", describe(h0) + " vs " + describe(h1)};
-  }
-  return std::nullopt;
+  return caps_swapped(c, impl);
 }
 
 CheckResult check_metamorphic(const SweepCylinderCase& c, int move, const SweepSphereCylinderImpl& impl) {
@@ -236,15 +221,7 @@ CheckResult check_metamorphic(const SweepCylinderCase& c, int move, const SweepS
   const SweepCylinderCase t{moves::apply(m, c.a), moves::apply(m, c.b)};
   if (!valid_case(t)) return std::nullopt;
   const std::string what = std::string("metamorphic-") + move_name(move);
-  if (m.exact()) {
-    const CastHit h0 = impl.sweep(c.a, c.b), h1 = impl.sweep(t.a, t.b);
-    if (h0.hit != h1.hit) return Failure{what, "verdict changed: " + describe(h0) + " vs " + describe(h1)};
-    const bool free_normal = !(c.b.r > 64 * 0x1p-52 * scale_of(c));
-    if (h0.hit && !(h0.t == h1.t && h0.starts_inside == h1.starts_inside && m.pt(h0.point) == h1.point &&
-                    (free_normal || m.vec(h0.normal) == h1.normal)))
-      return Failure{what, "answer not bit-identical: " + describe(h0) + " vs " + describe(h1)};
-    return std::nullopt;
-  }
+  if (m.exact()) return exact_move_kept(what, m, c, t, impl, !(c.b.r > 64 * 0x1p-52 * scale_of(c)));
   if (move != 5) return same_verdict(what.c_str(), c, t, impl);
   const CastHit h0 = impl.sweep(c.a, c.b), h1 = impl.sweep(t.a, t.b);
   if (h0.hit == h1.hit) return std::nullopt;
@@ -270,15 +247,6 @@ CheckResult check_monotone(const SweepCylinderCase& c, const SweepSphereCylinder
   if (is_valid(longer) && lost({longer, c.b}))
     return Failure{"monotone-sweep-length", "hit, but the sweep extended to twice its length misses"};
   return std::nullopt;
-}
-
-// The spec of sweep_sphere_cylinder: a moving sphere swept against a cylinder: the first time of contact.
-// Claims (exact verdict, depth, point in both, the normal, the truth), the
-// default campaign's cases and the known-wrong variants (teeth.cpp).
-template <>
-const QuerySpec<kId>& spec_of<kId>() {
-  static const QuerySpec<kId> spec{{true, Claims::Depth::None, true, "the cylinder's outward surface normal at the contact (zero when the ball starts inside)", "certified engine: the swept ball (a capsule) against the cylinder; t bracketed"}, 10000, {&teeth::kSweepNoCornerStage, &teeth::kSweepTalkRimPoint}};
-  return spec;
 }
 
 }  // namespace geomcheck

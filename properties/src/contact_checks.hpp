@@ -12,8 +12,55 @@
 #include "common.hpp"
 #include "geomcheck/properties/checks.hpp"
 #include "geomcheck/properties/tolerances.hpp"
+#include "moves.hpp"
 
 namespace geomcheck {
+
+/// The start of a collide query's evaluate: the subject's overlap and
+/// contact into `e` and `ct`; false, with `e` complete, on invalid input
+/// (where the only truth is "no overlap").
+template <class Case, class Impl>
+bool start_evaluation(Evaluation& e, const Case& c, const Impl& impl, Contact& ct) {
+  const bool ov = impl.overlap(c.a, c.b);
+  ct = impl.collide(c.a, c.b);
+  e.prod_hit = ov;
+  e.prod_text = describe(ct, ov);
+  e.valid = is_valid(c.a) && is_valid(c.b);
+  if (!e.valid) {
+    e.truth_text = "invalid input: no overlap";
+    e.disagree = ov || ct.hit;
+  }
+  return e.valid;
+}
+
+/// The engine's verdict into `e` (e.scale set): the verdict, the reported
+/// signed distance (nearest_to_zero), the disagreement and whether it lies
+/// within `band` of touching, its margin (|reported distance| / scale, or
+/// with `certain_margin` only the part of the enclosure certainly on one
+/// side of zero), and the certified distance where separated and enclosed
+/// within 1e-12 * scale.
+template <class Truth>
+void settle_verdict(Evaluation& e, const Truth& truth, const oracle::Q& band, bool certain_margin = false) {
+  e.verdict = truth.verdict;
+  e.truth_hit = truth.verdict != oracle::Verdict::Separated;
+  e.signed_distance = nearest_to_zero(truth.signed_distance, e.scale);
+  e.truth_text = truth.text;
+  e.disagree = e.prod_hit != e.truth_hit;
+  e.near_boundary = !(truth.signed_distance.lo > band || truth.signed_distance.hi < -band);
+  if (e.disagree) {
+    if (certain_margin) {
+      const oracle::QInterval& sd = truth.signed_distance;
+      const oracle::Q certain = sd.lo > 0 ? sd.lo : (sd.hi < 0 ? oracle::Q(-sd.hi) : oracle::Q(0));
+      e.margin = oracle::to_double(certain) / e.scale;
+    } else {
+      e.margin = std::fabs(e.signed_distance) / e.scale;
+    }
+    e.excused = e.near_boundary;
+  }
+  if (truth.verdict == oracle::Verdict::Separated &&
+      truth.signed_distance.hi - truth.signed_distance.lo <= times_scale(1e-12, e.scale))
+    e.distance = truth.signed_distance.mid();
+}
 
 /// The body of check_consistency: overlap agrees with collide's hit; a hit
 /// is finite, its normal unit (the query's `unit` bound) and its depth >= 0;
@@ -85,6 +132,67 @@ CheckResult verdict_kept(QueryId id, const std::string& what, const Case& c, con
   if (!near(e0) && !near(e1))
     return Failure{what, "verdict changed outside the band: " + describe(ct, ov) + " vs " + describe(ct2, ov2)};
   return std::nullopt;
+}
+
+/// (A, B) and (B, A) agree and the normal flips: production's two entry
+/// points held to each other ((B, A) is production's wrapper; a subject
+/// other than production has no swapped entry point and is not checked).
+template <class Case, class Impl>
+CheckResult argument_order(const Case& c, const Impl& impl) {
+  if (impl.overlap != production_of<query_of_case<Case>>().overlap) return std::nullopt;
+  const bool ov = impl.overlap(c.a, c.b);
+  const Contact ct = impl.collide(c.a, c.b);
+  const Contact sw = collide(c.b, c.a);
+  const bool sov = overlap(c.b, c.a);
+  if (sov != ov || sw.hit != ct.hit || (ct.hit && !(sw.normal == -ct.normal)))
+    return Failure{"symmetry-argument-order", describe(ct, ov) + " vs swapped " + describe(sw, sov)};
+  return std::nullopt;
+}
+
+/// The answers of a case and its moved copy, for a rule that judges them.
+struct MovedAnswers {
+  const moves::Move& m;
+  const std::string& what;  ///< the property's name
+  const Contact &ct, &ct2;  ///< before and after the move (both hits)
+  bool ov, ov2;
+  /// The moved point, normal and depth, bit for bit.
+  bool identical() const { return m.pt(ct.point) == ct2.point && m.vec(ct.normal) == ct2.normal && m.len(ct.depth) == ct2.depth; }
+  Failure not_identical() const { return {what, "answer not bit-identical: " + describe(ct, ov) + " vs " + describe(ct2, ov2)}; }
+};
+
+/// check_metamorphic of a collide query, written once. A move that does not
+/// apply is skipped, and so is a moved case outside `in_contract` (a rounded
+/// move can destroy a degenerate shape: an axis one ulp long collapses to
+/// p == q, no longer the same solid). An exact move (sign flips,
+/// power-of-two scales, axis permutations of an exact scene) keeps the
+/// verdict, and `kept(t, answers)` judges the two hits by the query's rule
+/// (bit-identical, or another answer where a tie or a free normal allows
+/// one); a rounded move keeps the verdict outside the band, the rigid motion
+/// with `rigid_slack(c)` * scale more.
+template <class Case, class Impl, class InContract, class Slack, class Kept>
+CheckResult collide_metamorphic(const Case& c, int move, const Impl& impl, InContract in_contract, Slack rigid_slack,
+                                Kept kept) {
+  if (!in_contract(c)) return std::nullopt;
+  const moves::Move m{move};
+  if (!moves::applicable(c, move)) return std::nullopt;
+  const Case t{moves::apply(m, c.a), moves::apply(m, c.b)};
+  if (!in_contract(t)) return std::nullopt;
+  const bool ov = impl.overlap(c.a, c.b), ov2 = impl.overlap(t.a, t.b);
+  const Contact ct = impl.collide(c.a, c.b), ct2 = impl.collide(t.a, t.b);
+  const std::string what = std::string("metamorphic-") + move_name(move);
+  if (m.exact()) {
+    if (ov != ov2 || ct.hit != ct2.hit) return Failure{what, "verdict changed: " + describe(ct, ov) + " vs " + describe(ct2, ov2)};
+    if (!ct.hit) return std::nullopt;
+    return kept(t, MovedAnswers{m, what, ct, ct2, ov, ov2});
+  }
+  return verdict_kept(query_of_case<Case>, what, c, t, move, rigid_slack(c), impl, ct, ov, ct2, ov2);
+}
+
+/// The rule of most queries: an exact move moves the answer bit for bit.
+template <class Case>
+CheckResult bit_identical(const Case&, const MovedAnswers& a) {
+  if (a.identical()) return std::nullopt;
+  return a.not_identical();
 }
 
 }  // namespace geomcheck

@@ -1,9 +1,9 @@
 // geomcheck — the single registry of query ids.
 //
-// One line per query in GEOMCHECK_QUERY_LIST. Everything generic (case files,
-// replay, campaigns, reports, fuzz target names, corpus folders) derives from
-// this list, so adding a pair is: write the query file, add its line here,
-// then give it an oracle adapter and a check function.
+// One line per query in GEOMCHECK_QUERY_LIST, and its header included below.
+// Everything generic (case files, replay, campaigns, reports, fuzz targets,
+// corpus folders, the build's target lists) derives from this list; adding a
+// query is the checklist of docs/ARCHITECTURE.md.
 //
 //   X(id, kind, ShapeA, ShapeB, summary)
 //
@@ -33,6 +33,16 @@
     "overlap/collide(Cylinder, Triangle): exact verdict; penetration depth over the Minkowski patches") \
   X(collide_cylinder_cylinder, Collide, Cylinder, Cylinder,                              \
     "overlap/collide(Cylinder, Cylinder): exact verdict; consistent contact (depth = overlap along the normal, an upper bound)")
+
+// Production's entry points of every registered query, so that generic code
+// can call them by the shapes' types (production_of<Q>, checks.hpp).
+#include "geomcheck/cast_segment_cylinder.hpp"
+#include "geomcheck/collide_cylinder_capsule.hpp"
+#include "geomcheck/collide_cylinder_cylinder.hpp"
+#include "geomcheck/collide_cylinder_obb.hpp"
+#include "geomcheck/collide_cylinder_sphere.hpp"
+#include "geomcheck/collide_cylinder_triangle.hpp"
+#include "geomcheck/sweep_sphere_cylinder.hpp"
 
 namespace geomcheck {
 

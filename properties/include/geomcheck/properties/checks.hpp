@@ -63,17 +63,11 @@ using CylinderTriangleImpl = ImplOf<QueryId::collide_cylinder_triangle>;
 using CylinderCylinderImpl = ImplOf<QueryId::collide_cylinder_cylinder>;
 
 
-/// Production's subject of query Q (defined in properties/src/checks_<id>.cpp).
-template <QueryId Q> const ImplOf<Q>& production_of();
-#define GEOMCHECK_X(id, kind, A, B, summary) template <> const ImplOf<QueryId::id>& production_of<QueryId::id>();
-GEOMCHECK_QUERY_LIST(GEOMCHECK_X)
-#undef GEOMCHECK_X
-
-/// Production's subject of Q made from its entry points in core/ (overlap and
-/// collide, cast, or sweep, found by the shapes' types): what production_of<Q>
-/// returns. Instantiated where the query's core header is included.
+/// Production's subject of query Q, made from its entry points in core/
+/// (overlap and collide, cast, or sweep, found by the shapes' types; every
+/// query's header comes with registry.hpp).
 template <QueryId Q>
-const ImplOf<Q>& production_subject() {
+const ImplOf<Q>& production_of() {
   using A = typename QueryTraits<Q>::ShapeA;
   using B = typename QueryTraits<Q>::ShapeB;
   if constexpr (QueryTraits<Q>::kind == QueryKind::Collide) {
