@@ -318,6 +318,15 @@ int run_campaign(const CampaignOptions& opt) {
     }
     reps.push_back(QueryRun<Q>(opt, out_dir).run(threads));
   });
+  // The point-set family (not with a variant: those are pair subjects).
+  std::vector<report::PointSetReport> point_sets;
+  const auto wanted = [&](const char* name) {
+    return opt.queries.empty() || std::find(opt.queries.begin(), opt.queries.end(), name) != opt.queries.end();
+  };
+#define GEOMCHECK_X(id, summary) \
+  if (opt.variant.empty() && wanted(#id)) point_sets.push_back(run_##id(opt, out_dir, threads));
+  GEOMCHECK_POINTSET_QUERY_LIST(GEOMCHECK_X)
+#undef GEOMCHECK_X
 
   report::RunInfo run;
   run.seed = opt.seed;
@@ -327,10 +336,11 @@ int run_campaign(const CampaignOptions& opt) {
   for (const auto& q : opt.queries) run.rerun += " --query " + q;
   if (!opt.variant.empty()) run.rerun += " --variant " + opt.variant;
   run.under_test = opt.variant.empty() ? "production" : opt.variant + " (a known-wrong variant)";
-  report::write_json(out_dir / "report.json", run, reps);
-  report::write_html(out_dir / "report.html", run, reps);
+  report::write_json(out_dir / "report.json", run, reps, point_sets);
+  report::write_html(out_dir / "report.html", run, reps, point_sets);
   int beyond = 0;
   for (const QueryReport& r : reps) beyond += r.beyond + r.check_failures;
+  for (const report::PointSetReport& r : point_sets) beyond += r.failures;
   std::fprintf(stderr, "[campaign] wrote %s and %s\n", (out_dir / "report.json").string().c_str(),
                (out_dir / "report.html").string().c_str());
   return beyond;

@@ -8,7 +8,10 @@
 #include <utility>
 #include <vector>
 
+#include <filesystem>
+
 #include "geomcheck/registry.hpp"
+#include "geomcheck/reports/report.hpp"
 
 namespace geomcheck {
 
@@ -31,6 +34,11 @@ std::vector<std::pair<std::string, std::string>> campaign_variants();
 /// Cases run for query `id`: opt.cases when given, else its spec's
 /// default_cases.
 int campaign_cases(const CampaignOptions& opt, QueryId id);
+
+/// Point sets of a default campaign of delaunay_2d.
+inline constexpr int kDelaunayDefaultSets = 10000;
+/// delaunay_2d's part of a campaign (tools/campaign_pointset.cpp).
+report::PointSetReport run_delaunay_2d(const CampaignOptions& opt, const std::filesystem::path& out_dir, int threads);
 
 /// Runs the campaign; returns the number of disagreements beyond the band
 /// (0 = production verified on every case run).

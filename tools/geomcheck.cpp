@@ -50,7 +50,8 @@ const char* kUsage =
     "  from-rapidcheck QUERY TEXT_FILE|- [-o OUT.case]\n"
     "        Turns a RapidCheck counterexample (its printed text) into a case file.\n"
     "  queries\n"
-    "        Lists the registered query ids.\n"
+    "        Lists the registered queries: id, family (a pair of shapes, or a point\n"
+    "        set), what production answers.\n"
     "\n"
     "Case files: corpora/seeds/<query>/ and corpora/regressions/<query>/ (format: corpora/README.md).\n";
 
@@ -66,12 +67,18 @@ std::string shapes_text(const CaseFile& f) {
   return o.str();
 }
 
-// True when the file is a point-set file (query delaunay_2d).
-bool is_point_set_file(const fs::path& path) {
+// The query a case file declares in its header (`query NAME`, among the
+// first lines), without reading further: it decides the file's family and
+// so its parser. Empty when the header names none (the parser then says why).
+std::string declared_query(const fs::path& path) {
   std::ifstream in(path, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return is_point_set_text(text.str());
+  std::string line;
+  for (int n = 0; n < 16 && std::getline(in, line); ++n) {
+    std::istringstream words(line);
+    std::string key, name;
+    if (words >> key && key == "query") return words >> name ? name : "";  // the first query line decides
+  }
+  return "";
 }
 
 // Replays one point-set file: it parses, its filed verdict is the kind of
@@ -120,7 +127,7 @@ bool replay_point_set(const fs::path& path, bool quiet) {
 
 // Replays one case; returns true when every check passes.
 bool replay_one(const fs::path& path, bool quiet) {
-  if (is_point_set_file(path)) return replay_point_set(path, quiet);
+  if (family_of(declared_query(path)) == QueryFamily::PointSet) return replay_point_set(path, quiet);
   const ParseResult pr = load_case(path);
   if (!pr.ok()) {
     std::printf("%s\n  ERROR %s\n", path.string().c_str(), pr.error.c_str());
@@ -293,7 +300,15 @@ int cmd_campaign(const std::vector<std::string>& args) {
       else if (a == "--seed") opt.seed = std::stoull(num(i));
       else if (a == "--threads") opt.threads = std::stoi(num(i));
       else if (a == "--out") opt.out = num(i);
-      else if (a == "--query") opt.queries.push_back(info(need_query(num(i))).name);
+      else if (a == "--query") {
+        const std::string q = num(i);
+        if (!family_of(q)) {
+          std::string known;
+          for (const auto& k : kAllQueries) known += std::string(" ") + k.name;
+          usage_error("campaign: unknown query '" + q + "'; known:" + known);
+        }
+        opt.queries.push_back(q);
+      }
       else if (a == "--no-progress") opt.progress = false;
       else if (a == "--variant") {
         opt.variant = num(i);
@@ -338,7 +353,8 @@ int main(int argc, char** argv) {
   if (cmd == "from-fuzz") return cmd_convert(true, args);
   if (cmd == "from-rapidcheck") return cmd_convert(false, args);
   if (cmd == "queries") {
-    for (const auto& q : kQueries) std::printf("%-26s %s\n", q.name, q.summary);
+    for (const auto& q : kAllQueries)
+      std::printf("%-26s %-9s %s\n", q.name, q.family == QueryFamily::Pair ? "pair" : "point-set", q.summary);
     return 0;
   }
   usage_error("unknown command '" + cmd + "'");

@@ -169,6 +169,60 @@ void write_query_section(std::ostream& h, QueryReport& r) {
   }
 }
 
+std::string json_counts(const std::map<std::string, int>& m) {
+  std::string o = "{";
+  for (const auto& [k, v] : m) o += (o.size() > 1 ? ", " : "") + jstr(k) + ": " + std::to_string(v);
+  return o + "}";
+}
+
+// The point-set queries, after the pair queries (absent when none ran).
+void write_point_sets_json(std::ostream& js, const std::vector<PointSetReport>& point_sets) {
+  if (point_sets.empty()) return;
+  js << ",\n  \"point_set_queries\": [\n";
+  for (std::size_t i = 0; i < point_sets.size(); ++i) {
+    const PointSetReport& r = point_sets[i];
+    js << "    {\n      \"id\": " << jstr(r.name) << ",\n      \"summary\": " << jstr(r.summary)
+       << ",\n      \"sets\": " << r.sets << ", \"points\": " << r.points << ", \"failures\": " << r.failures
+       << ",\n      \"modes\": " << json_counts(r.modes) << ",\n      \"kinds\": " << json_counts(r.kinds)
+       << ",\n      \"failures_by_property\": " << json_counts(r.failures_by_property)
+       << ",\n      \"cgal_choices_differ\": " << r.cgal_choices_differ
+       << ",\n      \"production_us_total\": " << jnum(r.production_us) << ", \"cgal_us_total\": " << jnum(r.cgal_us)
+       << ", \"production_over_cgal\": " << jnum(r.cgal_us > 0 ? r.production_us / r.cgal_us : NAN)
+       << ",\n      \"counterexamples\": [";
+    for (std::size_t k = 0; k < r.counterexamples.size(); ++k) js << (k ? ", " : "") << jstr(r.counterexamples[k]);
+    js << "]\n    }" << (i + 1 < point_sets.size() ? "," : "") << "\n";
+  }
+  js << "  ]";
+}
+
+// A point-set query's section: the sets by mode and kind, failures, time against CGAL.
+void write_point_set_section(std::ostream& h, const PointSetReport& r) {
+  const bool clean = r.failures == 0;
+  h << "<h2 id='" << r.name << "'>" << r.name << "</h2><p>" << html(r.summary) << "</p><p class='"
+    << (clean ? "ok'>verified: every triangulation valid (exact checker) and CGAL's up to cocircular choices"
+              : "bad'>FAILURES found")
+    << "</p><table><tr><th class='l'>measure</th><th>value</th></tr><tr><td class='l'>point sets (points)</td><td>"
+    << r.sets << " (" << r.points << ")</td></tr><tr><td class='l'>failures</td><td class='" << (clean ? "ok" : "bad") << "'>"
+    << r.failures << "</td></tr><tr><td class='l'>cocircular choices other than CGAL's (legitimate)</td><td>"
+    << r.cgal_choices_differ << "</td></tr><tr><td class='l'>time, production / CGAL (all sets)</td><td>"
+    << jnum(r.production_us / 1e3) << " ms / " << jnum(r.cgal_us / 1e3) << " ms = "
+    << jnum(r.cgal_us > 0 ? r.production_us / r.cgal_us : NAN) << "</td></tr></table>";
+  auto table = [&](const char* what, const std::map<std::string, int>& m) {
+    h << "<table><tr><th class='l'>" << what << "</th><th>sets</th></tr>";
+    for (const auto& [k, v] : m) h << "<tr><td class='l'>" << html(k) << "</td><td>" << v << "</td></tr>";
+    h << "</table>";
+  };
+  table("generator mode", r.modes);
+  table("kind of point set (dimension)", r.kinds);
+  if (!r.failures_by_property.empty()) {
+    table("failed property", r.failures_by_property);
+    h << "<p>counterexamples (replay with <code>geomcheck replay FILE</code>):</p><ul>";
+    for (std::size_t k = 0; k < r.counterexamples.size() && k < 50; ++k)
+      h << "<li><code>" << html(r.counterexamples[k]) << "</code></li>";
+    h << "</ul>";
+  }
+}
+
 }  // namespace
 
 std::string html(const std::string& s) {
@@ -183,7 +237,8 @@ std::string html(const std::string& s) {
 }
 
 
-void write_json(const std::filesystem::path& file, const RunInfo& run, std::vector<QueryReport>& reps) {
+void write_json(const std::filesystem::path& file, const RunInfo& run, std::vector<QueryReport>& reps,
+                const std::vector<PointSetReport>& point_sets) {
   std::ofstream js(file);
   js << "{\n  \"tool\": \"geomcheck\",\n  \"seed\": " << run.seed << ",\n  \"cases_per_query\": " << jstr(run.per_query)
      << ",\n  \"replay\": " << jstr(run.rerun) << ",\n  \"implementation\": " << jstr(run.under_test)
@@ -238,11 +293,14 @@ void write_json(const std::filesystem::path& file, const RunInfo& run, std::vect
     for (std::size_t k = 0; k < r.counterexamples.size(); ++k) js << (k ? ", " : "") << jstr(r.counterexamples[k]);
     js << "]\n    }" << (i + 1 < reps.size() ? "," : "") << "\n";
   }
-  js << "  ]\n}\n";
+  js << "  ]";
+  write_point_sets_json(js, point_sets);
+  js << "\n}\n";
 
 }
 
-void write_html(const std::filesystem::path& file, const RunInfo& run, std::vector<QueryReport>& reps) {
+void write_html(const std::filesystem::path& file, const RunInfo& run, std::vector<QueryReport>& reps,
+                const std::vector<PointSetReport>& point_sets) {
   std::ofstream h(file);
   h << "<!doctype html><html lang='en'><head><meta charset='utf-8'><title>geomcheck campaign report</title>"
        "<style>body{font-family:sans-serif;margin:2em;max-width:1100px}table{border-collapse:collapse;margin:1em 0}"
@@ -256,6 +314,7 @@ void write_html(const std::filesystem::path& file, const RunInfo& run, std::vect
        "(largest coordinate magnitude or extent). Rerun: <code>" << html(run.rerun) << "</code></p>";
   write_precision_table(h, reps);
   for (QueryReport& r : reps) write_query_section(h, r);
+  for (const PointSetReport& r : point_sets) write_point_set_section(h, r);
   h << "</body></html>\n";
 }
 

@@ -21,6 +21,12 @@ expect_rc 2 "replay of a missing file" "$tool" replay "$tmp/nope.case"
 grep -q "no such file" "$tmp/out" && ok || bad "missing file is named"
 expect_rc 0 "queries" "$tool" queries
 grep -q "cast_segment_cylinder" "$tmp/out" && ok || bad "queries lists cast_segment_cylinder"
+grep -q "^delaunay_2d  *point-set" "$tmp/out" && ok || bad "queries lists delaunay_2d as a point-set query"
+
+# The point-set family runs in the campaign: its own section in report.json.
+expect_rc 0 "campaign of delaunay_2d" "$tool" campaign --query delaunay_2d --cases 200 --no-progress --out "$tmp/dl"
+python3 -c "import json,sys; q=json.load(open(sys.argv[1]))['point_set_queries']; sys.exit(0 if [x['id'] for x in q] == ['delaunay_2d'] and q[0]['sets'] == 200 and q[0]['failures'] == 0 else 1)" "$tmp/dl/report.json" && ok || bad "report.json has delaunay_2d's 200 sets"
+expect_rc 2 "campaign of an unknown query" "$tool" campaign --query nosuchquery --no-progress --out "$tmp/x"
 
 # A malformed file: replay fails with the parser's line number.
 mal=$(ls "$src"/corpora/tests/malformed/*.case | head -1)

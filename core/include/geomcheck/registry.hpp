@@ -34,6 +34,14 @@
   X(collide_cylinder_cylinder, Collide, Cylinder, Cylinder,                              \
     "overlap/collide(Cylinder, Cylinder): exact verdict; consistent contact (depth = overlap along the normal, an upper bound)")
 
+// Queries over a set of points, a family of their own: their case files hold
+// points (corpora/include/geomcheck/pointset_file.hpp), not two shapes.
+//
+//   X(id, summary)
+#define GEOMCHECK_POINTSET_QUERY_LIST(X)                                                         \
+  X(delaunay_2d,                                                                                 \
+    "delaunay_2d(points): Delaunay triangulation, exact predicates; duplicates merged, degenerate input says so")
+
 // Production's entry points of every registered query, so that generic code
 // can call them by the shapes' types (production_of<Q>, checks.hpp).
 #include "geomcheck/cast_segment_cylinder.hpp"
@@ -79,6 +87,34 @@ inline constexpr std::size_t kNumQueries = sizeof(kQueries) / sizeof(kQueries[0]
 
 /// The info row of a query id.
 constexpr const QueryInfo& info(QueryId id) { return kQueries[static_cast<std::size_t>(id)]; }
+
+/// The two families of queries.
+enum class QueryFamily {
+  Pair,      ///< two shapes (QueryId, PairCase): collide, cast, sweep
+  PointSet,  ///< a set of points (GEOMCHECK_POINTSET_QUERY_LIST)
+};
+
+/// Every registered query of either family, by name.
+struct QueryEntry {
+  const char* name;
+  QueryFamily family;
+  const char* summary;
+};
+inline constexpr QueryEntry kAllQueries[] = {
+#define GEOMCHECK_X(id, kind, A, B, summary) {#id, QueryFamily::Pair, summary},
+    GEOMCHECK_QUERY_LIST(GEOMCHECK_X)
+#undef GEOMCHECK_X
+#define GEOMCHECK_X(id, summary) {#id, QueryFamily::PointSet, summary},
+    GEOMCHECK_POINTSET_QUERY_LIST(GEOMCHECK_X)
+#undef GEOMCHECK_X
+};
+
+/// The family of the query named `name`; nullopt when no query has that name.
+inline std::optional<QueryFamily> family_of(std::string_view name) {
+  for (const auto& q : kAllQueries)
+    if (name == q.name) return q.family;
+  return std::nullopt;
+}
 
 /// Looks a query up by its id string.
 inline std::optional<QueryId> query_from_name(std::string_view name) {

@@ -9,7 +9,9 @@
 
 #include <cstdint>
 #include <string>
+#include <vector>
 
+#include "geomcheck/predicates2d.hpp"
 #include "geomcheck/properties/checks.hpp"
 
 namespace geomcheck::gen {
@@ -35,6 +37,23 @@ rc::Gen<typename QueryTraits<Q>::Case> wild();
   template <> rc::Gen<PairCase<A, B>> wild<QueryId::id>();
 GEOMCHECK_QUERY_LIST(GEOMCHECK_X)
 #undef GEOMCHECK_X
+
+// --- point sets (delaunay_2d) -----------------------------------------------
+/// Uniform points in [-scale, scale)^2 (any count, 53 random bits each).
+rc::Gen<std::vector<Vec2>> uniform_points(double scale);
+/// A random subset of an integer grid (up to 11 x 11), in random order, scaled by 2^e, |e| <= 30.
+rc::Gen<std::vector<Vec2>> grid_points();
+/// Exactly collinear points; `almost`: one of them moved off the line by a few ulps.
+rc::Gen<std::vector<Vec2>> collinear_points(bool almost);
+/// A generator of point sets and the name of its mode.
+struct PointSetMode {
+  const char* name;
+  rc::Gen<std::vector<Vec2>> gen;
+};
+/// Every mode of point set (properties/src/generators/delaunay_2d.cpp).
+std::vector<PointSetMode> point_set_modes();
+/// A point set of any mode, tagged by its mode.
+rc::Gen<Tagged<std::vector<Vec2>>> point_sets();
 
 /// A raw double: NaN, inf, subnormal, zero of either sign, huge, tiny, max, or plain.
 rc::Gen<double> wild_double();

@@ -70,6 +70,22 @@ struct QueryReport {
 };
 
 
+/// Everything reported about one point-set query (delaunay_2d) of a campaign.
+struct PointSetReport {
+  std::string name, summary;
+  int sets = 0;             ///< point sets run
+  std::size_t points = 0;   ///< points in all of them
+  std::map<std::string, int> modes;  ///< sets by generator mode
+  std::map<std::string, int> kinds;  ///< sets by kind: triangulated, collinear, single point, empty, rejected
+  int failures = 0;
+  std::map<std::string, int> failures_by_property;
+  /// Sets whose triangles differ from CGAL's where four or more points are
+  /// cocircular (both choices legitimate, checked exactly).
+  int cgal_choices_differ = 0;
+  double production_us = 0, cgal_us = 0;  ///< time summed over the sets both triangulated
+  std::vector<std::string> counterexamples;  ///< failing sets, saved as point-set files
+};
+
 /// One campaign run: what was run, and how to run it again.
 struct RunInfo {
   unsigned long long seed = 0;
@@ -79,9 +95,11 @@ struct RunInfo {
 };
 
 /// Writes report.json.
-void write_json(const std::filesystem::path& file, const RunInfo& run, std::vector<QueryReport>& reps);
+void write_json(const std::filesystem::path& file, const RunInfo& run, std::vector<QueryReport>& reps,
+                const std::vector<PointSetReport>& point_sets);
 /// Writes report.html.
-void write_html(const std::filesystem::path& file, const RunInfo& run, std::vector<QueryReport>& reps);
+void write_html(const std::filesystem::path& file, const RunInfo& run, std::vector<QueryReport>& reps,
+                const std::vector<PointSetReport>& point_sets);
 /// A counterexample's page: its drawing and the command that replays it.
 void write_counterexample_page(const std::filesystem::path& file, const std::string& name, const std::string& drawing,
                                const std::string& subject, const std::string& case_path);
