@@ -7,6 +7,7 @@ PKGS=(
   clang libclang-rt-14-dev
   libgtest-dev libgmock-dev librapidcheck-dev libbenchmark-dev
   libcgal-dev libfcl-dev libeigen3-dev libboost-dev libgmp-dev libmpfr-dev
+  libcli11-dev nlohmann-json3-dev
   python3
   chromium
 )

@@ -89,11 +89,13 @@ class QueryRun {
 
   QueryReport run(int threads) {
     generate();
+    rep_.requested = static_cast<int>(cases_.size());
     time_production();
     const double elapsed = evaluate(threads);
     for (const Row& r : rows_)
       if (r.run) gather(r);  // not run: the time budget ran out first
     rep_.oracle_us = rep_.cases ? elapsed * 1e6 * threads / rep_.cases : NAN;
+    rep_.stopped_by_time = rep_.cases < rep_.requested;
     return rep_;
   }
 
@@ -331,8 +333,16 @@ int run_campaign(const CampaignOptions& opt) {
   report::RunInfo run;
   run.seed = opt.seed;
   run.per_query = per_query;
+  run.version = opt.version;
+  run.started = opt.started;
+  run.command = opt.command;
   run.rerun = "geomcheck campaign --seed " + std::to_string(opt.seed) +
               (opt.cases > 0 ? " --cases " + std::to_string(opt.cases) : std::string());
+  if (opt.seconds > 0) {
+    char b[40];
+    std::snprintf(b, sizeof b, " --seconds %g", opt.seconds);
+    run.rerun += b;
+  }
   for (const auto& q : opt.queries) run.rerun += " --query " + q;
   if (!opt.variant.empty()) run.rerun += " --variant " + opt.variant;
   run.under_test = opt.variant.empty() ? "production" : opt.variant + " (a known-wrong variant)";

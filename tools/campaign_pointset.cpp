@@ -94,6 +94,7 @@ report::PointSetReport run_delaunay_2d(const CampaignOptions& opt, const std::fi
   const auto gen = gen::point_sets();
   rc::Random random(opt.seed ^ 0xd1b54a32d192ed03ull);
   for (int i = 0; i < n; ++i) sets.push_back(gen(random.split(), rc::kNominalSize).value());
+  rep.requested = n;
   std::vector<SetRow> rows(sets.size());
   std::atomic<int> next{0};
   const auto start = Clock::now();
@@ -127,6 +128,7 @@ report::PointSetReport run_delaunay_2d(const CampaignOptions& opt, const std::fi
     if (!path.empty()) rep.counterexamples.push_back(path);
   }
   for (std::size_t k = 0; k < prod.size(); ++k) rep.production_us += prod[k], rep.cgal_us += cgal[k];
+  rep.stopped_by_time = rep.sets < rep.requested;
   return rep;
 }
 

@@ -1,5 +1,10 @@
 // geomcheck — command-line entry point: campaign, replay, converters.
+#include <CLI/CLI.hpp>
+
+#include <charconv>
+#include <cmath>
 #include <cstdio>
+#include <ctime>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -24,41 +29,46 @@ using namespace geomcheck;
 
 namespace {
 
-const char* kUsage =
-    "usage: geomcheck <command> [options]\n"
-    "\n"
-    "commands:\n"
-    "  campaign [--cases N] [--seconds S] [--seed N] [--threads N] [--out DIR] [--query ID]...\n"
-    "           [--variant NAME] [--no-progress]\n"
-    "        Differential campaign of every registered query: production vs the exact\n"
-    "        oracle vs FCL on the targeted generators. Writes DIR/report.json and\n"
-    "        DIR/report.html (default DIR: reports/out), every failing case and its\n"
-    "        drawing under DIR/counterexamples/, every FCL disagreement beyond the\n"
-    "        band under DIR/fcl-disagreements/. Exit status 1 when anything failed.\n"
-    "        Defaults: --cases 100000 per query (10000 for the queries whose oracle is\n"
-    "        the certified engine), --seed 20261121, all cores.\n"
-    "        --variant NAME runs a known-wrong variant of one query in production's\n"
-    "        place (what a failing campaign looks like; --variant help lists them).\n"
-    "  replay [--quiet] PATH...\n"
-    "        Replays case files (or every *.case under a directory): production, the\n"
-    "        exact oracle and FCL side by side, the verdict margin and every property\n"
-    "        check. A point-set file (query delaunay_2d) is parsed and its filed verdict\n"
-    "        checked against the kind of its points. Exit status 1 when any case fails\n"
-    "        a check.\n"
-    "  from-fuzz QUERY CRASH_FILE [-o OUT.case]\n"
-    "        Turns a libFuzzer input of QUERY's fuzz target into a case file.\n"
-    "  from-rapidcheck QUERY TEXT_FILE|- [-o OUT.case]\n"
-    "        Turns a RapidCheck counterexample (its printed text) into a case file.\n"
-    "  queries\n"
-    "        Lists the registered queries: id, family (a pair of shapes, or a point\n"
-    "        set), what production answers.\n"
-    "\n"
-    "Case files: corpora/seeds/<query>/ and corpora/regressions/<query>/ (format: corpora/README.md).\n";
+// An error of the caller's (usage, a bad number, an unreadable or malformed
+// file, nothing to replay): said on stderr, exit status 2.
+struct InputError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
 
-[[noreturn]] void usage_error(const std::string& msg) {
-  std::fprintf(stderr, "geomcheck: %s\n\n%s", msg.c_str(), kUsage);
-  std::exit(2);
+/// A whole number > 0, every character of it (CLI11's own checks would take "10abc").
+std::string positive_integer(const std::string& v) {
+  int x = 0;
+  const auto [end, ec] = std::from_chars(v.data(), v.data() + v.size(), x);
+  if (ec != std::errc() || end != v.data() + v.size() || x <= 0) return "'" + v + "' is not a whole number above 0";
+  return "";
 }
+/// A finite number > 0, every character of it.
+std::string positive_number(const std::string& v) {
+  char* end = nullptr;
+  const double x = v.empty() ? 0 : std::strtod(v.c_str(), &end);
+  if (v.empty() || end != v.c_str() + v.size() || !std::isfinite(x) || !(x > 0)) return "'" + v + "' is not a number above 0";
+  return "";
+}
+/// A whole number >= 0 of 64 bits, every character of it.
+std::string seed_number(const std::string& v) {
+  std::uint64_t x = 0;
+  const auto [end, ec] = std::from_chars(v.data(), v.data() + v.size(), x);
+  if (ec != std::errc() || end != v.data() + v.size()) return "'" + v + "' is not a whole number from 0 to 2^64 - 1";
+  return "";
+}
+
+/// Now, UTC, ISO 8601.
+std::string utc_now() {
+  const std::time_t t = std::time(nullptr);
+  std::tm tm{};
+  gmtime_r(&t, &tm);
+  char b[32];
+  std::strftime(b, sizeof b, "%Y-%m-%dT%H:%M:%SZ", &tm);
+  return b;
+}
+
+/// The largest input the converters read (a fuzz input or a RapidCheck text).
+constexpr std::uintmax_t kMaxConvertInputBytes = 1 << 20;
 
 std::string shapes_text(const CaseFile& f) {
   std::ostringstream o;
@@ -72,8 +82,11 @@ std::string shapes_text(const CaseFile& f) {
 // so its parser. Empty when the header names none (the parser then says why).
 std::string declared_query(const fs::path& path) {
   std::ifstream in(path, std::ios::binary);
+  char head[4096];
+  in.read(head, sizeof head);  // the header is short; a file is never read whole here
+  std::istringstream lines(std::string(head, static_cast<std::size_t>(in.gcount())));
   std::string line;
-  for (int n = 0; n < 16 && std::getline(in, line); ++n) {
+  while (std::getline(lines, line)) {
     std::istringstream words(line);
     std::string key, name;
     if (words >> key && key == "query") return words >> name ? name : "";  // the first query line decides
@@ -81,17 +94,24 @@ std::string declared_query(const fs::path& path) {
   return "";
 }
 
+/// How a replayed file came out.
+enum class Replayed { Passed, Failed, Unreadable };
+
+/// A file that cannot be read or parsed: said on stderr (file, line, field).
+Replayed unreadable(const fs::path& path, const std::string& error) {
+  std::fflush(stdout);
+  const bool named = error.rfind(path.string(), 0) == 0;  // the parser names the file itself
+  std::fprintf(stderr, "geomcheck: %s%s%s\n", named ? "" : path.string().c_str(), named ? "" : ": ", error.c_str());
+  return Replayed::Unreadable;
+}
+
 // Replays one point-set file: it parses, its filed verdict is the kind of
 // its points (classify_point_set), and production's triangulation passes
 // the exact validity checker and agrees with CGAL's (up to cocircular
 // choices); non-finite input must be rejected naming the first bad index.
-// Returns true when all of that holds.
-bool replay_point_set(const fs::path& path, bool quiet) {
+Replayed replay_point_set(const fs::path& path, bool quiet) {
   const PointSetParseResult pr = load_point_set(path);
-  if (!pr.ok()) {
-    std::printf("%s\n  ERROR %s\n", path.string().c_str(), pr.error.c_str());
-    return false;
-  }
+  if (!pr.ok()) return unreadable(path, pr.error);
   const PointSetFile& f = pr.value;
   const std::string_view kind = classify_point_set(f.points);
   const bool verdict_ok = f.oracle_verdict.empty() || f.oracle_verdict == kind;
@@ -112,7 +132,7 @@ bool replay_point_set(const fs::path& path, bool quiet) {
   const bool pass = verdict_ok && problem.empty();
   if (quiet && pass) {
     std::printf("PASS %s\n", path.string().c_str());
-    return true;
+    return Replayed::Passed;
   }
   std::printf("%s %s\n  query: %s\n  points: %zu\n", pass ? "PASS" : "FAIL", path.string().c_str(), kDelaunayQueryName,
               f.points.size());
@@ -122,22 +142,18 @@ bool replay_point_set(const fs::path& path, bool quiet) {
     std::printf("  filed oracle verdict: %s%s\n", f.oracle_verdict.c_str(), verdict_ok ? "" : "  <-- the points are of another kind");
   std::printf("  production: %s\n", production.c_str());
   std::printf("  oracles (exact validity, CGAL): %s\n", problem.empty() ? "agree" : problem.c_str());
-  return pass;
+  return pass ? Replayed::Passed : Replayed::Failed;
 }
 
-// Replays one case; returns true when every check passes.
-bool replay_one(const fs::path& path, bool quiet) {
+// Replays one case: passed when every check passes and the filed verdict
+// (if any) is the truth's; a verdict filed on invalid input is wrong (the
+// only truth there is "invalid": no hit).
+Replayed replay_one(const fs::path& path, bool quiet) {
   if (family_of(declared_query(path)) == QueryFamily::PointSet) return replay_point_set(path, quiet);
   const ParseResult pr = load_case(path);
-  if (!pr.ok()) {
-    std::printf("%s\n  ERROR %s\n", path.string().c_str(), pr.error.c_str());
-    return false;
-  }
+  if (!pr.ok()) return unreadable(path, pr.error);
   const CaseFile& f = pr.value;
-  if (auto err = case_error(f)) {
-    std::printf("%s\n  ERROR %s\n", path.string().c_str(), err->c_str());
-    return false;
-  }
+  if (auto err = case_error(f)) return unreadable(path, *err);
   return visit_case(f, [&](auto q, const auto& c) {
     constexpr QueryId Q = decltype(q)::value;
     const PeerAnswer fcl = peer(c);
@@ -147,11 +163,11 @@ bool replay_one(const fs::path& path, bool quiet) {
     bool filed_ok = true;
     std::string truth_word = verdict_word(Q, e);
     if (!e.valid) truth_word = "invalid";
-    if (!f.oracle_verdict.empty() && e.valid && f.oracle_verdict != truth_word) filed_ok = false;
+    if (!f.oracle_verdict.empty() && f.oracle_verdict != truth_word) filed_ok = false;
     const bool pass = !failure && filed_ok;
     if (quiet && pass) {
       std::printf("PASS %s\n", path.string().c_str());
-      return true;
+      return Replayed::Passed;
     }
     std::printf("%s %s\n  query: %s\n%s", pass ? "PASS" : "FAIL", path.string().c_str(), info(Q).name, shapes_text(f).c_str());
     if (!f.found_by.empty()) std::printf("  found by: %s\n", f.found_by.c_str());
@@ -188,37 +204,44 @@ bool replay_one(const fs::path& path, bool quiet) {
       }
     }
     if (!f.oracle_verdict.empty())
-      std::printf("  filed oracle verdict: %s%s\n", f.oracle_verdict.c_str(), filed_ok ? "" : "  <-- the oracle now says otherwise");
+      std::printf("  filed oracle verdict: %s%s\n", f.oracle_verdict.c_str(),
+                  filed_ok ? "" : (e.valid ? "  <-- the oracle now says otherwise" : "  <-- filed on invalid input"));
     if (failure) std::printf("  check FAILED: %s: %s\n", failure->property.c_str(), failure->detail.c_str());
-    return pass;
+    return pass ? Replayed::Passed : Replayed::Failed;
   });
 }
 
-int cmd_replay(const std::vector<std::string>& args) {
-  bool quiet = false;
+/// The case files a replay argument names: the file, or every *.case below a directory.
+std::vector<fs::path> case_files(const std::string& arg) {
+  const fs::path p(arg);
+  std::error_code ec;
+  if (fs::is_directory(p, ec)) {
+    std::vector<fs::path> found;
+    for (const auto& e : fs::recursive_directory_iterator(p))
+      if (e.is_regular_file() && e.path().extension() == kCaseFileExtension) found.push_back(e.path());
+    std::sort(found.begin(), found.end());
+    if (found.empty()) throw InputError("replay: no " + std::string(kCaseFileExtension) + " file under " + arg);
+    return found;
+  }
+  if (!fs::exists(p, ec)) throw InputError("replay: no such file or directory: " + arg);
+  return {p};
+}
+
+// 0 every case passed, 1 a check failed, 2 a file could not be read or parsed.
+int cmd_replay(const std::vector<std::string>& args, bool quiet) {
   std::vector<fs::path> files;
   for (const auto& a : args) {
-    if (a == "--quiet") { quiet = true; continue; }
-    if (a.rfind("-", 0) == 0) usage_error("replay: unknown option " + a);
-    const fs::path p(a);
-    std::error_code ec;
-    if (fs::is_directory(p, ec)) {
-      std::vector<fs::path> found;
-      for (const auto& e : fs::recursive_directory_iterator(p))
-        if (e.is_regular_file() && e.path().extension() == kCaseFileExtension) found.push_back(e.path());
-      std::sort(found.begin(), found.end());
-      files.insert(files.end(), found.begin(), found.end());
-    } else if (fs::exists(p, ec)) {
-      files.push_back(p);
-    } else {
-      usage_error("replay: no such file or directory: " + a);
-    }
+    const auto more = case_files(a);
+    files.insert(files.end(), more.begin(), more.end());
   }
-  if (files.empty() && args.empty()) usage_error("replay: give case files or directories");
-  int failed = 0;
-  for (const auto& f : files) failed += !replay_one(f, quiet);
-  std::printf("replay: %zu passed, %d failed\n", files.size() - failed, failed);
-  return failed ? 1 : 0;
+  int failed = 0, unreadable = 0;
+  for (const auto& f : files) {
+    const Replayed r = replay_one(f, quiet);
+    failed += r == Replayed::Failed;
+    unreadable += r == Replayed::Unreadable;
+  }
+  std::printf("replay: %zu passed, %d failed, %d unreadable\n", files.size() - failed - unreadable, failed, unreadable);
+  return unreadable ? 2 : (failed ? 1 : 0);
 }
 
 QueryId need_query(const std::string& s) {
@@ -226,7 +249,7 @@ QueryId need_query(const std::string& s) {
   if (!q) {
     std::string known;
     for (const auto& i : kQueries) known += std::string(" ") + i.name;
-    usage_error("unknown query '" + s + "'; known:" + known);
+    throw InputError("unknown query '" + s + "'; known:" + known);
   }
   return *q;
 }
@@ -251,111 +274,146 @@ std::string slurp(std::istream& in) {
   return o.str();
 }
 
-int cmd_convert(bool fuzz, const std::vector<std::string>& args) {
-  std::string out;
-  std::vector<std::string> pos;
-  for (std::size_t i = 0; i < args.size(); ++i) {
-    if (args[i] == "-o") {
-      if (i + 1 >= args.size()) usage_error("-o needs a file name");
-      out = args[++i];
-    } else {
-      pos.push_back(args[i]);
-    }
-  }
-  if (pos.size() != 2) usage_error(fuzz ? "from-fuzz QUERY CRASH_FILE [-o OUT]" : "from-rapidcheck QUERY TEXT_FILE|- [-o OUT]");
-  const QueryId q = need_query(pos[0]);
+int cmd_convert(bool fuzz, const std::string& query, const std::string& input, const std::string& out) {
+  const QueryId q = need_query(query);
   std::string data;
-  if (pos[1] == "-") {
+  if (input == "-") {
     data = slurp(std::cin);
   } else {
-    std::ifstream in(pos[1], std::ios::binary);
-    if (!in) usage_error("cannot read " + pos[1]);
+    std::error_code ec;
+    const auto bytes = fs::file_size(input, ec);
+    if (ec) throw InputError("cannot read " + input + ": " + ec.message());
+    if (bytes > kMaxConvertInputBytes)
+      throw InputError(input + ": " + std::to_string(bytes) + " bytes, more than the limit of " +
+                       std::to_string(kMaxConvertInputBytes));
+    std::ifstream in(input, std::ios::binary);
+    if (!in) throw InputError("cannot read " + input);
     data = slurp(in);
   }
   if (fuzz) {
-    const std::string artifact = fs::path(pos[1]).filename().string();
+    const std::string artifact = fs::path(input).filename().string();
     CaseFile f = fuzz::case_from_input(q, reinterpret_cast<const std::uint8_t*>(data.data()), data.size(),
                                        artifact.rfind("crash-", 0) == 0 || artifact.rfind("timeout-", 0) == 0 ? artifact : "");
     return write_out(f, out);
   }
   const auto f = case_from_rapidcheck_text(q, data);
-  if (!f) {
-    std::fprintf(stderr, "geomcheck: no %s and %s description found in the text\n", info(q).shape_a, info(q).shape_b);
-    return 1;
-  }
+  if (!f) throw InputError(std::string("no ") + info(q).shape_a + " and " + info(q).shape_b + " description found in " + input);
   return write_out(*f, out);
 }
 
-int cmd_campaign(const std::vector<std::string>& args) {
-  CampaignOptions opt;
-  auto num = [&](std::size_t& i) -> std::string {
-    if (i + 1 >= args.size()) usage_error(args[i] + " needs a value");
-    return args[++i];
-  };
-  try {
-    for (std::size_t i = 0; i < args.size(); ++i) {
-      const std::string& a = args[i];
-      if (a == "--cases") opt.cases = std::stoi(num(i));
-      else if (a == "--seconds") opt.seconds = std::stod(num(i));
-      else if (a == "--seed") opt.seed = std::stoull(num(i));
-      else if (a == "--threads") opt.threads = std::stoi(num(i));
-      else if (a == "--out") opt.out = num(i);
-      else if (a == "--query") {
-        const std::string q = num(i);
-        if (!family_of(q)) {
-          std::string known;
-          for (const auto& k : kAllQueries) known += std::string(" ") + k.name;
-          usage_error("campaign: unknown query '" + q + "'; known:" + known);
-        }
-        opt.queries.push_back(q);
-      }
-      else if (a == "--no-progress") opt.progress = false;
-      else if (a == "--variant") {
-        opt.variant = num(i);
-        if (opt.variant == "help") {
-          for (const auto& [v, q] : campaign_variants()) std::printf("%s (%s)\n", v.c_str(), q.c_str());
-          std::exit(0);
-        }
-        bool known = false;
-        std::string names;
-        for (const auto& [v, q] : campaign_variants()) known = known || v == opt.variant, names += "\n  " + v + " (" + q + ")";
-        if (!known) usage_error("campaign: unknown variant " + opt.variant + "; the known-wrong variants are:" + names);
-      }
-      else usage_error("campaign: unknown option " + a);
-    }
-  } catch (const std::exception&) {
-    usage_error("campaign: a number was expected");
-  }
-  for (std::size_t i = 0; i < args.size(); ++i)
-    if (args[i] == "--cases" && opt.cases <= 0) usage_error("campaign: --cases must be positive");
+int cmd_campaign(const CampaignOptions& opt) {
   const int failures = run_campaign(opt);
   std::printf("campaign: %s\n", failures ? "FAILURES found (see the report)" : "no failure");
   return failures ? 1 : 0;
 }
 
+std::string known_variants() {
+  std::string names;
+  for (const auto& [v, q] : campaign_variants()) names += "\n  " + v + " (" + q + ")";
+  return names;
+}
+
+void add_campaign(CLI::App& app, CampaignOptions& opt, int& rc) {
+  auto* c = app.add_subcommand("campaign", "Differential campaign of every registered query: production against the "
+                                           "truth and FCL on the targeted generators; ends in DIR/report.json and "
+                                           "DIR/report.html. Exit status 1 when anything failed.");
+  c->add_option("--cases", opt.cases, "cases per query (default: each query's own, 100000 or 10000)")
+      ->check(positive_integer);
+  c->add_option("--seconds", opt.seconds, "time budget per query, in seconds (default: none)")->check(positive_number);
+  c->add_option("--seed", opt.seed, "the generators' seed")->capture_default_str()->check(seed_number);
+  c->add_option("--threads", opt.threads, "worker threads (default: every core)")->check(positive_integer);
+  c->add_option("--out", opt.out, "the report's folder")->capture_default_str();
+  c->add_option("--query", opt.queries, "only this query (repeatable; geomcheck queries lists them)")
+      ->check([](const std::string& q) { return family_of(q) ? std::string() : "unknown query '" + q + "'"; });
+  c->add_flag("--no-progress", [&opt](std::int64_t) { opt.progress = false; }, "no progress lines on stderr");
+  c->add_option("--variant", opt.variant,
+                "run a known-wrong variant of one query in production's place ('help' lists them)")
+      ->check([](const std::string& v) {
+        if (v == "help") return std::string();
+        for (const auto& [name, q] : campaign_variants())
+          if (name == v) return std::string();
+        return "unknown variant '" + v + "'; the known-wrong variants are:" + known_variants();
+      });
+  c->callback([&opt, &rc] {
+    if (opt.variant == "help") {
+      std::printf("%s\n", known_variants().c_str() + 1);
+      rc = 0;
+      return;
+    }
+    rc = cmd_campaign(opt);
+  });
+}
+
+void add_replay(CLI::App& app, int& rc) {
+  static std::vector<std::string> paths;
+  static bool quiet = false;
+  auto* r = app.add_subcommand("replay", "Replays case files (or every *.case under a directory): production, the "
+                                         "truth and FCL side by side, the verdict margin and every check. A point-set "
+                                         "file (query delaunay_2d) is held to the exact checker and CGAL. Exit status "
+                                         "1 when a check fails, 2 when a file cannot be read or parsed.");
+  r->add_flag("--quiet", quiet, "one line per passing case");
+  r->add_option("paths", paths, "case files or directories")->required();
+  r->callback([&rc] { rc = cmd_replay(paths, quiet); });
+}
+
+void add_converter(CLI::App& app, bool fuzz, int& rc) {
+  struct Args {
+    std::string query, input, out;
+  };
+  static Args args[2];
+  Args& a = args[fuzz];
+  auto* c = app.add_subcommand(fuzz ? "from-fuzz" : "from-rapidcheck",
+                               fuzz ? "Turns a libFuzzer input of QUERY's fuzz target into a case file."
+                                    : "Turns a RapidCheck counterexample (its printed text) into a case file.");
+  c->add_option("query", a.query, "the query id")->required();
+  c->add_option("input", a.input, fuzz ? "the input (crash-..., timeout-...)" : "the text, or - for stdin")->required();
+  c->add_option("-o,--out", a.out, "the case file to write (default: stdout)");
+  c->callback([&a, fuzz, &rc] { rc = cmd_convert(fuzz, a.query, a.input, a.out); });
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
-  std::vector<std::string> args(argv + 1, argv + argc);
-  if (args.empty() || args[0] == "--help" || args[0] == "-h" || args[0] == "help") {
-    std::fputs(kUsage, stdout);
-    return args.empty() ? 2 : 0;
+  CLI::App app{"geomcheck: property-based verification of geometric queries against exact arithmetic."};
+  app.set_version_flag("--version", std::string("geomcheck ") + GEOMCHECK_VERSION);
+  app.require_subcommand(1);
+  app.footer("Case files: corpora/seeds/<query>/ and corpora/regressions/<query>/ (format: corpora/README.md).\n"
+             "Exit status: 0 all passed, 1 a check failed, 2 a usage or input error.");
+  int rc = 0;
+  CampaignOptions opt;
+  opt.version = GEOMCHECK_VERSION;
+  opt.started = utc_now();
+  for (int i = 0; i < argc; ++i) opt.command += (i ? " " : "") + std::string(argv[i]);
+  add_campaign(app, opt, rc);
+  add_replay(app, rc);
+  add_converter(app, true, rc);
+  add_converter(app, false, rc);
+  app.add_subcommand("queries", "Lists the registered queries: id, family (a pair of shapes, or a point set), what "
+                                "production answers.")
+      ->callback([] {
+        for (const auto& q : kAllQueries)
+          std::printf("%-26s %-9s %s\n", q.name, q.family == QueryFamily::Pair ? "pair" : "point-set", q.summary);
+      });
+  std::string names;
+  bool known = false;
+  for (const CLI::App* c : app.get_subcommands({})) {
+    names += (names.empty() ? "" : ", ") + c->get_name();
+    known = known || (argc > 1 && c->get_name() == argv[1]);
   }
-  const std::string cmd = args[0];
-  args.erase(args.begin());
-  for (const auto& a : args)
-    if (a == "--help" || a == "-h") {
-      std::fputs(kUsage, stdout);
-      return 0;
-    }
-  if (cmd == "campaign") return cmd_campaign(args);
-  if (cmd == "replay") return cmd_replay(args);
-  if (cmd == "from-fuzz") return cmd_convert(true, args);
-  if (cmd == "from-rapidcheck") return cmd_convert(false, args);
-  if (cmd == "queries") {
-    for (const auto& q : kAllQueries)
-      std::printf("%-26s %-9s %s\n", q.name, q.family == QueryFamily::Pair ? "pair" : "point-set", q.summary);
-    return 0;
+  if (argc > 1 && argv[1][0] != '-' && !known) {
+    std::fprintf(stderr, "geomcheck: unknown command '%s' (commands: %s; --help says more)\n", argv[1], names.c_str());
+    return 2;
   }
-  usage_error("unknown command '" + cmd + "'");
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::Success& e) {  // --help, --version
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    app.exit(e);
+    return 2;
+  } catch (const InputError& e) {
+    std::fprintf(stderr, "geomcheck: %s\n", e.what());
+    return 2;
+  }
+  return rc;
 }

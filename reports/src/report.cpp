@@ -110,7 +110,9 @@ void write_query_section(std::ostream& h, QueryReport& r) {
   h << "<h2 id='" << r.name << "'>" << r.name << "</h2><p>" << html(r.summary) << "</p><p class='"
     << (clean ? "ok'>verified: no disagreement beyond the band, every property holds" : "bad'>FAILURES found")
     << "</p><table><tr><th class='l'>measure</th><th>production</th><th>FCL</th></tr>"
-    << "<tr><td class='l'>cases (valid)</td><td>" << r.cases << " (" << r.valid << ")</td><td>" << r.fcl_ok << " answered</td></tr>"
+    << "<tr><td class='l'>cases run of requested (valid)</td><td>" << r.cases << " of " << r.requested << " ("
+    << r.valid << ")" << (r.stopped_by_time ? "; stopped by --seconds" : "") << "</td><td>" << r.fcl_ok
+    << " answered</td></tr>"
     << "<tr><td class='l'>hit rate (oracle " << jnum(r.valid ? double(r.truth_hits) / r.valid : NAN) << ")</td><td>"
     << jnum(r.valid ? double(r.prod_hits) / r.valid : NAN) << "</td><td></td></tr>"
     << "<tr><td class='l'>verdict disagreements</td><td>" << r.disagree << "</td><td>" << r.fcl_disagree << "</td></tr>"
@@ -182,6 +184,7 @@ void write_point_sets_json(std::ostream& js, const std::vector<PointSetReport>& 
   for (std::size_t i = 0; i < point_sets.size(); ++i) {
     const PointSetReport& r = point_sets[i];
     js << "    {\n      \"id\": " << jstr(r.name) << ",\n      \"summary\": " << jstr(r.summary)
+       << ",\n      \"requested\": " << r.requested << ", \"stopped_by_time\": " << (r.stopped_by_time ? "true" : "false")
        << ",\n      \"sets\": " << r.sets << ", \"points\": " << r.points << ", \"failures\": " << r.failures
        << ",\n      \"modes\": " << json_counts(r.modes) << ",\n      \"kinds\": " << json_counts(r.kinds)
        << ",\n      \"failures_by_property\": " << json_counts(r.failures_by_property)
@@ -201,8 +204,9 @@ void write_point_set_section(std::ostream& h, const PointSetReport& r) {
   h << "<h2 id='" << r.name << "'>" << r.name << "</h2><p>" << html(r.summary) << "</p><p class='"
     << (clean ? "ok'>verified: every triangulation valid (exact checker) and CGAL's up to cocircular choices"
               : "bad'>FAILURES found")
-    << "</p><table><tr><th class='l'>measure</th><th>value</th></tr><tr><td class='l'>point sets (points)</td><td>"
-    << r.sets << " (" << r.points << ")</td></tr><tr><td class='l'>failures</td><td class='" << (clean ? "ok" : "bad") << "'>"
+    << "</p><table><tr><th class='l'>measure</th><th>value</th></tr><tr><td class='l'>point sets run of requested (points)</td><td>"
+    << r.sets << " of " << r.requested << " (" << r.points << ")" << (r.stopped_by_time ? "; stopped by --seconds" : "")
+    << "</td></tr><tr><td class='l'>failures</td><td class='" << (clean ? "ok" : "bad") << "'>"
     << r.failures << "</td></tr><tr><td class='l'>cocircular choices other than CGAL's (legitimate)</td><td>"
     << r.cgal_choices_differ << "</td></tr><tr><td class='l'>time, production / CGAL (all sets)</td><td>"
     << jnum(r.production_us / 1e3) << " ms / " << jnum(r.cgal_us / 1e3) << " ms = "
@@ -240,12 +244,19 @@ std::string html(const std::string& s) {
 void write_json(const std::filesystem::path& file, const RunInfo& run, std::vector<QueryReport>& reps,
                 const std::vector<PointSetReport>& point_sets) {
   std::ofstream js(file);
-  js << "{\n  \"tool\": \"geomcheck\",\n  \"seed\": " << run.seed << ",\n  \"cases_per_query\": " << jstr(run.per_query)
+  bool passed = true;
+  for (const QueryReport& r : reps) passed = passed && r.beyond == 0 && r.check_failures == 0;
+  for (const PointSetReport& r : point_sets) passed = passed && r.failures == 0;
+  js << "{\n  \"tool\": \"geomcheck\",\n  \"schema_version\": " << kReportSchemaVersion
+     << ",\n  \"version\": " << jstr(run.version) << ",\n  \"started\": " << jstr(run.started)
+     << ",\n  \"command_line\": " << jstr(run.command) << ",\n  \"verdict\": " << jstr(passed ? "passed" : "failed")
+     << ",\n  \"seed\": " << run.seed << ",\n  \"cases_per_query\": " << jstr(run.per_query)
      << ",\n  \"replay\": " << jstr(run.rerun) << ",\n  \"implementation\": " << jstr(run.under_test)
      << ",\n  \"queries\": [\n";
   for (std::size_t i = 0; i < reps.size(); ++i) {
     QueryReport& r = reps[i];
     js << "    {\n      \"id\": " << jstr(r.name) << ",\n      \"summary\": " << jstr(r.summary)
+       << ",\n      \"requested\": " << r.requested << ", \"stopped_by_time\": " << (r.stopped_by_time ? "true" : "false")
        << ",\n      \"cases\": " << r.cases << ", \"valid\": " << r.valid << ", \"production_hits\": " << r.prod_hits
        << ", \"oracle_hits\": " << r.truth_hits << ",\n      \"hit_rate\": " << jnum(r.valid ? double(r.prod_hits) / r.valid : NAN)
        << ",\n      \"verdicts\": {";

@@ -16,7 +16,24 @@ expect_rc() {  # expected-rc description command...
 expect_rc 0 "--help" "$tool" --help
 grep -q "campaign" "$tmp/out" && grep -q "replay" "$tmp/out" && ok || bad "--help lists the commands"
 expect_rc 2 "unknown command" "$tool" frobnicate
-grep -q "unknown command" "$tmp/out" && ok || bad "unknown command is named"
+grep -q "frobnicate" "$tmp/out" && ok || bad "unknown command is named"
+expect_rc 2 "no command" "$tool"
+expect_rc 0 "--version" "$tool" --version
+grep -q "^geomcheck [0-9]" "$tmp/out" && ok || bad "--version says the version"
+for cmd in campaign replay from-fuzz from-rapidcheck queries; do
+  expect_rc 0 "$cmd --help" "$tool" $cmd --help
+  grep -q "Usage: .* $cmd" "$tmp/out" && ok || bad "$cmd --help is the command's own help"
+done
+# Strict numbers: a usage error (2), the option named.
+expect_rc 2 "--cases 10abc" "$tool" campaign --cases 10abc --out "$tmp/x"
+grep -q -- "--cases: '10abc'" "$tmp/out" && ok || bad "--cases 10abc is named"
+expect_rc 2 "--seconds -1" "$tool" campaign --seconds -1 --out "$tmp/x"
+expect_rc 2 "--cases 0" "$tool" campaign --cases 0 --out "$tmp/x"
+expect_rc 2 "--threads x" "$tool" campaign --threads x --out "$tmp/x"
+# Nothing to replay is an input error, not a pass.
+mkdir -p "$tmp/empty"
+expect_rc 2 "replay of an empty directory" "$tool" replay "$tmp/empty"
+grep -q "no .case file under" "$tmp/out" && ok || bad "an empty directory is named"
 expect_rc 2 "replay of a missing file" "$tool" replay "$tmp/nope.case"
 grep -q "no such file" "$tmp/out" && ok || bad "missing file is named"
 expect_rc 0 "queries" "$tool" queries
@@ -26,12 +43,22 @@ grep -q "^delaunay_2d  *point-set" "$tmp/out" && ok || bad "queries lists delaun
 # The point-set family runs in the campaign: its own section in report.json.
 expect_rc 0 "campaign of delaunay_2d" "$tool" campaign --query delaunay_2d --cases 200 --no-progress --out "$tmp/dl"
 python3 -c "import json,sys; q=json.load(open(sys.argv[1]))['point_set_queries']; sys.exit(0 if [x['id'] for x in q] == ['delaunay_2d'] and q[0]['sets'] == 200 and q[0]['failures'] == 0 else 1)" "$tmp/dl/report.json" && ok || bad "report.json has delaunay_2d's 200 sets"
+# A run cut by --seconds says so: requested and run counts, and a rerun line with --seconds.
+expect_rc 0 "campaign cut by --seconds" "$tool" campaign --query collide_cylinder_capsule --cases 100000 --seconds 0.5 --no-progress --out "$tmp/cut"
+python3 - "$tmp/cut/report.json" <<'PY' && ok || bad "a run cut by --seconds reports requested, run and the cut"
+import json, sys
+r = json.load(open(sys.argv[1]))
+q = r["queries"][0]
+assert q["requested"] == 100000 and 0 < q["cases"] < 100000 and q["stopped_by_time"], q
+assert "--seconds 0.5" in r["replay"] and r["verdict"] == "passed" and r["schema_version"] >= 1, r["replay"]
+PY
 expect_rc 2 "campaign of an unknown query" "$tool" campaign --query nosuchquery --no-progress --out "$tmp/x"
 
 # A malformed file: replay fails with the parser's line number.
 mal=$(ls "$src"/corpora/tests/malformed/*.case | head -1)
-expect_rc 1 "replay of a malformed file" "$tool" replay "$mal"
-grep -q "ERROR.*line [0-9]" "$tmp/out" && ok || bad "malformed file error names a line"
+"$tool" replay "$mal" > "$tmp/out" 2> "$tmp/err"; rc=$?
+[ "$rc" = 2 ] && ok || bad "replay of a malformed file: exit $rc, wanted 2"
+grep -q "$(basename "$mal"): line [0-9]" "$tmp/err" && ok || bad "malformed file error names the file and a line, on stderr"
 
 # A seed replays and passes; with a wrong filed verdict it fails.
 seed=$(ls "$src"/corpora/seeds/collide_cylinder_sphere/*.case | head -1)
@@ -54,6 +81,11 @@ CASE
 expect_rc 1 "replay of a case filed with a wrong verdict" "$tool" replay "$tmp/wrong.case"
 grep -q "the oracle now says otherwise" "$tmp/out" && ok || bad "wrong filed verdict is pointed out"
 
+# A verdict filed on invalid input (a NaN radius) is wrong: the truth there is "invalid".
+sed 's/^  r 0.5$/  r nan/' "$tmp/wrong.case" | sed 's/^oracle-verdict separated$/oracle-verdict overlapping/' > "$tmp/nan.case"
+expect_rc 1 "replay of a verdict filed on invalid input" "$tool" replay "$tmp/nan.case"
+grep -q "filed on invalid input" "$tmp/out" && ok || bad "a verdict filed on invalid input is pointed out"
+
 # A point-set seed (query delaunay_2d) replays; with a wrong filed verdict it fails.
 expect_rc 0 "replay of a point-set seed" "$tool" replay "$src/corpora/seeds/delaunay_2d/square-cocircular.case"
 grep -q "kind of the point set: triangulated" "$tmp/out" && ok || bad "replay shows the kind of the point set"
@@ -66,7 +98,7 @@ echo 'Falsifiable... (cylinder{p=(0x0p+0, 0x0p+0, 0x0p+0), q=(0x0p+0, 0x0p+0, 0x
 expect_rc 0 "from-rapidcheck" "$tool" from-rapidcheck collide_cylinder_sphere "$tmp/rc.txt" -o "$tmp/rc.case"
 expect_rc 0 "replay of the converted RapidCheck case" "$tool" replay "$tmp/rc.case"
 grep -q "touching" "$tmp/out" && ok || bad "converted RapidCheck case is the touching sphere"
-expect_rc 1 "from-rapidcheck without shapes" "$tool" from-rapidcheck collide_cylinder_sphere /dev/null
+expect_rc 2 "from-rapidcheck without shapes" "$tool" from-rapidcheck collide_cylinder_sphere /dev/null
 
 # from-fuzz: raw bytes (mode byte, then doubles) become a case that replays.
 python3 - "$tmp/crash" <<'PY'

@@ -43,6 +43,8 @@ struct Series {
 /// Everything reported about one query of a campaign.
 struct QueryReport {
   std::string name, summary;
+  int requested = 0;             ///< cases asked for
+  bool stopped_by_time = false;  ///< --seconds ran out before every requested case ran
   int cases = 0, valid = 0, prod_hits = 0, truth_hits = 0;
   std::map<std::string, int> verdicts;
   int disagree = 0, excused = 0, beyond = 0, check_failures = 0;
@@ -73,6 +75,8 @@ struct QueryReport {
 /// Everything reported about one point-set query (delaunay_2d) of a campaign.
 struct PointSetReport {
   std::string name, summary;
+  int requested = 0;             ///< point sets asked for
+  bool stopped_by_time = false;  ///< --seconds ran out first
   int sets = 0;             ///< point sets run
   std::size_t points = 0;   ///< points in all of them
   std::map<std::string, int> modes;  ///< sets by generator mode
@@ -88,11 +92,17 @@ struct PointSetReport {
 
 /// One campaign run: what was run, and how to run it again.
 struct RunInfo {
+  std::string version;     ///< the build's version (geomcheck --version)
+  std::string started;     ///< UTC start time, ISO 8601
+  std::string command;     ///< the command line as given
   unsigned long long seed = 0;
   std::string per_query;   ///< the case counts, in words
   std::string rerun;       ///< the command line that reproduces the run
   std::string under_test;  ///< "production" or a variant's name
 };
+
+/// The version of report.json's layout (reports/report.schema.json).
+inline constexpr int kReportSchemaVersion = 2;
 
 /// Writes report.json.
 void write_json(const std::filesystem::path& file, const RunInfo& run, std::vector<QueryReport>& reps,
