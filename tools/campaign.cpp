@@ -83,6 +83,7 @@ class QueryRun {
     if (!impl_) impl_ = &production_of<Q>();
     rep_.name = info(Q).name;
     rep_.summary = info(Q).summary;
+    rep_.subject = impl_->name;
     rep_.tol = tolerances(Q);
     rep_.depth_is_bound = Spec<Q>::claims().depth == Claims::Depth::UpperBound;
   }
@@ -229,10 +230,12 @@ class QueryRun {
     }
   }
 
-  // Every FCL disagreement beyond the band is saved as a case file; the
-  // first few of each kind are drawn.
+  // FCL's disagreements beyond the band: the first kMaxSavedPerKind of each
+  // kind saved as case files (all counted), the first 3 drawn.
   void save_fcl(const Row& r, const char* kind, const std::string& answer) {
     const Evaluation& e = r.e;
+    const int seen = rep_.fcl_drawn[kind]++;
+    if (seen >= report::kMaxSavedPerKind) return;
     const std::filesystem::path dir = out_dir_ / "fcl-disagreements" / rep_.name;
     std::filesystem::create_directories(dir);
     char name[80];
@@ -241,7 +244,7 @@ class QueryRun {
     std::string err;
     if (save_case(dir / name, f, err)) rep_.fcl_cases.push_back((dir / name).string());
     else std::fprintf(stderr, "[campaign] cannot save %s: %s\n", (dir / name).string().c_str(), err.c_str());
-    if (rep_.fcl_drawn[kind]++ < 3) {
+    if (seen < 3) {
       const draw::Answer ans = answer_of(case_of(r), *impl_);
       rep_.fcl_drawings.push_back(draw::views(
           case_of(r).a, case_of(r).b,
@@ -250,12 +253,13 @@ class QueryRun {
     }
   }
 
-  // Every counterexample is saved and drawn (a page beside its case file);
-  // the report shows the first 12 drawings inline.
+  // Counterexamples: every one counted by property, the first
+  // kMaxSavedPerKind of each property saved and drawn (a page beside its
+  // case file); the report shows the first 12 drawings inline.
   void save_counterexample(const Row& r) {
     const Evaluation& e = r.e;
     ++rep_.check_failures;
-    rep_.failures_by_property[r.failure->property]++;
+    if (rep_.failures_by_property[r.failure->property]++ >= report::kMaxSavedPerKind) return;
     const std::filesystem::path cx_dir = out_dir_ / "counterexamples" / rep_.name;
     std::filesystem::create_directories(cx_dir);
     char name[64];

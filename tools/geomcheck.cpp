@@ -20,6 +20,7 @@
 #include "geomcheck/oracles/delaunay_2d.hpp"
 #include "geomcheck/pointset_file.hpp"
 #include "geomcheck/properties/checks.hpp"
+#include "geomcheck/properties/spec.hpp"
 #include "geomcheck/properties/tolerances.hpp"
 #include "geomcheck/shape_traits.hpp"
 #include "peer.hpp"
@@ -148,7 +149,7 @@ Replayed replay_point_set(const fs::path& path, bool quiet) {
 // Replays one case: passed when every check passes and the filed verdict
 // (if any) is the truth's; a verdict filed on invalid input is wrong (the
 // only truth there is "invalid": no hit).
-Replayed replay_one(const fs::path& path, bool quiet) {
+Replayed replay_one(const fs::path& path, bool quiet, const std::string& subject) {
   if (family_of(declared_query(path)) == QueryFamily::PointSet) return replay_point_set(path, quiet);
   const ParseResult pr = load_case(path);
   if (!pr.ok()) return unreadable(path, pr.error);
@@ -156,9 +157,11 @@ Replayed replay_one(const fs::path& path, bool quiet) {
   if (auto err = case_error(f)) return unreadable(path, *err);
   return visit_case(f, [&](auto q, const auto& c) {
     constexpr QueryId Q = decltype(q)::value;
+    const auto* impl = Spec<Q>::subject(subject);
+    if (!impl) return unreadable(path, "no subject '" + subject + "' of query " + info(Q).name);
     const PeerAnswer fcl = peer(c);
-    const Evaluation e = evaluate_with_peer(c, fcl);
-    const CheckResult failure = check_all(c);
+    const Evaluation e = evaluate_with_peer(c, fcl, *impl);
+    const CheckResult failure = check_all(c, *impl);
     const Tolerances tol = tolerances(Q);
     bool filed_ok = true;
     std::string truth_word = verdict_word(Q, e);
@@ -171,7 +174,7 @@ Replayed replay_one(const fs::path& path, bool quiet) {
     }
     std::printf("%s %s\n  query: %s\n%s", pass ? "PASS" : "FAIL", path.string().c_str(), info(Q).name, shapes_text(f).c_str());
     if (!f.found_by.empty()) std::printf("  found by: %s\n", f.found_by.c_str());
-    std::printf("  production: %s\n", e.prod_text.c_str());
+    std::printf("  %s: %s\n", impl == &production_of<Q>() ? "production" : impl->name, e.prod_text.c_str());
     std::printf("  oracle:     %s\n", e.truth_text.c_str());
     std::printf("  FCL:        %s\n", fcl.supported ? fcl.text.c_str() : "(FCL cannot express this query)");
     if (e.valid) {
@@ -228,7 +231,7 @@ std::vector<fs::path> case_files(const std::string& arg) {
 }
 
 // 0 every case passed, 1 a check failed, 2 a file could not be read or parsed.
-int cmd_replay(const std::vector<std::string>& args, bool quiet) {
+int cmd_replay(const std::vector<std::string>& args, bool quiet, const std::string& subject) {
   std::vector<fs::path> files;
   for (const auto& a : args) {
     const auto more = case_files(a);
@@ -236,7 +239,7 @@ int cmd_replay(const std::vector<std::string>& args, bool quiet) {
   }
   int failed = 0, unreadable = 0;
   for (const auto& f : files) {
-    const Replayed r = replay_one(f, quiet);
+    const Replayed r = replay_one(f, quiet, subject);
     failed += r == Replayed::Failed;
     unreadable += r == Replayed::Unreadable;
   }
@@ -326,8 +329,8 @@ void add_campaign(CLI::App& app, CampaignOptions& opt, int& rc) {
   c->add_option("--query", opt.queries, "only this query (repeatable; geomcheck queries lists them)")
       ->check([](const std::string& q) { return family_of(q) ? std::string() : "unknown query '" + q + "'"; });
   c->add_flag("--no-progress", [&opt](std::int64_t) { opt.progress = false; }, "no progress lines on stderr");
-  c->add_option("--variant", opt.variant,
-                "run a known-wrong variant of one query in production's place ('help' lists them)")
+  c->add_option("--subject,--variant", opt.variant,
+                "run a built-in subject of one query in production's place: a known-wrong variant ('help' lists them)")
       ->check([](const std::string& v) {
         if (v == "help") return std::string();
         for (const auto& [name, q] : campaign_variants())
@@ -347,13 +350,16 @@ void add_campaign(CLI::App& app, CampaignOptions& opt, int& rc) {
 void add_replay(CLI::App& app, int& rc) {
   static std::vector<std::string> paths;
   static bool quiet = false;
+  static std::string subject;
   auto* r = app.add_subcommand("replay", "Replays case files (or every *.case under a directory): production, the "
                                          "truth and FCL side by side, the verdict margin and every check. A point-set "
                                          "file (query delaunay_2d) is held to the exact checker and CGAL. Exit status "
                                          "1 when a check fails, 2 when a file cannot be read or parsed.");
   r->add_flag("--quiet", quiet, "one line per passing case");
+  r->add_option("--subject,--variant", subject,
+                "replay against a built-in subject (a known-wrong variant, by name) in production's place");
   r->add_option("paths", paths, "case files or directories")->required();
-  r->callback([&rc] { rc = cmd_replay(paths, quiet); });
+  r->callback([&rc] { rc = cmd_replay(paths, quiet, subject); });
 }
 
 void add_converter(CLI::App& app, bool fuzz, int& rc) {

@@ -154,7 +154,9 @@ void write_query_section(std::ostream& h, QueryReport& r) {
   if (!r.failures_by_property.empty()) {
     h << "<h3>failures</h3><ul>";
     for (const auto& [k, v] : r.failures_by_property) h << "<li>" << html(k) << ": " << v << "</li>";
-    h << "</ul><p>counterexamples (replay with <code>geomcheck replay FILE</code>; each drawn in the "
+    h << "</ul><p>counterexamples (replay with <code>geomcheck replay "
+      << (r.subject == "production" ? std::string() : "--subject " + html(r.subject) + " ")
+      << "FILE</code>; each drawn in the "
          ".html beside it):</p><ul>";
     for (std::size_t k = 0; k < r.counterexamples.size() && k < 50; ++k)
       h << "<li><code>" << html(r.counterexamples[k]) << "</code></li>";
@@ -251,6 +253,7 @@ void write_json(const std::filesystem::path& file, const RunInfo& run, std::vect
      << ",\n  \"version\": " << jstr(run.version) << ",\n  \"started\": " << jstr(run.started)
      << ",\n  \"command_line\": " << jstr(run.command) << ",\n  \"verdict\": " << jstr(passed ? "passed" : "failed")
      << ",\n  \"seed\": " << run.seed << ",\n  \"cases_per_query\": " << jstr(run.per_query)
+     << ",\n  \"saved_cases_per_kind\": " << kMaxSavedPerKind
      << ",\n  \"replay\": " << jstr(run.rerun) << ",\n  \"implementation\": " << jstr(run.under_test)
      << ",\n  \"queries\": [\n";
   for (std::size_t i = 0; i < reps.size(); ++i) {
@@ -335,8 +338,10 @@ void write_counterexample_page(const std::filesystem::path& file, const std::str
   page << "<!doctype html><html lang='en'><head><meta charset='utf-8'><title>" << html(name)
        << "</title><style>body{font-family:sans-serif;margin:2em}figcaption{font-size:12px;margin:4px 0}"
           ".legend{font-size:12px}</style></head><body>"
-       << drawing << "<p>" << html(subject) << " fails this case; <code>geomcheck replay " << html(case_path)
-       << "</code> replays it against production.</p></body></html>\n";
+       << drawing << "<p>" << html(subject) << " fails this case; <code>geomcheck replay "
+       << (subject == "production" ? std::string() : "--subject " + html(subject) + " ") << html(case_path)
+       << "</code> replays it" << (subject == "production" ? "" : " (and without --subject, against production)")
+       << ".</p></body></html>\n";
 }
 
 }  // namespace geomcheck::report

@@ -43,6 +43,7 @@ struct Series {
 /// Everything reported about one query of a campaign.
 struct QueryReport {
   std::string name, summary;
+  std::string subject = "production";  ///< the subject under test (a variant's name)
   int requested = 0;             ///< cases asked for
   bool stopped_by_time = false;  ///< --seconds ran out before every requested case ran
   int cases = 0, valid = 0, prod_hits = 0, truth_hits = 0;
@@ -100,6 +101,10 @@ struct RunInfo {
   std::string rerun;       ///< the command line that reproduces the run
   std::string under_test;  ///< "production" or a variant's name
 };
+
+/// Case files saved per kind (a property's failures, a kind of FCL
+/// disagreement) and query; the rest are counted, not saved.
+inline constexpr int kMaxSavedPerKind = 25;
 
 /// The version of report.json's layout (reports/report.schema.json).
 inline constexpr int kReportSchemaVersion = 2;
