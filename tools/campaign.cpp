@@ -352,6 +352,7 @@ int run_campaign(const CampaignOptions& opt) {
   run.under_test = opt.variant.empty() ? "production" : opt.variant + " (a known-wrong variant)";
   report::write_json(out_dir / "report.json", run, reps, point_sets);
   report::write_html(out_dir / "report.html", run, reps, point_sets);
+  if (!opt.junit.empty()) report::write_junit(opt.junit, run, reps, point_sets);
   int beyond = 0;
   for (const QueryReport& r : reps) beyond += r.beyond + r.check_failures;
   for (const report::PointSetReport& r : point_sets) beyond += r.failures;

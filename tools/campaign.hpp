@@ -26,6 +26,7 @@ struct CampaignOptions {
   /// A known-wrong variant (its spec's variants()) run in
   /// production's place: only its query runs. Empty = production.
   std::string variant;
+  std::string junit;    ///< also write a JUnit XML file here (empty: none)
   std::string version;  ///< for the report: the build's version
   std::string started;  ///< for the report: UTC start time
   std::string command;  ///< for the report: the command line

@@ -328,6 +328,7 @@ void add_campaign(CLI::App& app, CampaignOptions& opt, int& rc) {
   c->add_option("--out", opt.out, "the report's folder")->capture_default_str();
   c->add_option("--query", opt.queries, "only this query (repeatable; geomcheck queries lists them)")
       ->check([](const std::string& q) { return family_of(q) ? std::string() : "unknown query '" + q + "'"; });
+  c->add_option("--junit", opt.junit, "also write the results as JUnit XML (a test case per query and property family)");
   c->add_flag("--no-progress", [&opt](std::int64_t) { opt.progress = false; }, "no progress lines on stderr");
   c->add_option("--subject,--variant", opt.variant,
                 "run a built-in subject of one query in production's place: a known-wrong variant ('help' lists them)")

@@ -332,6 +332,92 @@ void write_html(const std::filesystem::path& file, const RunInfo& run, std::vect
   h << "</body></html>\n";
 }
 
+namespace {
+
+std::string xml(const std::string& s) {
+  std::string o;
+  for (char c : s) {
+    if (c == '<') o += "&lt;";
+    else if (c == '>') o += "&gt;";
+    else if (c == '&') o += "&amp;";
+    else if (c == '"') o += "&quot;";
+    else if (static_cast<unsigned char>(c) < 0x20 && c != '\n') o += ' ';
+    else o += c;
+  }
+  return o;
+}
+
+struct JunitCase {
+  std::string name;
+  int failures = 0;
+  std::string message;  // counts by property, the replay command
+};
+
+// One query's test cases: a family of properties is the part of a
+// property's name before its first '-' (oracle-depth: oracle).
+std::vector<JunitCase> junit_cases(const QueryReport& r, const std::string& replay_prefix) {
+  const char* families[] = {"robust", "oracle", "consistency", "symmetry", "metamorphic", "monotone"};
+  std::vector<JunitCase> out;
+  JunitCase verdict{r.name + ".verdict", r.beyond, ""};
+  if (r.beyond) verdict.message = std::to_string(r.beyond) + " verdicts beyond the band of " + std::to_string(r.valid) + " valid cases\n";
+  out.push_back(verdict);
+  for (const char* f : families) {
+    JunitCase c{r.name + "." + f, 0, ""};
+    for (const auto& [prop, n] : r.failures_by_property)
+      if (prop.compare(0, prop.find('-'), f) == 0) c.failures += n, c.message += prop + ": " + std::to_string(n) + "\n";
+    if (c.failures) {
+      for (const std::string& cx : r.counterexamples)
+        if (cx.find("-" + std::string(f)) != std::string::npos) {
+          c.message += "replay: " + replay_prefix + cx + "\n";
+          break;
+        }
+    }
+    out.push_back(c);
+  }
+  return out;
+}
+
+}  // namespace
+
+void write_junit(const std::filesystem::path& file, const RunInfo& run, const std::vector<QueryReport>& reps,
+                 const std::vector<PointSetReport>& point_sets) {
+  std::vector<JunitCase> cases;
+  for (const QueryReport& r : reps) {
+    const std::string prefix = "geomcheck replay " + (r.subject == "production" ? std::string() : "--subject " + r.subject + " ");
+    for (JunitCase& c : junit_cases(r, prefix)) cases.push_back(std::move(c));
+  }
+  for (const PointSetReport& r : point_sets)
+    for (const char* prop : {"valid", "agrees-with-cgal"}) {
+      JunitCase c{r.name + "." + prop, 0, ""};
+      if (auto it = r.failures_by_property.find(prop); it != r.failures_by_property.end()) c.failures = it->second;
+      if (c.failures) {
+        c.message = std::to_string(c.failures) + " of " + std::to_string(r.sets) + " point sets\n";
+        for (const std::string& cx : r.counterexamples)
+          if (cx.find(prop) != std::string::npos) {
+            c.message += "replay: geomcheck replay " + cx + "\n";
+            break;
+          }
+      }
+      cases.push_back(c);
+    }
+  int failed = 0;
+  for (const JunitCase& c : cases) failed += c.failures > 0;
+  std::ofstream o(file);
+  o << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<testsuites name=\"geomcheck campaign\" tests=\"" << cases.size()
+    << "\" failures=\"" << failed << "\">\n  <testsuite name=\"campaign seed " << run.seed << "\" tests=\""
+    << cases.size() << "\" failures=\"" << failed << "\" timestamp=\"" << xml(run.started) << "\">\n";
+  for (const JunitCase& c : cases) {
+    o << "    <testcase classname=\"geomcheck\" name=\"" << xml(c.name) << "\"";
+    if (!c.failures) {
+      o << "/>\n";
+      continue;
+    }
+    o << ">\n      <failure message=\"" << c.failures << " failing cases\">" << xml(c.message)
+      << "rerun: " << xml(run.rerun) << "</failure>\n    </testcase>\n";
+  }
+  o << "  </testsuite>\n</testsuites>\n";
+}
+
 void write_counterexample_page(const std::filesystem::path& file, const std::string& name, const std::string& drawing,
                                const std::string& subject, const std::string& case_path) {
   std::ofstream page(file);

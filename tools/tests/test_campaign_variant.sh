@@ -10,7 +10,7 @@ set -u
 tool=$1 out=$2
 rm -rf "$out"; mkdir -p "$out"
 fail() { echo "FAIL: $*"; exit 1; }
-"$tool" campaign --seed 20261121 --cases 300 --variant capsule-capsule --no-progress --out "$out/report" \
+"$tool" campaign --seed 20261121 --cases 300 --variant capsule-capsule --no-progress --out "$out/report" --junit "$out/junit.xml" \
   > "$out/campaign.log" 2>&1
 status=$?
 [ "$status" -eq 1 ] || { cat "$out/campaign.log"; fail "exit status $status (1 expected: the variant is wrong)"; }
@@ -28,6 +28,15 @@ assert saved == sum(min(n, cap) for n in q["failures_by_property"].values()), q[
 assert q["check_failures"] == sum(q["failures_by_property"].values()) >= saved
 PY
 grep -q '"implementation": "capsule-capsule' "$out/report/report.json" || fail "report.json does not name the variant"
+grep -q '"verdict": "failed"' "$out/report/report.json" || fail "report.json's overall verdict is not failed"
+# JUnit: a test case per property family, the failing ones carrying a replay command of the variant.
+python3 - "$out/junit.xml" <<'PY' || fail "the JUnit file does not show the failures"
+import sys, xml.etree.ElementTree as ET
+cases = ET.parse(sys.argv[1]).getroot().iter("testcase")
+failed = {c.get("name"): c.find("failure").text for c in cases if c.find("failure") is not None}
+assert "collide_cylinder_capsule.oracle" in failed, failed
+assert "geomcheck replay --subject capsule-capsule " in failed["collide_cylinder_capsule.oracle"], failed
+PY
 for c in "$dir"/*.case; do
   page="${c%.case}.html"
   [ -s "$page" ] || fail "no drawing beside $c"

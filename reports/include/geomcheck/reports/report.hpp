@@ -115,6 +115,13 @@ void write_json(const std::filesystem::path& file, const RunInfo& run, std::vect
 /// Writes report.html.
 void write_html(const std::filesystem::path& file, const RunInfo& run, std::vector<QueryReport>& reps,
                 const std::vector<PointSetReport>& point_sets);
+/// Writes a JUnit XML file of the run (for CI dashboards): a test case per
+/// query and family of properties (verdict, robust, oracle, consistency,
+/// symmetry, metamorphic, monotone; a point-set query's valid and
+/// agrees-with-cgal), a failure carrying the counts and the replay command
+/// of a saved counterexample.
+void write_junit(const std::filesystem::path& file, const RunInfo& run, const std::vector<QueryReport>& reps,
+                 const std::vector<PointSetReport>& point_sets);
 /// A counterexample's page: its drawing and the command that replays it.
 void write_counterexample_page(const std::filesystem::path& file, const std::string& name, const std::string& drawing,
                                const std::string& subject, const std::string& case_path);
