@@ -42,19 +42,47 @@ void write_series_json(std::ostream& o, const char* name, Series& s) {
   o << "]}";
 }
 
-std::string hist_svg(const Series& s) {
+// The range of histogram bin i (Series::hist): exactly 0, below 1e-17, a
+// decade, or 1e-4 and above.
+std::string bin_range(std::size_t i) {
+  if (i == 0) return "0";
+  if (i == 1) return "(0, 1e-17)";
+  if (i == 15) return "[1e-4, inf)";
+  return "[1e" + std::to_string(int(i) - 19) + ", 1e" + std::to_string(int(i) - 18) + ")";
+}
+
+// A histogram of log10(error / scale) drawn so that its tails show: bar
+// heights on a log count scale (one case is a visible bar), the count scale
+// labelled, the under- and overflow bins labelled with their real ranges,
+// and the bound drawn as a red line.
+std::string hist_svg(const Series& s, double bound) {
   const auto h = s.hist();
   const int mx = std::max(1, *std::max_element(h.begin(), h.end()));
+  constexpr int kLeft = 34, kBin = 24, kBase = 70, kTall = 56;
+  auto height = [&](int n) { return n <= 0 ? 0 : 4 + static_cast<int>(std::lround((kTall - 4) * std::log10(n) / std::log10(std::max(mx, 2)))); };
   std::ostringstream o;
-  o << "<svg width='330' height='70' role='img'><title>log10 histogram</title>";
+  o << "<svg width='" << kLeft + 16 * kBin + 6 << "' height='" << kBase + 26 << "' role='img' class='hist'>"
+    << "<title>log10 histogram of error / scale, count on a log scale</title>"
+    << "<line x1='" << kLeft - 2 << "' y1='" << kBase - kTall << "' x2='" << kLeft - 2 << "' y2='" << kBase
+    << "' stroke='#888'/><text x='" << kLeft - 4 << "' y='" << kBase - kTall + 8
+    << "' font-size='9' text-anchor='end'>" << mx << "</text><text x='" << kLeft - 4 << "' y='" << kBase
+    << "' font-size='9' text-anchor='end'>1</text>";
   for (std::size_t i = 0; i < h.size(); ++i) {
-    const int bh = h[i] * 50 / mx;
-    o << "<rect x='" << 4 + i * 20 << "' y='" << 55 - bh << "' width='16' height='" << bh
-      << "' fill='#4a78c2'><title>" << (i == 0 ? std::string("0") : "1e" + std::to_string(int(i) - 19)) << ": "
-      << h[i] << "</title></rect>";
+    const int bh = height(h[i]);
+    o << "<rect x='" << kLeft + i * kBin << "' y='" << kBase - bh << "' width='" << kBin - 4 << "' height='" << bh
+      << "' fill='#4a78c2' data-count='" << h[i] << "'><title>" << bin_range(i) << ": " << h[i] << "</title></rect>";
   }
-  o << "<text x='2' y='68' font-size='9'>0</text><text x='60' y='68' font-size='9'>1e-16</text>"
-       "<text x='140' y='68' font-size='9'>1e-12</text><text x='220' y='68' font-size='9'>1e-8</text></svg>";
+  const std::pair<std::size_t, const char*> labels[] = {{0, "0"}, {1, "<1e-17"}, {3, "1e-16"}, {7, "1e-12"}, {11, "1e-8"}, {15, "≥1e-4"}};
+  for (const auto& [i, text] : labels)
+    o << "<text x='" << kLeft + i * kBin << "' y='" << kBase + 12 << "' font-size='9'>" << text << "</text>";
+  if (bound > 0 && std::isfinite(bound)) {
+    const double e = std::log10(bound);
+    const double x = kLeft + std::clamp(e + 19, 1.0, 15.0) * kBin;
+    o << "<line x1='" << x << "' y1='" << kBase - kTall - 4 << "' x2='" << x << "' y2='" << kBase + 2
+      << "' stroke='#c00' stroke-dasharray='3,2'><title>bound " << jnum(bound) << "</title></line><text x='" << x + 2
+      << "' y='" << kBase + 23 << "' font-size='9' fill='#c00'>bound " << jnum(bound) << "</text>";
+  }
+  o << "</svg>";
   return o.str();
 }
 
@@ -101,7 +129,7 @@ void error_row(std::ostream& h, const char* n, Series& s, double bound) {
   const double mx = s.pct(1.0);
   h << "<tr><td class='l'>" << n << "</td><td>" << (bound > 0 ? jnum(bound) : std::string("&ndash;")) << "</td><td>" << s.v.size() << "</td><td>" << jnum(s.pct(0.5))
     << "</td><td>" << jnum(s.pct(0.9)) << "</td><td>" << jnum(s.pct(0.99)) << "</td><td class='"
-    << (bound > 0 && mx > bound ? "bad" : "") << "'>" << jnum(mx) << "</td><td>" << hist_svg(s) << "</td></tr>";
+    << (bound > 0 && mx > bound ? "bad" : "") << "'>" << jnum(mx) << "</td><td>" << hist_svg(s, bound) << "</td></tr>";
 }
 
 // A query's section: its verdicts, errors, depth ratio, failures, drawings.

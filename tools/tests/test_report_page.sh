@@ -42,6 +42,18 @@ views=$(grep -o "<title>[a-z]* view</title>" "$out/dom.html" | wc -l)
 [ "$figures" -gt 0 ] || fail "no counterexample drawn (FCL's cast disagreements are expected at this seed)"
 [ "$views" -eq $((3 * figures)) ] || fail "$figures figures but $views views (three each expected)"
 grep -q "log10 histogram" "$out/dom.html" || fail "no histogram"
+# The tails show: every non-empty bin has a bar of visible height, and the
+# histograms of bounded errors draw their bound.
+python3 - "$out/dom.html" <<'PY' || fail "a histogram hides a non-empty bin, or draws no bound"
+import re, sys
+dom = open(sys.argv[1]).read()
+bars = re.findall(r'<rect [^>]*height="(\d+)"[^>]*data-count="(\d+)"', dom)
+assert bars, "no histogram bars"
+hidden = [(h, n) for h, n in bars if int(n) > 0 and int(h) < 3]
+assert not hidden, f"{len(hidden)} non-empty bins drawn below 3 px: {hidden[:5]}"
+assert "bound " in dom and 'stroke-dasharray="3,2"' in dom, "no bound line"
+print(f"histograms: {sum(int(n) > 0 for h, n in bars)} non-empty bins, all visible")
+PY
 # Every drawing carries the oracle's witness and FCL's answer in its legend,
 # and at this seed both kinds of witness geometry appear.
 witnesses=$(grep -o "&#9679; oracle: \|● oracle: " "$out/dom.html" | wc -l)
