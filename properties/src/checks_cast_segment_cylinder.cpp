@@ -36,11 +36,7 @@ const QuerySpec<QueryId::cast_segment_cylinder>& spec_of<QueryId::cast_segment_c
 namespace {
 
 constexpr QueryId kId = QueryId::cast_segment_cylinder;
-using oracle::Q;
-using oracle::QInterval;
-using oracle::QVec;
 
-bool valid_case(const SegmentCylinderCase& c) { return is_valid(c.a) && is_valid(c.b); }
 
 // Does the segment meet the cylinder grown (sign > 0) or shrunk (sign < 0) by delta?
 bool meets_adjusted(const oracle::QSegment& s, const oracle::QCylinder& c, const Q& delta, int sign) {

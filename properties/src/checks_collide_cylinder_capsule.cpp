@@ -36,11 +36,7 @@ const QuerySpec<QueryId::collide_cylinder_capsule>& spec_of<QueryId::collide_cyl
 namespace {
 
 constexpr QueryId kId = QueryId::collide_cylinder_capsule;
-using oracle::Q;
-using oracle::QInterval;
-using oracle::QVec;
 
-bool valid_case(const CylinderCapsuleCase& c) { return is_valid(c.a) && is_valid(c.b); }
 
 double scale_of(const CylinderCapsuleCase& c) {
   const double m = std::max({max_abs(c.a.p), max_abs(c.a.q), c.a.r, oracle::extent(c.a.p, c.a.q), max_abs(c.b.p),
@@ -141,7 +137,7 @@ CheckResult check_metamorphic(const CylinderCapsuleCase& c, int move, const Cyli
     return a.not_identical();
   };
   return collide_metamorphic(
-      c, move, impl, valid_case, [](const CylinderCapsuleCase& x) { return moves::rigid_slack(x.a); }, kept);
+      c, move, impl, valid_case<CylinderCapsuleCase>, [](const CylinderCapsuleCase& x) { return moves::rigid_slack(x.a); }, kept);
 }
 
 CheckResult check_monotone(const CylinderCapsuleCase& c, const CylinderCapsuleImpl& impl) {

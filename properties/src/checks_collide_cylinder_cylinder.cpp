@@ -46,12 +46,7 @@ const QuerySpec<QueryId::collide_cylinder_cylinder>& spec_of<QueryId::collide_cy
 namespace {
 
 constexpr QueryId kId = QueryId::collide_cylinder_cylinder;
-using oracle::Q;
-using oracle::QInterval;
-using oracle::QVec;
-using oracle::Verdict;
 
-bool valid_case(const CylinderCylinderCase& c) { return is_valid(c.a) && is_valid(c.b); }
 
 double scale_of(const CylinderCylinderCase& c) {
   const double m = std::max({max_abs(c.a.p), max_abs(c.a.q), c.a.r, oracle::extent(c.a.p, c.a.q), max_abs(c.b.p),
@@ -262,7 +257,7 @@ CheckResult check_metamorphic(const CylinderCylinderCase& c, int move, const Cyl
     return a.not_identical();
   };
   auto slack = [](const CylinderCylinderCase& x) { return std::max(moves::rigid_slack(x.a), moves::rigid_slack(x.b)); };
-  return collide_metamorphic(c, move, impl, valid_case, slack, kept);
+  return collide_metamorphic(c, move, impl, valid_case<CylinderCylinderCase>, slack, kept);
 }
 
 CheckResult check_monotone(const CylinderCylinderCase& c, const CylinderCylinderImpl& impl) {

@@ -37,12 +37,7 @@ const QuerySpec<QueryId::collide_cylinder_obb>& spec_of<QueryId::collide_cylinde
 namespace {
 
 constexpr QueryId kId = QueryId::collide_cylinder_obb;
-using oracle::Q;
-using oracle::QInterval;
-using oracle::QVec;
-using oracle::Verdict;
 
-bool valid_case(const CylinderObbCase& c) { return is_valid(c.a) && is_valid(c.b); }
 
 double scale_of(const CylinderObbCase& c) {
   const double m = std::max({max_abs(c.a.p), max_abs(c.a.q), c.a.r, oracle::extent(c.a.p, c.a.q), max_abs(c.b.c),

@@ -39,7 +39,6 @@ namespace {
 
 constexpr QueryId kId = QueryId::collide_cylinder_sphere;
 
-bool sphere_valid_case(const CylinderSphereCase& c) { return is_valid(c.a) && is_valid(c.b); }
 
 }  // namespace
 
@@ -102,7 +101,7 @@ CheckResult check_consistency(const CylinderSphereCase& c, const CylinderSphereI
   const Tolerances tol = tolerances(kId);
   if (std::fabs(length(ct.normal) - 1) > tol.unit) return Failure{"consistency-unit-normal", describe(ct, ov)};
   if (!(ct.depth >= 0)) return Failure{"consistency-depth-nonnegative", describe(ct, ov)};
-  if (!sphere_valid_case(c)) return std::nullopt;
+  if (!valid_case(c)) return std::nullopt;
   // depth equals the overlap of the shapes along the returned normal.
   const double scale = oracle::case_scale(c.a, c.b);
   const oracle::QInterval along = oracle::overlap_along(oracle::to_q(c.a), oracle::to_q(c.b), oracle::to_q(ct.normal));
@@ -120,7 +119,7 @@ CheckResult check_symmetry(const CylinderSphereCase& c, const CylinderSphereImpl
   // Same solid, caps swapped.
   const CylinderSphereCase s{{c.a.q, c.a.p, c.a.r}, c.b};
   const bool ov2 = impl.overlap(s.a, s.b);
-  if (ov2 != ov && sphere_valid_case(c)) {
+  if (ov2 != ov && valid_case(c)) {
     // The truth is the same for both; the one that disagrees with it must be inside the band.
     const Evaluation e = evaluate(s, impl);
     const Evaluation e0 = evaluate(c, impl);
@@ -128,7 +127,7 @@ CheckResult check_symmetry(const CylinderSphereCase& c, const CylinderSphereImpl
       return Failure{"symmetry-caps-swapped", "overlap " + std::string(ov ? "yes" : "no") + " becomes " + (ov2 ? "yes" : "no") +
                                                   " with caps swapped; oracle: " + e0.truth_text};
   }
-  if (ov == ov2 && ov && sphere_valid_case(c)) {
+  if (ov == ov2 && ov && valid_case(c)) {
     const Contact c2 = impl.collide(s.a, s.b);
     const double scale = oracle::case_scale(c.a, c.b);
     const double d = std::fabs(c2.depth - ct.depth) / scale;
@@ -154,11 +153,11 @@ CheckResult check_metamorphic(const CylinderSphereCase& c, int move, const Cylin
     return a.not_identical();
   };
   return collide_metamorphic(
-      c, move, impl, sphere_valid_case, [](const CylinderSphereCase& x) { return moves::rigid_slack(x.a); }, kept);
+      c, move, impl, valid_case<CylinderSphereCase>, [](const CylinderSphereCase& x) { return moves::rigid_slack(x.a); }, kept);
 }
 
 CheckResult check_monotone(const CylinderSphereCase& c, const CylinderSphereImpl& impl) {
-  if (!sphere_valid_case(c) || !impl.overlap(c.a, c.b)) return std::nullopt;
+  if (!valid_case(c) || !impl.overlap(c.a, c.b)) return std::nullopt;
   const double grow[] = {std::nextafter(c.b.r, INFINITY), c.b.r * 2 + 1e-300, c.b.r + 0.5 * c.a.r};
   for (double r : grow) {
     if (!std::isfinite(r)) continue;

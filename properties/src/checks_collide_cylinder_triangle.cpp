@@ -42,12 +42,7 @@ const QuerySpec<QueryId::collide_cylinder_triangle>& spec_of<QueryId::collide_cy
 namespace {
 
 constexpr QueryId kId = QueryId::collide_cylinder_triangle;
-using oracle::Q;
-using oracle::QInterval;
-using oracle::QVec;
-using oracle::Verdict;
 
-bool valid_case(const CylinderTriangleCase& c) { return is_valid(c.a) && is_valid(c.b); }
 
 double scale_of(const CylinderTriangleCase& c) {
   const double m = std::max({max_abs(c.a.p), max_abs(c.a.q), c.a.r, oracle::extent(c.a.p, c.a.q), max_abs(c.b.a),
@@ -177,7 +172,7 @@ CheckResult check_metamorphic(const CylinderTriangleCase& c, int move, const Cyl
     return std::nullopt;
   };
   return collide_metamorphic(
-      c, move, impl, valid_case, [](const CylinderTriangleCase& x) { return moves::rigid_slack(x.a); }, kept);
+      c, move, impl, valid_case<CylinderTriangleCase>, [](const CylinderTriangleCase& x) { return moves::rigid_slack(x.a); }, kept);
 }
 
 CheckResult check_monotone(const CylinderTriangleCase& c, const CylinderTriangleImpl& impl) {

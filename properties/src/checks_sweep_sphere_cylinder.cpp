@@ -43,11 +43,7 @@ const QuerySpec<QueryId::sweep_sphere_cylinder>& spec_of<QueryId::sweep_sphere_c
 namespace {
 
 constexpr QueryId kId = QueryId::sweep_sphere_cylinder;
-using oracle::Q;
-using oracle::QInterval;
-using oracle::QVec;
 
-bool valid_case(const SweepCylinderCase& c) { return is_valid(c.a) && is_valid(c.b); }
 
 double scale_of(const SweepCylinderCase& c) {
   const Vec3 end = c.a.c + c.a.delta;

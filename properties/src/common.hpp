@@ -7,6 +7,17 @@
 
 namespace geomcheck {
 
+using oracle::Q;
+using oracle::QInterval;
+using oracle::QVec;
+using oracle::Verdict;
+
+/// Both shapes of a case valid (is_valid): the input every exact check is owed.
+template <class Case>
+bool valid_case(const Case& c) {
+  return is_valid(c.a) && is_valid(c.b);
+}
+
 /// snprintf into a string, up to three double arguments.
 std::string fmt(const char* f, double a, double b = 0, double c = 0);
 /// "(x, y, z)" with round-trip precision.
