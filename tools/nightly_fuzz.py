@@ -335,7 +335,9 @@ def discover_targets(args):
     queries = set()
     if args.geomcheck and os.path.exists(args.geomcheck):
         rc, out = run([args.geomcheck, "queries"])
-        queries = {line.split()[0] for line in out.splitlines() if line.strip()}
+        # Pair queries only: their findings become case files (from-fuzz); a
+        # point-set target's (delaunay_2d) are filed as raw inputs.
+        queries = {w[0] for w in (line.split() for line in out.splitlines()) if len(w) > 1 and w[1] == "pair"}
     names = args.targets or sorted(n for n in os.listdir(args.fuzz_dir) if n.startswith("fuzz_")
                                    and os.access(os.path.join(args.fuzz_dir, n), os.X_OK))
     targets = []
