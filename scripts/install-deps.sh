@@ -8,7 +8,7 @@ PKGS=(
   libgtest-dev libgmock-dev librapidcheck-dev libbenchmark-dev
   libcgal-dev libfcl-dev libeigen3-dev libboost-dev libgmp-dev libmpfr-dev
   libcli11-dev nlohmann-json3-dev
-  python3
+  python3 python3-jsonschema
   chromium
 )
 missing=()
