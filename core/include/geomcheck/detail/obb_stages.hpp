@@ -1,6 +1,6 @@
 // geomcheck — internal: the cylinder/box query with a chosen cap stage, so
 // that the test tree can hold the stages that production does not use to
-// the same properties (properties/tests/teeth_variants.cpp).
+// the same properties (properties/src/teeth.cpp).
 #pragma once
 
 #include "geomcheck/results.hpp"
