@@ -11,27 +11,22 @@
 namespace geomcheck::bench {
 namespace {
 
-using Bench = PairBench<Capsule, oracles::FclCylinderCapsule>;
+/// What the two depths are, printed with their differences.
+constexpr char kDepthNote[] = "shallow: production's is the minimum, FCL's MPR estimate is not; deep: neither";
 
 /// A random pose: the capsule's first end within reach + 1.5 of the
 /// cylinder's middle, its segment up to 3 long, radius in [0.05, 1.5].
-Bench::Pair random_pair(Rng& rng) {
-  Bench::Pair pr;
-  pr.a = rng.cylinder();
-  const Vec3 mid = 0.5 * pr.a.p + 0.5 * pr.a.q;
-  const double reach = 0.5 * length(pr.a.q - pr.a.p) + pr.a.r;
-  pr.b.p = mid + rng.in_box(reach + 1.5);
-  pr.b.q = pr.b.p + rng.uniform(0.0, 3.0) * rng.direction();
-  pr.b.r = rng.uniform(0.05, 1.5);
-  return pr;
+Capsule random_capsule(Rng& rng, const Cylinder& a) {
+  Capsule b;
+  b.p = rng.around(a, 1.5);
+  b.q = b.p + rng.uniform(0.0, 3.0) * rng.direction();
+  b.r = rng.uniform(0.05, 1.5);
+  return b;
 }
+
+const PairBench<Capsule, oracles::FclCylinderCapsule> kBench{"cylinder/capsule", random_capsule, kDepthNote};
 
 }  // namespace
 }  // namespace geomcheck::bench
 
-int main(int argc, char** argv) {
-  using namespace geomcheck::bench;
-  const Bench bench{"cylinder/capsule", random_pair,
-                    "shallow: production's is the minimum, FCL's MPR estimate is not; deep: neither"};
-  return bench.run(argc, argv);
-}
+int main(int argc, char** argv) { return geomcheck::bench::kBench.run(argc, argv); }

@@ -102,14 +102,7 @@ MeshData heightfield() {
 /// A unit axis: a uniform unit quaternion (rejection in the 4-ball) applied
 /// to +z (the third column of its rotation matrix), normalised.
 Vec3 random_axis(Rng& rng) {
-  double w, x, y, z, n;
-  do {
-    w = rng.uniform(-1, 1), x = rng.uniform(-1, 1), y = rng.uniform(-1, 1), z = rng.uniform(-1, 1);
-    n = w * w + x * x + y * y + z * z;
-  } while (n > 1 || n < 0.01);
-  n = 1 / std::sqrt(n);
-  w *= n, x *= n, y *= n, z *= n;
-  const Vec3 u{2 * (x * z + w * y), 2 * (y * z - w * x), 1 - 2 * (x * x + y * y)};
+  const Vec3 u = rotation_columns(rng.unit_quaternion(0.01))[2];
   return (1 / length(u)) * u;
 }
 
@@ -148,7 +141,7 @@ double ms_since(std::chrono::steady_clock::time_point t0) {
 }
 
 void shuffle_and_convert(Batch& b, Rng& rng) {
-  for (std::size_t i = b.cyl.size(); i > 1; --i) std::swap(b.cyl[i - 1], b.cyl[rng.next() % i]);
+  shuffle(b.cyl, rng);
   b.fcl.reserve(b.cyl.size());
   for (const Cylinder& c : b.cyl) b.fcl.emplace_back(c);
 }
@@ -166,26 +159,12 @@ Inputs make_inputs(std::uint64_t seed) {
   in.all_contacts = static_cast<int>(in.mesh->size());
   const TriangleMesh& m = *in.mesh;
   Rng rng(seed);
-  std::size_t n_hit = 0, n_miss = 0;
-  while (in.random.cyl.size() < kBatch) {
-    const Cylinder c = random_cylinder(rng);
-    const bool hit = overlap(c, m);
-    if (hit ? n_hit >= kBatch / 2 : n_miss >= kBatch / 2) continue;
-    (hit ? n_hit : n_miss)++;
-    in.random.cyl.push_back(c);
-  }
-  while (in.contact.cyl.size() < kBatch) {
-    const Cylinder c = random_cylinder(rng);
-    ++in.contact_draws;
-    if (overlap(c, m)) in.contact.cyl.push_back(c);
-  }
+  auto draw = [&] { return random_cylinder(rng); };
+  auto hits = [&](const Cylinder& c) { return int(overlap(c, m)); };
+  in.random.cyl = half_hitting(kBatch, draw, hits);
+  in.contact.cyl = all_hitting(kBatch, draw, hits, in.contact_draws);
   shuffle_and_convert(in.random, rng);
   shuffle_and_convert(in.contact, rng);
-  return in;
-}
-
-const Inputs& inputs() {
-  static const Inputs in = make_inputs(seed_from_env());
   return in;
 }
 
@@ -301,15 +280,15 @@ void print_batch(const char* set, const Batch& b, const Inputs& in) {
   print_excess(set, "FCL's first contact (max_contacts = 1)", std::move(excess_first));
 }
 
-void print_inputs(const Inputs& in) {
+/// Prints the mesh and the batches, checking the first queries of each
+/// against the brute force on the way (verify: exits on a difference).
+void check_and_print(const Inputs& in) {
   std::printf("mesh: heightfield %u x %u cells over [-%g, %g]^2, %zu faces, %zu vertices (shared); first build: "
               "production %.1f ms, FCL %.1f ms\n",
               kCells, kCells, kHalfSide, kHalfSide, in.mesh->size(), in.mesh->vertices().size(), in.prod_build_ms,
               in.fcl_build_ms);
-  std::printf("cylinder batches: %zu queries each, seed = %llu (0x%llx; GEOMCHECK_BENCH_SEED overrides); selected by "
-              "production's overlap verdicts\n",
-              in.random.cyl.size(), static_cast<unsigned long long>(in.seed),
-              static_cast<unsigned long long>(in.seed));
+  std::printf("cylinder batches: %zu queries each, %s; selected by production's overlap verdicts\n",
+              in.random.cyl.size(), seed_text(in.seed).c_str());
   std::printf("cylinders overlapping the mesh: %zu of %zu drawn for the contact batch (%.0f%%)\n",
               in.contact.cyl.size(), in.contact_draws, 100.0 * in.contact.cyl.size() / in.contact_draws);
   const std::size_t nv = verify_count();
@@ -327,60 +306,45 @@ void print_inputs(const Inputs& in) {
 
 // --- benchmarks --------------------------------------------------------------------
 
-void bm_prod_overlap(benchmark::State& state, const Batch* b) {
-  const TriangleMesh& m = *inputs().mesh;
-  for (auto _ : state) {
-    for (const Cylinder& c : b->cyl) benchmark::DoNotOptimize(overlap(c, m));
-  }
-  set_per_query(state, b->cyl.size());
+/// BM_prod_overlap_<set>, BM_prod_collide_<set>, BM_fcl_collide_<set> and
+/// BM_fcl_collide_first_<set> over the batch.
+void register_batch(const char* set, const Batch& b, const Inputs& in) {
+  const std::string s = set_suffix(set);
+  const TriangleMesh& m = *in.mesh;
+  const oracles::FclMesh& fm = *in.fcl_mesh;
+  const int all = in.all_contacts;
+  register_each("BM_prod_overlap" + s, b.cyl, [&m](const Cylinder& c) { return overlap(c, m); });
+  register_each("BM_prod_collide" + s, b.cyl, [&m](const Cylinder& c) {
+    std::uint32_t face = 0;
+    const Contact hit = collide(c, m, &face);
+    benchmark::DoNotOptimize(face);
+    return hit;
+  });
+  register_each("BM_fcl_collide" + s, b.fcl,
+                [&fm, all](const oracles::FclCylinder& c) { return oracles::fcl_collide_prepared(c, fm, all); });
+  register_each("BM_fcl_collide_first" + s, b.fcl,
+                [&fm](const oracles::FclCylinder& c) { return oracles::fcl_collide_prepared(c, fm, 1); });
 }
 
-void bm_prod_collide(benchmark::State& state, const Batch* b) {
-  const TriangleMesh& m = *inputs().mesh;
-  for (auto _ : state) {
-    for (const Cylinder& c : b->cyl) {
-      std::uint32_t face = 0;
-      benchmark::DoNotOptimize(collide(c, m, &face));
-      benchmark::DoNotOptimize(face);
+/// BM_prod_build and BM_fcl_build: one build of the mesh an iteration
+/// (their batch of 1 told to `reporter`).
+void register_builds(const Inputs& in, CaptureReporter& reporter) {
+  benchmark::RegisterBenchmark("BM_prod_build", [&in](benchmark::State& state) {
+    for (auto _ : state) {
+      const TriangleMesh m(in.data.vertices, in.data.faces);
+      benchmark::DoNotOptimize(m.bvh().nodes.data());
     }
-  }
-  set_per_query(state, b->cyl.size());
-}
-
-void bm_fcl_collide(benchmark::State& state, const Batch* b, bool first_only) {
-  const oracles::FclMesh& m = *inputs().fcl_mesh;
-  const int max_contacts = first_only ? 1 : inputs().all_contacts;
-  for (auto _ : state) {
-    for (const oracles::FclCylinder& c : b->fcl)
-      benchmark::DoNotOptimize(oracles::fcl_collide_prepared(c, m, max_contacts));
-  }
-  set_per_query(state, b->fcl.size());
-}
-
-void bm_prod_build(benchmark::State& state) {
-  const MeshData& d = inputs().data;
-  for (auto _ : state) {
-    const TriangleMesh m(d.vertices, d.faces);
-    benchmark::DoNotOptimize(m.bvh().nodes.data());
-  }
-  set_per_query(state, 1);
-}
-
-void bm_fcl_build(benchmark::State& state) {
-  const TriangleMesh& src = *inputs().mesh;
-  for (auto _ : state) {
-    const oracles::FclMesh m(src);
-    benchmark::DoNotOptimize(&m.model);
-  }
-  set_per_query(state, 1);
-}
-
-void register_batch(const char* set, const Batch& b) {
-  const std::string s = set;
-  benchmark::RegisterBenchmark(("BM_prod_overlap_" + s).c_str(), bm_prod_overlap, &b);
-  benchmark::RegisterBenchmark(("BM_prod_collide_" + s).c_str(), bm_prod_collide, &b);
-  benchmark::RegisterBenchmark(("BM_fcl_collide_" + s).c_str(), bm_fcl_collide, &b, false);
-  benchmark::RegisterBenchmark(("BM_fcl_collide_first_" + s).c_str(), bm_fcl_collide, &b, true);
+    set_per_query(state, 1);
+  })->Unit(benchmark::kMillisecond);
+  benchmark::RegisterBenchmark("BM_fcl_build", [&in](benchmark::State& state) {
+    for (auto _ : state) {
+      const oracles::FclMesh m(*in.mesh);
+      benchmark::DoNotOptimize(&m.model);
+    }
+    set_per_query(state, 1);
+  })->Unit(benchmark::kMillisecond);
+  reporter.set_batch("BM_prod_build", 1);
+  reporter.set_batch("BM_fcl_build", 1);
 }
 
 }  // namespace
@@ -388,23 +352,17 @@ void register_batch(const char* set, const Batch& b) {
 
 int main(int argc, char** argv) {
   using namespace geomcheck::bench;
-  print_inputs(inputs());
-  register_batch("random", inputs().random);
-  register_batch("contact", inputs().contact);
-  benchmark::RegisterBenchmark("BM_prod_build", bm_prod_build)->Unit(benchmark::kMillisecond);
-  benchmark::RegisterBenchmark("BM_fcl_build", bm_fcl_build)->Unit(benchmark::kMillisecond);
+  const Inputs in = make_inputs(seed_from_env());
+  check_and_print(in);
   CaptureReporter reporter(kBatch);
-  reporter.set_batch("BM_prod_build", 1);
-  reporter.set_batch("BM_fcl_build", 1);
-  if (int rc = run_benchmarks(argc, argv, reporter)) return rc;
-  print_summary(
-      reporter, {
-                    {"collide fcl/prod (random)", {"BM_fcl_collide_random", "BM_prod_collide_random"}},
-                    {"collide fcl/prod (contact)", {"BM_fcl_collide_contact", "BM_prod_collide_contact"}},
-                    {"collide fcl-first/prod (random)", {"BM_fcl_collide_first_random", "BM_prod_collide_random"}},
-                    {"collide fcl-first/prod (contact)", {"BM_fcl_collide_first_contact", "BM_prod_collide_contact"}},
-                    {"build fcl/prod", {"BM_fcl_build", "BM_prod_build"}},
-                });
+  register_batch("random", in.random, in);
+  register_batch("contact", in.contact, in);
+  register_builds(in, reporter);
+  if (int rc = run_and_summarise(argc, argv, reporter,
+                                 {fcl_over_prod("collide", "random"), fcl_over_prod("collide", "contact"),
+                                  fcl_over_prod("collide", "random", "first"),
+                                  fcl_over_prod("collide", "contact", "first"), fcl_over_prod("build")}))
+    return rc;
   const double pb = reporter.ns_per_query("BM_prod_build"), fb = reporter.ns_per_query("BM_fcl_build");
   if (pb > 0 && fb > 0) std::printf("build per mesh: production %.2f ms, FCL %.2f ms\n", pb * 1e-6, fb * 1e-6);
   return 0;

@@ -1,5 +1,6 @@
-// geomcheck benchmarks — shared pieces: the seed, the per-query time capture
-// and the ratio table printed after the run.
+// geomcheck benchmarks — shared pieces: the seed, the benchmarks of a
+// query over a batch, the per-query time capture and the ratio table
+// printed after the run.
 //
 // Every benchmark runs over the SAME pre-generated batch of inputs (one
 // iteration = one pass over the batch) and reports items processed, so
@@ -31,12 +32,55 @@ inline std::uint64_t seed_from_env() {
   return kDefaultSeed;
 }
 
+/// "seed = <n> (0x<n>; GEOMCHECK_BENCH_SEED overrides)", as the programs print it.
+inline std::string seed_text(std::uint64_t seed) {
+  char buf[96];
+  std::snprintf(buf, sizeof buf, "seed = %llu (0x%llx; GEOMCHECK_BENCH_SEED overrides)",
+                static_cast<unsigned long long>(seed), static_cast<unsigned long long>(seed));
+  return buf;
+}
+
 /// Marks a benchmark's work: `batch` queries per iteration.
 inline void set_per_query(benchmark::State& state, std::size_t batch) {
   state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations()) * static_cast<std::int64_t>(batch));
   state.counters["per_query"] = benchmark::Counter(static_cast<double>(batch),
                                                    benchmark::Counter::kIsIterationInvariantRate |
                                                        benchmark::Counter::kInvert);
+}
+
+/// Times `query` on every item of `items`, one pass over them an iteration.
+template <class T, class Query>
+void time_each(benchmark::State& state, const std::vector<T>& items, const Query& query) {
+  for (auto _ : state) {
+    for (const T& x : items) benchmark::DoNotOptimize(query(x));
+  }
+  set_per_query(state, items.size());
+}
+
+/// Registers the benchmark `name`: time_each of `query` over `items`, which
+/// must outlive the run.
+template <class T, class Query>
+benchmark::internal::Benchmark* register_each(const std::string& name, const std::vector<T>& items, Query query) {
+  return benchmark::RegisterBenchmark(name.c_str(),
+                                      [&items, query](benchmark::State& state) { time_each(state, items, query); });
+}
+
+/// "_<set>" appended to a benchmark's name, nothing for the unnamed set.
+inline std::string set_suffix(const std::string& set) { return set.empty() ? "" : "_" + set; }
+
+/// A ratio of the summary: its label and the benchmarks (slow, fast).
+using Ratio = std::pair<std::string, std::pair<std::string, std::string>>;
+
+/// "<query> fcl[-<variant>]/prod[ (<set>)]": BM_fcl_<query>[_<variant>][_<set>]
+/// over BM_prod_<query>[_<set>].
+inline Ratio fcl_over_prod(const std::string& query, const std::string& set = "", const std::string& variant = "") {
+  return {query + " fcl" + (variant.empty() ? "" : "-" + variant) + "/prod" + (set.empty() ? "" : " (" + set + ")"),
+          {"BM_fcl_" + query + set_suffix(variant) + set_suffix(set), "BM_prod_" + query + set_suffix(set)}};
+}
+
+/// "<query> exact-oracle/prod": BM_oracle_<query> over BM_prod_<query>.
+inline Ratio oracle_over_prod(const std::string& query) {
+  return {query + " exact-oracle/prod", {"BM_oracle_" + query, "BM_prod_" + query}};
 }
 
 /// Console output as usual, plus the CPU time per query of every run (CPU
@@ -105,8 +149,7 @@ inline int run_benchmarks(int argc, char** argv, CaptureReporter& reporter) {
 /// Prints the ns/query table and "ratio <label> = <slow/fast>x" for each
 /// (label, slow, fast) triple whose both benchmarks ran. Returns the ratios
 /// by label (missing ones are absent).
-inline std::map<std::string, double> print_summary(
-    const CaptureReporter& rep, const std::vector<std::pair<std::string, std::pair<std::string, std::string>>>& ratios) {
+inline std::map<std::string, double> print_summary(const CaptureReporter& rep, const std::vector<Ratio>& ratios) {
   std::printf("\n%-28s %12s\n", "benchmark", "CPU ns/query");
   for (const std::string& name : rep.names()) std::printf("%-28s %12.2f\n", name.c_str(), rep.ns_per_query(name));
   std::map<std::string, double> out;
@@ -120,6 +163,17 @@ inline std::map<std::string, double> print_summary(
     std::printf("ratio %s = %.1fx  (%.2f ns / %.2f ns)\n", label.c_str(), slow / fast, slow, fast);
   }
   return out;
+}
+
+/// The end of a program: runs the registered benchmarks, then prints the
+/// ns/query table and `ratios` (print_summary), the measured ratios in
+/// `*measured` when given. Returns main's exit code.
+inline int run_and_summarise(int argc, char** argv, CaptureReporter& reporter, const std::vector<Ratio>& ratios,
+                             std::map<std::string, double>* measured = nullptr) {
+  if (int rc = run_benchmarks(argc, argv, reporter)) return rc;
+  const std::map<std::string, double> out = print_summary(reporter, ratios);
+  if (measured) *measured = out;
+  return 0;
 }
 
 }  // namespace geomcheck::bench

@@ -62,6 +62,7 @@
 #include <fcl/narrowphase/distance.h>
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -110,20 +111,12 @@ Cylinder random_cylinder(Rng& rng) {
 }
 
 Obb random_obb(Rng& rng) {
-  // Uniform rotation from a uniform unit quaternion (rejection in the 4-ball).
-  double w, x, y, z, n2;
-  do {
-    w = rng.uniform(-1, 1), x = rng.uniform(-1, 1), y = rng.uniform(-1, 1), z = rng.uniform(-1, 1);
-    n2 = w * w + x * x + y * y + z * z;
-  } while (!(n2 > 1e-4 && n2 <= 1));
-  const double s = 1 / std::sqrt(n2);
-  w *= s, x *= s, y *= s, z *= s;
+  // Uniform rotation from a uniform unit quaternion (rejection in the
+  // 4-ball, squared norms above 1e-4).
+  const std::array<double, 4> q = rng.unit_quaternion(std::nextafter(1e-4, 1.0));
   Obb b;
   b.c = rng.in_box(kBoxHalf);
-  // Columns of the rotation matrix (orthonormal to rounding).
-  b.axes[0] = {1 - 2 * (y * y + z * z), 2 * (x * y + w * z), 2 * (x * z - w * y)};
-  b.axes[1] = {2 * (x * y - w * z), 1 - 2 * (x * x + z * z), 2 * (y * z + w * x)};
-  b.axes[2] = {2 * (x * z + w * y), 2 * (y * z - w * x), 1 - 2 * (x * x + y * y)};
+  b.axes = rotation_columns(q);
   b.e = {rng.uniform(0.2, 0.6), rng.uniform(0.2, 0.6), rng.uniform(0.2, 0.6)};
   return b;
 }
@@ -261,11 +254,6 @@ void count_verdict(SetStats& st, const Pair<A>& pr, const oc::DistanceResult& r)
     st.undecided.push_back(describe(pr) + "  [" + r.note + "]");
 }
 
-template <class A>
-void shuffle(Rng& rng, std::vector<Pair<A>>& v) {
-  for (std::size_t i = v.size(); i > 1; --i) std::swap(v[i - 1], v[rng.next() % i]);
-}
-
 /// Fills a set that fell short (attempt limit) up to n by repeating its cases.
 template <class A>
 void fill(Set<A>& s, std::size_t n, const char* what) {
@@ -305,7 +293,7 @@ Set<A> make_random(Rng& rng) {
     s.pairs.push_back(pr);
   }
   fill(s, kBatch, "random set");
-  shuffle(rng, s.pairs);
+  shuffle(s.pairs, rng);
   return s;
 }
 
@@ -652,18 +640,18 @@ void generate(Sets<A>& s, std::uint64_t seed, std::uint64_t stream, std::size_t 
   };
   auto t = std::chrono::steady_clock::now();
   Rng r1(seed ^ (0x1111 * stream)), r2(seed ^ (0x1111 * (stream + 1))), r3(seed ^ (0x1111 * (stream + 2)));
+  // The random or near set just made (since t): FCL's check, the printout.
+  auto made = [&](Set<A>& set, const char* name) {
+    if constexpr (std::is_same_v<A, Cylinder>) fcl_check(set);
+    print_set(pair_name(k), name, set.st);
+    std::printf("  (generated in %.1f s)\n", since(t));
+    std::fflush(stdout);
+    t = std::chrono::steady_clock::now();
+  };
   s.random = make_random<A>(r1);
-  if constexpr (std::is_same_v<A, Cylinder>) fcl_check(s.random);
-  print_set(pair_name(k), "random", s.random.st);
-  std::printf("  (generated in %.1f s)\n", since(t));
-  std::fflush(stdout);
-  t = std::chrono::steady_clock::now();
+  made(s.random, "random");
   s.near = make_near<A>(r2);
-  if constexpr (std::is_same_v<A, Cylinder>) fcl_check(s.near);
-  print_set(pair_name(k), "near", s.near.st);
-  std::printf("  (generated in %.1f s)\n", since(t));
-  std::fflush(stdout);
-  t = std::chrono::steady_clock::now();
+  made(s.near, "near");
   s.depth = make_depth<A>(r3, n_depth);
   std::printf("%s depth: %zu certified overlapping cases (%zu attempts, %zu exceptions; generated in %.1f s)\n",
               pair_name(k), s.depth.pairs.size(), s.depth.st.attempts, s.depth.st.exceptions, since(t));
@@ -816,11 +804,10 @@ int main(int argc, char** argv) {
   const std::uint64_t seed = seed_from_env();
   const std::size_t n_depth = depth_cases_from_env();
   const double depth_budget = depth_budget_from_env();
-  std::printf("engine benchmark: seed = %llu (0x%llx; GEOMCHECK_BENCH_SEED overrides); %zu pairs per random/near "
-              "set, up to %zu per depth set (GEOMCHECK_BENCH_DEPTH_CASES overrides), a depth pass starting no new "
-              "case after %g s (GEOMCHECK_BENCH_DEPTH_SECONDS overrides)\n",
-              static_cast<unsigned long long>(seed), static_cast<unsigned long long>(seed), kBatch, n_depth,
-              depth_budget);
+  std::printf("engine benchmark: %s; %zu pairs per random/near set, up to %zu per depth set "
+              "(GEOMCHECK_BENCH_DEPTH_CASES overrides), a depth pass starting no new case after %g s "
+              "(GEOMCHECK_BENCH_DEPTH_SECONDS overrides)\n",
+              seed_text(seed).c_str(), kBatch, n_depth, depth_budget);
   std::printf("shapes of size ~1 centred in [-%g, %g]^3; near: certified |d| < %.0e * scale (target offset within "
               "+-%.0e * scale); depth: penetration(.., %.0e)\n",
               kBoxHalf, kBoxHalf, kNearRel, kOffsetRel, kDepthRel);

@@ -1,6 +1,7 @@
 // geomcheck benchmarks — a cylinder against another convex shape,
 // production against FCL on the same inputs, in one run (the capsule, box,
-// triangle and cylinder pairs).
+// triangle and cylinder pairs; the sphere's program takes its batch and
+// benchmarks from here).
 //
 // Two batches of kPairBatch pairs from a fixed seed (printed), each
 // shuffled so that branches are not predictable:
@@ -57,16 +58,34 @@ struct PairBench {
     std::size_t contact_draws = 0;  ///< poses drawn for the contact batch
   };
 
-  const char* name;            ///< e.g. "cylinder/capsule"
-  Pair (*random_pair)(Rng&);   ///< one random pose
-  const char* depth_note;      ///< what the two depths are, printed with their differences
+  const char* name;                         ///< e.g. "cylinder/capsule"
+  B (*random_b)(Rng&, const Cylinder& a);  ///< B in a random pose near `a` (a random cylinder, drawn first)
+  const char* depth_note;                   ///< what the two depths are, printed with their differences
   /// The selecting verdict: 1 overlapping (or touching), 0 apart, -1
   /// undecided (the pose is skipped); null: production's overlap.
   int (*verdict)(const Pair&) = nullptr;
   const char* selected_by = "production";  ///< whose verdict `verdict` is
 
+  /// One random pose: a random cylinder, then B near it.
+  Pair random_pair(Rng& rng) const {
+    Pair pr;
+    pr.a = rng.cylinder();
+    pr.b = random_b(rng, pr.a);
+    return pr;
+  }
+
+  /// The selecting verdict of a pose (production's overlap unless `verdict` is given).
+  int hit_of(const Pair& pr) const { return verdict ? verdict(pr) : int(overlap(pr.a, pr.b)); }
+
+  /// kPairBatch random poses, exactly half of them overlapping according to
+  /// the selecting verdict (undecided ones counted in `undecided`).
+  std::vector<Pair> half_overlapping(Rng& rng, std::size_t& undecided) const {
+    return half_hitting(kPairBatch, [&] { return random_pair(rng); }, [&](const Pair& pr) { return hit_of(pr); },
+                        &undecided);
+  }
+
   static void shuffle_and_convert(Batch& b, Rng& rng) {
-    for (std::size_t i = b.pairs.size(); i > 1; --i) std::swap(b.pairs[i - 1], b.pairs[rng.next() % i]);
+    shuffle(b.pairs, rng);
     b.fcl.reserve(b.pairs.size());
     for (const Pair& pr : b.pairs) b.fcl.emplace_back(pr.a, pr.b);
   }
@@ -75,70 +94,26 @@ struct PairBench {
     Inputs in;
     in.seed = seed;
     Rng rng(seed);
-    auto hit_of = [&](const Pair& pr) { return verdict ? verdict(pr) : int(overlap(pr.a, pr.b)); };
-    std::size_t n_hit = 0, n_miss = 0;
-    while (in.random.pairs.size() < kPairBatch) {
-      const Pair pr = random_pair(rng);
-      const int hit = hit_of(pr);
-      if (hit < 0) {
-        ++in.undecided;
-        continue;
-      }
-      if (hit ? n_hit >= kPairBatch / 2 : n_miss >= kPairBatch / 2) continue;
-      (hit ? n_hit : n_miss)++;
-      in.random.pairs.push_back(pr);
-    }
-    while (in.contact.pairs.size() < kPairBatch) {
-      const Pair pr = random_pair(rng);
-      const int hit = hit_of(pr);
-      ++in.contact_draws;
-      in.undecided += hit < 0;
-      if (hit > 0) in.contact.pairs.push_back(pr);
-    }
+    in.random.pairs = half_overlapping(rng, in.undecided);
+    in.contact.pairs = all_hitting(kPairBatch, [&] { return random_pair(rng); },
+                                   [&](const Pair& pr) { return hit_of(pr); }, in.contact_draws, &in.undecided);
     shuffle_and_convert(in.random, rng);
     shuffle_and_convert(in.contact, rng);
     return in;
   }
 
-  static void bm_prod_overlap(benchmark::State& state, const Batch* b) {
-    for (auto _ : state) {
-      for (const Pair& pr : b->pairs) benchmark::DoNotOptimize(overlap(pr.a, pr.b));
-    }
-    set_per_query(state, b->pairs.size());
-  }
-  static void bm_prod_collide(benchmark::State& state, const Batch* b) {
-    for (auto _ : state) {
-      for (const Pair& pr : b->pairs) benchmark::DoNotOptimize(collide(pr.a, pr.b));
-    }
-    set_per_query(state, b->pairs.size());
-  }
-  static void bm_fcl_overlap(benchmark::State& state, const Batch* b) {
-    for (auto _ : state) {
-      for (const auto& pr : b->fcl) benchmark::DoNotOptimize(oracles::fcl_overlap_prepared(pr));
-    }
-    set_per_query(state, b->fcl.size());
-  }
-  static void bm_fcl_collide(benchmark::State& state, const Batch* b) {
-    for (auto _ : state) {
-      for (const auto& pr : b->fcl) benchmark::DoNotOptimize(oracles::fcl_collide_prepared(pr));
-    }
-    set_per_query(state, b->fcl.size());
-  }
-  // Reference only: validation + conversion + guarded fcl::collide, per query.
-  static void bm_fcl_collide_adapter(benchmark::State& state, const Batch* b) {
-    for (auto _ : state) {
-      for (const Pair& pr : b->pairs) benchmark::DoNotOptimize(oracles::fcl_collide(pr.a, pr.b));
-    }
-    set_per_query(state, b->pairs.size());
-  }
-
-  static void register_batch(const char* set, const Batch& b) {
-    const std::string s = set;
-    benchmark::RegisterBenchmark(("BM_prod_overlap_" + s).c_str(), bm_prod_overlap, &b);
-    benchmark::RegisterBenchmark(("BM_prod_collide_" + s).c_str(), bm_prod_collide, &b);
-    benchmark::RegisterBenchmark(("BM_fcl_overlap_" + s).c_str(), bm_fcl_overlap, &b);
-    benchmark::RegisterBenchmark(("BM_fcl_collide_" + s).c_str(), bm_fcl_collide, &b);
-    benchmark::RegisterBenchmark(("BM_fcl_collide_adapter_" + s).c_str(), bm_fcl_collide_adapter, &b);
+  /// BM_prod_overlap, BM_prod_collide, BM_fcl_overlap, BM_fcl_collide and
+  /// BM_fcl_collide_adapter (each followed by _<set> unless `set` is empty)
+  /// over the batch.
+  static void register_batch(const std::string& set, const Batch& b) {
+    const std::string s = set_suffix(set);
+    register_each("BM_prod_overlap" + s, b.pairs, [](const Pair& pr) { return overlap(pr.a, pr.b); });
+    register_each("BM_prod_collide" + s, b.pairs, [](const Pair& pr) { return collide(pr.a, pr.b); });
+    register_each("BM_fcl_overlap" + s, b.fcl, [](const Prepared& pr) { return oracles::fcl_overlap_prepared(pr); });
+    register_each("BM_fcl_collide" + s, b.fcl, [](const Prepared& pr) { return oracles::fcl_collide_prepared(pr); });
+    // Reference only: validation + conversion + guarded fcl::collide, per query.
+    register_each("BM_fcl_collide_adapter" + s, b.pairs,
+                  [](const Pair& pr) { return oracles::fcl_collide(pr.a, pr.b); });
   }
 
   void print_batch(const char* set, const Batch& b) const {
@@ -171,10 +146,8 @@ struct PairBench {
   /// The whole program: inputs, benchmarks, the ns/query table and ratios.
   int run(int argc, char** argv) const {
     const Inputs in = make_inputs(seed_from_env());
-    std::printf("%s batches: %zu pairs each, seed = %llu (0x%llx; GEOMCHECK_BENCH_SEED overrides); selected by %s's "
-                "verdicts (%zu undecided poses skipped)\n",
-                name, in.random.pairs.size(), static_cast<unsigned long long>(in.seed),
-                static_cast<unsigned long long>(in.seed), selected_by, in.undecided);
+    std::printf("%s batches: %zu pairs each, %s; selected by %s's verdicts (%zu undecided poses skipped)\n", name,
+                in.random.pairs.size(), seed_text(in.seed).c_str(), selected_by, in.undecided);
     std::printf("random poses overlapping (or touching): %zu of %zu drawn for the contact batch (%.0f%%)\n",
                 in.contact.pairs.size(), in.contact_draws, 100.0 * in.contact.pairs.size() / in.contact_draws);
     print_batch("random", in.random);
@@ -184,14 +157,9 @@ struct PairBench {
     register_batch("random", in.random);
     register_batch("contact", in.contact);
     CaptureReporter reporter(kPairBatch);
-    if (int rc = run_benchmarks(argc, argv, reporter)) return rc;
-    print_summary(reporter, {
-                                {"overlap fcl/prod (random)", {"BM_fcl_overlap_random", "BM_prod_overlap_random"}},
-                                {"collide fcl/prod (random)", {"BM_fcl_collide_random", "BM_prod_collide_random"}},
-                                {"overlap fcl/prod (contact)", {"BM_fcl_overlap_contact", "BM_prod_overlap_contact"}},
-                                {"collide fcl/prod (contact)", {"BM_fcl_collide_contact", "BM_prod_collide_contact"}},
-                            });
-    return 0;
+    return run_and_summarise(argc, argv, reporter,
+                             {fcl_over_prod("overlap", "random"), fcl_over_prod("collide", "random"),
+                              fcl_over_prod("overlap", "contact"), fcl_over_prod("collide", "contact")});
   }
 };
 

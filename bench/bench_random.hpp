@@ -1,10 +1,15 @@
 // geomcheck benchmarks — deterministic input generation (same numbers on
 // every platform: no std:: distributions, whose output is implementation
-// defined).
+// defined), and the batches made from it: balanced or all hitting, shuffled
+// so that branches are not predictable.
 #pragma once
 
+#include <array>
 #include <cmath>
+#include <cstddef>
 #include <cstdint>
+#include <utility>
+#include <vector>
 
 #include "geomcheck/shapes.hpp"
 
@@ -41,9 +46,78 @@ class Rng {
     c.r = uniform(0.1, 1.5);
     return c;
   }
+  /// A point uniform in the cube of half side reach + margin around `c`'s
+  /// middle, reach being half its length plus its radius.
+  Vec3 around(const Cylinder& c, double margin) {
+    const Vec3 mid = 0.5 * c.p + 0.5 * c.q;
+    const double reach = 0.5 * length(c.q - c.p) + c.r;
+    return mid + in_box(reach + margin);
+  }
+  /// A uniform unit quaternion {w, x, y, z}: rejection in the 4-ball,
+  /// keeping squared norms in [min_norm2, 1], then normalised.
+  std::array<double, 4> unit_quaternion(double min_norm2) {
+    double w, x, y, z, n;
+    do {
+      w = uniform(-1, 1), x = uniform(-1, 1), y = uniform(-1, 1), z = uniform(-1, 1);
+      n = w * w + x * x + y * y + z * z;
+    } while (n > 1 || n < min_norm2);
+    n = 1 / std::sqrt(n);
+    return {w * n, x * n, y * n, z * n};
+  }
 
  private:
   std::uint64_t s_;
 };
+
+/// The columns of the rotation matrix of a unit quaternion {w, x, y, z}
+/// (orthonormal to rounding).
+inline std::array<Vec3, 3> rotation_columns(const std::array<double, 4>& q) {
+  const auto [w, x, y, z] = q;
+  return {Vec3{1 - 2 * (y * y + z * z), 2 * (x * y + w * z), 2 * (x * z - w * y)},
+          Vec3{2 * (x * y - w * z), 1 - 2 * (x * x + z * z), 2 * (y * z + w * x)},
+          Vec3{2 * (x * z + w * y), 2 * (y * z - w * x), 1 - 2 * (x * x + y * y)}};
+}
+
+/// Shuffles `v` in place (Fisher-Yates, one draw per position).
+template <class T>
+void shuffle(std::vector<T>& v, Rng& rng) {
+  for (std::size_t i = v.size(); i > 1; --i) std::swap(v[i - 1], v[rng.next() % i]);
+}
+
+/// Draws (`draw()`) until `n` are kept, exactly half of them hitting
+/// according to `verdict` (1 hitting, 0 not, -1 undecided: skipped, and
+/// counted in `*undecided` when given); in the order drawn.
+template <class Draw, class Verdict>
+auto half_hitting(std::size_t n, Draw&& draw, Verdict&& verdict, std::size_t* undecided = nullptr) {
+  std::vector<decltype(draw())> out;
+  std::size_t n_hit = 0, n_miss = 0;
+  while (out.size() < n) {
+    const auto x = draw();
+    const int hit = verdict(x);
+    if (hit < 0) {
+      if (undecided) ++*undecided;
+      continue;
+    }
+    if (hit ? n_hit >= n / 2 : n_miss >= n / 2) continue;
+    (hit ? n_hit : n_miss)++;
+    out.push_back(x);
+  }
+  return out;
+}
+
+/// Draws until `n` hitting ones (verdict 1, as for half_hitting) are kept;
+/// `draws` counts the draws, `*undecided` (when given) the undecided ones.
+template <class Draw, class Verdict>
+auto all_hitting(std::size_t n, Draw&& draw, Verdict&& verdict, std::size_t& draws, std::size_t* undecided = nullptr) {
+  std::vector<decltype(draw())> out;
+  while (out.size() < n) {
+    const auto x = draw();
+    const int hit = verdict(x);
+    ++draws;
+    if (hit < 0 && undecided) ++*undecided;
+    if (hit > 0) out.push_back(x);
+  }
+  return out;
+}
 
 }  // namespace geomcheck::bench
