@@ -4,7 +4,7 @@
 
 #include "geomcheck/casefile.hpp"
 
-#include "bits.hpp"
+#include "geomcheck/detail/text_format.hpp"
 
 namespace geomcheck {
 
@@ -12,20 +12,7 @@ namespace {
 
 using detail::bits_of;
 using detail::from_bits;
-
-char lower(char ch) { return (ch >= 'A' && ch <= 'Z') ? static_cast<char>(ch - 'A' + 'a') : ch; }
-bool iequals(std::string_view x, std::string_view y) {
-  if (x.size() != y.size()) return false;
-  for (std::size_t i = 0; i < x.size(); ++i)
-    if (lower(x[i]) != lower(y[i])) return false;
-  return true;
-}
-
-std::size_t field_offset(const ShapeLayout& l, std::size_t field) {
-  std::size_t off = 0;
-  for (std::size_t i = 0; i < field; ++i) off += static_cast<std::size_t>(l.fields[i].arity);
-  return off;
-}
+using detail::iequals;
 
 // --- SHA-1 (FIPS 180-4) -----------------------------------------------------
 
@@ -117,7 +104,7 @@ bool parse_description_body(std::string_view t, std::size_t i, const ShapeLayout
     ++i;
     skip_space(t, i);
     const int arity = l.fields[index].arity;
-    const std::size_t off = field_offset(l, index);
+    const std::size_t off = l.offset(index);
     if (arity == 1) {
       if (!read_number(t, i, out[off])) return false;
     } else {

@@ -6,67 +6,27 @@
 
 #include <gtest/gtest.h>
 
-#include <algorithm>
 #include <cfloat>
 #include <cmath>
 #include <cstdio>
-#include <cstring>
-#include <filesystem>
-#include <fstream>
 #include <limits>
 #include <map>
 #include <random>
 #include <set>
-#include <sstream>
 #include <string>
 
-#include <unistd.h>
+#include "format_test_support.hpp"
 
 namespace fs = std::filesystem;
 using namespace geomcheck;
+using namespace geomcheck::test;
 
 namespace {
 
-const fs::path kCorpora = GEOMCHECK_CORPORA_DIR;
-
-std::uint64_t bits(double v) {
-  std::uint64_t u;
-  std::memcpy(&u, &v, sizeof u);
-  return u;
-}
-double from_bits(std::uint64_t u) {
-  double v;
-  std::memcpy(&v, &u, sizeof v);
-  return v;
-}
-double inf() { return std::numeric_limits<double>::infinity(); }
-
-std::string read_file(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-std::vector<fs::path> case_files(const fs::path& dir) {
-  std::vector<fs::path> out;
-  if (!fs::is_directory(dir)) return out;
-  for (const auto& e : fs::directory_iterator(dir))
-    if (e.is_regular_file() && e.path().extension() == kCaseFileExtension) out.push_back(e.path());
-  std::sort(out.begin(), out.end());
-  return out;
-}
-
 /// The example of the format documentation: a sphere touching the rim circle.
 CaseFile rim_example() {
-  CaseFile c;
-  c.query = QueryId::collide_cylinder_sphere;
-  c.a = {0, 0, 0, 0, 0, 2, 1};
-  c.b = {2, 0, 2, 1};
-  c.found_by = "hand";
-  c.oracle_verdict = "touching";
-  c.note = "sphere touching the rim circle from outside";
-  return c;
+  return from_case<QueryId::collide_cylinder_sphere>({Cylinder{{0, 0, 0}, {0, 0, 2}, 1}, Sphere{{2, 0, 2}, 1}}, "hand",
+                                                     "touching", "sphere touching the rim circle from outside");
 }
 
 const char* const kRimExampleText =
@@ -215,15 +175,7 @@ TEST(CaseRoundTrip, RandomBitPatterns) {
     c.a.resize(query_shape(c.query, 0).size);
     c.b.resize(query_shape(c.query, 1).size);
     for (auto* v : {&c.a, &c.b})
-      for (double& x : *v) {
-        std::uint64_t u = rng();
-        switch (rng() % 4) {  // bias towards the boundaries of each class
-          case 0: u &= 0x800fffffffffffffull; break;                          // zero / subnormal
-          case 1: u |= 0x7ff0000000000000ull; break;                          // inf / NaN
-          default: break;
-        }
-        x = from_bits(u);
-      }
+      for (double& x : *v) x = random_boundary_double(rng);
     c.found_by = "campaign seed=" + std::to_string(seed) + " case=" + std::to_string(i);
     const ParseResult r = round_trip(c);
     ASSERT_TRUE(r.ok()) << r.error << "\n" << write_case(c);
@@ -236,11 +188,8 @@ TEST(CaseRoundTrip, RandomBitPatterns) {
 TEST(CaseRoundTrip, Strings) {
   CaseFile c = rim_example();
   c.found_by = "rapidcheck reproduce=BchdlNGdvJ3XzxWY\n and a second line\\ with # and\ttab ";
-  c.note = "  leading blanks\nline two # not a comment\n\nback\\slash \x01 \x7f caf\xc3\xa9\r\ntrailing ";
-  const ParseResult r = round_trip(c);
-  ASSERT_TRUE(r.ok()) << r.error;
-  EXPECT_EQ(r.value.found_by, c.found_by);
-  EXPECT_EQ(r.value.note, c.note);
+  c.note = kAwkwardNote;
+  ASSERT_NO_FATAL_FAILURE(expect_texts_round_trip(c, &parse_case, &write_case));
   const std::string text = write_case(c);
   EXPECT_NE(text.find("note \\x20 leading blanks\n"), std::string::npos) << text;
   EXPECT_NE(text.find("note line two # not a comment\nnote\nnote back\\\\slash \\x01 \\x7f caf\xc3\xa9\\r\n"),
@@ -257,26 +206,19 @@ TEST(CaseRoundTrip, Strings) {
 }
 
 TEST(CaseParse, HandWrittenDecimalsCommentsAndCrlf) {
-  const char* text =
-      "\xEF\xBB\xBF# written by hand\r\n"
-      "\r\n"
-      "geomcheck-case 1   # version\r\n"
-      "note first\r\n"
-      "oracle-verdict hit # exact\r\n"
-      "query cast_segment_cylinder\r\n"
-      "note   second, # kept  \r\n"
-      "shape segment  # A\r\n"
-      "b 1.5 -2 3e0\r\n"
-      "\ta\t0x1p-1 .25 -0\r\n"
-      "   # a comment inside a block\r\n"
-      "shape cylinder\r\n"
-      "  r inf\r\n"
-      "  q -inf nan 1\r\n"
-      "  p 0 0 0\r\n"
-      "end # done\r\n"
-      "# trailing comment\r\n"
-      "\r\n";
-  const ParseResult r = parse_case(text);
+  const ParseResult r = parse_case(hand_written({
+      "note first",
+      "oracle-verdict hit # exact",
+      "query cast_segment_cylinder",
+      "note   second, # kept  ",
+      "shape segment  # A",
+      "b 1.5 -2 3e0",
+      "\ta\t0x1p-1 .25 -0",
+      "   # a comment inside a block",
+      "shape cylinder",
+      "  r inf",
+      "  q -inf nan 1",
+      "  p 0 0 0"}));
   ASSERT_TRUE(r.ok()) << r.error;
   EXPECT_EQ(r.value.query, QueryId::cast_segment_cylinder);
   ASSERT_EQ(r.value.a.size(), 6u);
@@ -322,10 +264,7 @@ TEST(CaseParse, MalformedCorpusFiles) {
     ASSERT_FALSE(what.empty());
 
     const ParseResult r = parse_case(text);
-    ASSERT_FALSE(r.ok()) << "accepted";
-    EXPECT_EQ(r.error_line, line) << r.error;
-    EXPECT_EQ(r.error.rfind("line " + std::to_string(line) + ": ", 0), 0u) << r.error;
-    EXPECT_NE(r.error.find(what), std::string::npos) << "message: " << r.error << "\nwanted: " << what;
+    ASSERT_NO_FATAL_FAILURE(expect_rejected(r, line, what));
     messages.insert(r.error);
 
     const ParseResult l = load_case(f);
@@ -337,18 +276,12 @@ TEST(CaseParse, MalformedCorpusFiles) {
 }
 
 TEST(CaseParse, RejectsGeneratedInputs) {
-  struct Bad {
-    std::string text;
-    int line;
-    const char* what;
-  };
   const std::string ok = kRimExampleText;
-  const std::vector<Bad> bads = {
+  const std::vector<Rejection> bads = {
       {"", 1, "empty file"},
       {"# only a comment\n\n", 2, "no 'geomcheck-case' header"},
       {std::string(kMaxCaseFileBytes + 1, '#'), 1, "file too large (65537 bytes, limit 65536)"},
       {ok.substr(0, ok.size() - 4), 13, "missing 'end'"},
-      {ok.substr(0, ok.size() - 1), 0, nullptr},  // no final newline: fine
       {std::string("geomcheck-case 1\nquery collide_cylinder_sphere\nnote a") + '\0' + "b\n", 3,
        "control byte 0x00"},
       {"geomcheck-case 1\nquery collide_cylinder_sphere\nend\n", 3, "missing shape A (cylinder)"},
@@ -360,64 +293,28 @@ TEST(CaseParse, RejectsGeneratedInputs) {
       {"geomcheck-case 1\nquery collide_cylinder_sphere\nfound-by a\\\n", 3, "backslash at the end"},
       {"geomcheck-case 1\nquery collide_cylinder_sphere\nnote \\x4\n", 3, "two hex digits"},
   };
-  for (const auto& b : bads) {
-    SCOPED_TRACE(b.text.substr(0, 80));
-    const ParseResult r = parse_case(b.text);
-    if (!b.what) {
-      EXPECT_TRUE(r.ok()) << r.error;
-      continue;
-    }
-    ASSERT_FALSE(r.ok());
-    EXPECT_EQ(r.error_line, b.line) << r.error;
-    EXPECT_NE(r.error.find(b.what), std::string::npos) << r.error;
-    EXPECT_EQ(r.value, CaseFile{}) << "a failed parse returns an empty case";
-  }
+  ASSERT_NO_FATAL_FAILURE(expect_all_rejected(bads, &parse_case));
+
+  // Fine variation of the same file.
+  const ParseResult unterminated_line = parse_case(ok.substr(0, ok.size() - 1));
+  EXPECT_TRUE(unterminated_line.ok()) << "no final newline: " << unterminated_line.error;
 }
 
 TEST(CaseParse, MutatedFilesNeverCrash) {
-  // A small deterministic fuzz of the parser (the libFuzzer target does the
-  // long run): every mutation of a valid file is accepted or rejected with a
-  // "line N: " message, and an accepted one round-trips.
-  const std::uint64_t seed = 7;
-  SCOPED_TRACE("seed " + std::to_string(seed));
-  std::mt19937_64 rng(seed);
-  const std::string base = kRimExampleText;
-  const char alphabet[] = " \t\n#0123456789abcdefpx.+-nanifcqrshapeendquery\\\r\x01\xff";
-  int accepted = 0, rejected = 0;
-  for (int i = 0; i < 20000; ++i) {
-    std::string s = base;
-    const int edits = 1 + static_cast<int>(rng() % 4);
-    for (int e = 0; e < edits && !s.empty(); ++e) {
-      const std::size_t at = rng() % s.size();
-      switch (rng() % 4) {
-        case 0: s[at] = alphabet[rng() % (sizeof alphabet - 1)]; break;
-        case 1: s.insert(at, 1, alphabet[rng() % (sizeof alphabet - 1)]); break;
-        case 2: s.erase(at, 1 + rng() % 8); break;
-        default: s.resize(at); break;
-      }
-    }
-    const ParseResult r = parse_case(s);
-    if (r.ok()) {
-      ++accepted;
-      const ParseResult again = round_trip(r.value);
-      ASSERT_TRUE(again.ok()) << again.error;
-      ASSERT_EQ(again.value, r.value) << s;
-    } else {
-      ++rejected;
-      ASSERT_EQ(r.error.rfind("line ", 0), 0u) << r.error;
-      ASSERT_GE(r.error_line, 1);
-    }
-  }
-  EXPECT_GT(accepted, 100);
-  EXPECT_GT(rejected, 10000);
+  // A small deterministic fuzz of the parser (fuzz_casefile does the long run).
+  expect_mutations_round_trip_or_name_a_line(kRimExampleText,
+                                             " \t\n#0123456789abcdefpx.+-nanifcqrshapeendquery\\\r\x01\xff", 7,
+                                             &parse_case, &write_case);
 }
 
 // ---------------------------------------------------------------------------
 // Validation, typed views
 
 TEST(CaseValidate, CaseError) {
+  ASSERT_NO_FATAL_FAILURE(
+      expect_invalid_values_reported(rim_example(), "hit", "touching\nend", &case_error, &parse_case, &write_case));
+
   CaseFile c = rim_example();
-  EXPECT_FALSE(case_error(c).has_value());
   c.a.pop_back();
   ASSERT_TRUE(case_error(c).has_value());
   EXPECT_NE(case_error(c)->find("needs 7 doubles, the case has 6"), std::string::npos) << *case_error(c);
@@ -430,21 +327,6 @@ TEST(CaseValidate, CaseError) {
   c.b.push_back(1.0);
   EXPECT_NE(case_error(c)->find("shape B"), std::string::npos);
   EXPECT_FALSE(round_trip(c).ok());
-
-  c = rim_example();
-  c.oracle_verdict = "hit";
-  EXPECT_NE(case_error(c)->find("unknown oracle verdict 'hit'"), std::string::npos);
-  EXPECT_EQ(round_trip(c).error_line, 5);
-
-  c = rim_example();
-  c.oracle_verdict = "touching\nend";
-  EXPECT_TRUE(case_error(c).has_value());
-  EXPECT_FALSE(round_trip(c).ok());
-
-  c = rim_example();
-  c.version = 2;
-  EXPECT_NE(case_error(c)->find("version 2"), std::string::npos);
-  EXPECT_EQ(round_trip(c).error, "line 2: unsupported case-file version 2 (this build reads version 1)");
 
   c = rim_example();
   c.query = static_cast<QueryId>(1000);
@@ -497,41 +379,13 @@ TEST(CaseTyped, ToAndFromCase) {
 // Files
 
 TEST(CaseFiles, SaveAndLoad) {
-  const fs::path dir = fs::temp_directory_path() / ("geomcheck_casefile_test_" + std::to_string(::getpid()));
-  fs::create_directories(dir);
-  const fs::path p = dir / "0001-rim.case";
-  std::string error;
+  const fs::path dir = fresh_temp_dir("geomcheck_casefile_test_");
   CaseFile c = rim_example();
   c.a[0] = -0.0;
-  ASSERT_TRUE(save_case(p, c, error)) << error;
-  EXPECT_FALSE(fs::exists(dir / "0001-rim.case.tmp"));
-  const ParseResult r = load_case(p);
-  ASSERT_TRUE(r.ok()) << r.error;
-  EXPECT_EQ(r.value, c);
-
   CaseFile bad = c;
   bad.b.clear();
-  EXPECT_FALSE(save_case(dir / "bad.case", bad, error));
-  EXPECT_NE(error.find("refusing to write"), std::string::npos) << error;
-  EXPECT_FALSE(fs::exists(dir / "bad.case"));
-
-  EXPECT_FALSE(save_case(dir / "no-such-dir" / "x.case", c, error));
-  EXPECT_NE(error.find("cannot create"), std::string::npos) << error;
-
-  const ParseResult missing = load_case(dir / "missing.case");
-  ASSERT_FALSE(missing.ok());
-  EXPECT_NE(missing.error.find("cannot open case file '" + (dir / "missing.case").string() + "'"),
-            std::string::npos)
-      << missing.error;
-  EXPECT_EQ(missing.error_line, 0);
-
-  {
-    std::ofstream big(dir / "big.case", std::ios::binary);
-    big << std::string(200000, '#');
-  }
-  const ParseResult large = load_case(dir / "big.case");
-  ASSERT_FALSE(large.ok());
-  EXPECT_EQ(large.error, (dir / "big.case").string() + ": line 1: file too large (200000 bytes, limit 65536)");
+  ASSERT_NO_FATAL_FAILURE(expect_save_and_load(dir, "0001-rim.case", c, bad, &save_case, &load_case));
+  expect_too_large_refused(dir, 200000, 65536, &load_case);
   fs::remove_all(dir);
 }
 

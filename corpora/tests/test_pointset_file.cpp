@@ -7,50 +7,25 @@
 
 #include <gtest/gtest.h>
 
-#include <algorithm>
 #include <cfloat>
 #include <cmath>
-#include <cstring>
-#include <filesystem>
 #include <fstream>
 #include <limits>
 #include <map>
 #include <random>
 #include <set>
-#include <sstream>
 #include <string>
 
-#include <unistd.h>
+#include "format_test_support.hpp"
 
 namespace fs = std::filesystem;
 using namespace geomcheck;
+using namespace geomcheck::test;
 
 namespace {
 
-const fs::path kCorpora = GEOMCHECK_CORPORA_DIR;
-
-std::uint64_t bits(double v) {
-  std::uint64_t u;
-  std::memcpy(&u, &v, sizeof u);
-  return u;
-}
-double from_bits(std::uint64_t u) {
-  double v;
-  std::memcpy(&v, &u, sizeof v);
-  return v;
-}
-double inf() { return std::numeric_limits<double>::infinity(); }
 double nan() { return std::numeric_limits<double>::quiet_NaN(); }
 double up(double v) { return std::nextafter(v, inf()); }
-
-std::vector<fs::path> case_files(const fs::path& dir) {
-  std::vector<fs::path> out;
-  if (!fs::is_directory(dir)) return out;
-  for (const auto& e : fs::directory_iterator(dir))
-    if (e.is_regular_file() && e.path().extension() == kCaseFileExtension) out.push_back(e.path());
-  std::sort(out.begin(), out.end());
-  return out;
-}
 
 /// The example of the format documentation: four cocircular points.
 PointSetFile square_example() {
@@ -75,9 +50,12 @@ const char* const kSquareExampleText =
     "point 0x0p+0 0x1p+0   # 0 1\n"
     "end\n";
 
+/// The header line followed by `rest`.
+std::string after_header(const std::string& rest) { return "geomcheck-case 1\n" + rest; }
+
 /// A minimal valid file around the given body lines (after the meta lines).
 std::string with_body(const std::string& meta, const std::string& body) {
-  return "geomcheck-case 1\nquery delaunay_2d\n" + meta + body + "end\n";
+  return after_header("query delaunay_2d\n" + meta + body + "end\n");
 }
 
 PointSetParseResult round_trip(const PointSetFile& f) { return parse_point_set(write_point_set(f)); }
@@ -164,15 +142,7 @@ TEST(PointSetRoundTrip, ZeroOneAndManyPoints) {
   many.found_by = "campaign seed=" + std::to_string(seed);
   for (int i = 0; i < 1000; ++i) {
     double c[2];
-    for (double& x : c) {
-      std::uint64_t u = rng();
-      switch (rng() % 4) {  // bias towards the boundaries of each class
-        case 0: u &= 0x800fffffffffffffull; break;  // zero / subnormal
-        case 1: u |= 0x7ff0000000000000ull; break;  // inf / NaN
-        default: break;
-      }
-      x = from_bits(u);
-    }
+    for (double& x : c) x = random_boundary_double(rng);
     many.points.push_back({c[0], c[1]});
   }
   const PointSetParseResult r = round_trip(many);
@@ -184,33 +154,22 @@ TEST(PointSetRoundTrip, ZeroOneAndManyPoints) {
 TEST(PointSetRoundTrip, Strings) {
   PointSetFile f = square_example();
   f.found_by = "fuzz crash-0123\n second line\\ with # and\ttab ";
-  f.note = "  leading blanks\nline two # not a comment\n\nback\\slash \x01 \x7f caf\xc3\xa9\r\ntrailing ";
-  const PointSetParseResult r = round_trip(f);
-  ASSERT_TRUE(r.ok()) << r.error;
-  EXPECT_EQ(r.value.found_by, f.found_by);
-  EXPECT_EQ(r.value.note, f.note);
-  EXPECT_EQ(r.value, f);
+  f.note = kAwkwardNote;
+  expect_texts_round_trip(f, &parse_point_set, &write_point_set);
 }
 
 TEST(PointSetParse, HandWrittenDecimalsCommentsAndCrlf) {
-  const char* text =
-      "\xEF\xBB\xBF# written by hand\r\n"
-      "\r\n"
-      "geomcheck-case 1   # version\r\n"
-      "note first\r\n"
-      "oracle-verdict collinear # exact\r\n"
-      "query delaunay_2d  # the Delaunay query\r\n"
-      "note   second, # kept  \r\n"
-      "found-by hand\r\n"
-      "point 1.5 -2   # decimals\r\n"
-      "\tpoint\t.5 1e3\r\n"
-      "   # a comment between points\r\n"
-      "point -0 0x1p-1074\r\n"
-      "point 0.1 +2\r\n"
-      "end # done\r\n"
-      "# trailing comment\r\n"
-      "\r\n";
-  const PointSetParseResult r = parse_point_set(text);
+  const PointSetParseResult r = parse_point_set(hand_written({
+      "note first",
+      "oracle-verdict collinear # exact",
+      "query delaunay_2d  # the Delaunay query",
+      "note   second, # kept  ",
+      "found-by hand",
+      "point 1.5 -2   # decimals",
+      "\tpoint\t.5 1e3",
+      "   # a comment between points",
+      "point -0 0x1p-1074",
+      "point 0.1 +2"}));
   ASSERT_TRUE(r.ok()) << r.error;
   ASSERT_EQ(r.value.points.size(), 4u);
   EXPECT_EQ(r.value.points[0], (Vec2{1.5, -2}));
@@ -232,13 +191,8 @@ TEST(PointSetParse, HandWrittenDecimalsCommentsAndCrlf) {
 // Rejections
 
 TEST(PointSetParse, RejectsMalformedInputs) {
-  struct Bad {
-    std::string text;
-    int line;
-    const char* what;
-  };
   const std::string ok = kSquareExampleText;
-  const std::vector<Bad> bads = {
+  const std::vector<Rejection> bads = {
       {"", 1, "empty file"},
       {"# only a comment\n\n", 2, "no 'geomcheck-case' header"},
       {"query delaunay_2d\ngeomcheck-case 1\nend\n", 1,
@@ -247,16 +201,16 @@ TEST(PointSetParse, RejectsMalformedInputs) {
       {"geomcheck-case one\n", 1, "malformed version 'one'"},
       {"geomcheck-case\n", 1, "missing version"},
       {"geomcheck-case 1 1\n", 1, "unexpected text '1' after the version"},
-      {"geomcheck-case 1\ngeomcheck-case 1\n", 2, "duplicate 'geomcheck-case' line"},
-      {"geomcheck-case 1\nquery collide_cylinder_sphere\nend\n", 2,
+      {after_header("geomcheck-case 1\n"), 2, "duplicate 'geomcheck-case' line"},
+      {after_header("query collide_cylinder_sphere\nend\n"), 2,
        "query collide_cylinder_sphere is not a point-set query: this is not a point-set file"},
-      {"geomcheck-case 1\nquery delaunay_3d\nend\n", 2,
+      {after_header("query delaunay_3d\nend\n"), 2,
        "unknown query 'delaunay_3d': this is not a point-set file"},
-      {"geomcheck-case 1\nquery\n", 2, "missing query id"},
-      {"geomcheck-case 1\nquery delaunay_2d extra\n", 2, "unexpected text 'extra' after the query id"},
-      {"geomcheck-case 1\nquery delaunay_2d\nquery delaunay_2d\n", 3, "duplicate 'query' line"},
-      {"geomcheck-case 1\nfound-by hand\nend\n", 3, "missing 'query' line"},
-      {"geomcheck-case 1\npoint 0 0\nquery delaunay_2d\nend\n", 2, "'point' before the 'query' line"},
+      {after_header("query\n"), 2, "missing query id"},
+      {after_header("query delaunay_2d extra\n"), 2, "unexpected text 'extra' after the query id"},
+      {after_header("query delaunay_2d\nquery delaunay_2d\n"), 3, "duplicate 'query' line"},
+      {after_header("found-by hand\nend\n"), 3, "missing 'query' line"},
+      {after_header("point 0 0\nquery delaunay_2d\nend\n"), 2, "'point' before the 'query' line"},
       {with_body("", "point 0 0\nnote late\n"), 4, "'note' must come before the first 'point'"},
       {with_body("", "point 0 0\nfound-by hand\n"), 4, "'found-by' must come before the first 'point'"},
       {with_body("", "point 0 0\noracle-verdict empty\n"), 4, "'oracle-verdict' must come before the first 'point'"},
@@ -293,16 +247,7 @@ TEST(PointSetParse, RejectsMalformedInputs) {
       {std::string(kMaxPointSetFileBytes + 1, '#'), 1, "file too large (8388609 bytes, limit 8388608)"},
   };
   std::set<std::string> messages;
-  for (const auto& b : bads) {
-    SCOPED_TRACE(b.text.substr(0, 80));
-    const PointSetParseResult r = parse_point_set(b.text);
-    ASSERT_FALSE(r.ok()) << "accepted";
-    EXPECT_EQ(r.error_line, b.line) << r.error;
-    EXPECT_EQ(r.error.rfind("line " + std::to_string(b.line) + ": ", 0), 0u) << r.error;
-    EXPECT_NE(r.error.find(b.what), std::string::npos) << "message: " << r.error << "\nwanted: " << b.what;
-    EXPECT_EQ(r.value, PointSetFile{}) << "a failed parse returns an empty file";
-    messages.insert(r.error);
-  }
+  ASSERT_NO_FATAL_FAILURE(expect_all_rejected(bads, &parse_point_set, &messages));
   EXPECT_GE(messages.size(), bads.size() - 4) << "distinct errors should read differently";
 
   // Fine variations of the same file.
@@ -328,41 +273,10 @@ TEST(PointSetParse, LargestFileAccepted) {
 }
 
 TEST(PointSetParse, MutatedFilesNeverCrash) {
-  // A small deterministic fuzz of the parser (fuzz_pointset_file does the
-  // long run): every mutation of a valid file is accepted or rejected with a
-  // "line N: " message, and an accepted one round-trips.
-  const std::uint64_t seed = 11;
-  SCOPED_TRACE("seed " + std::to_string(seed));
-  std::mt19937_64 rng(seed);
-  const std::string base = kSquareExampleText;
-  const char alphabet[] = " \t\n#0123456789abcdefpx.+-nanifpointqueryend\\\r\x01\xff";
-  int accepted = 0, rejected = 0;
-  for (int i = 0; i < 20000; ++i) {
-    std::string s = base;
-    const int edits = 1 + static_cast<int>(rng() % 4);
-    for (int e = 0; e < edits && !s.empty(); ++e) {
-      const std::size_t at = rng() % s.size();
-      switch (rng() % 4) {
-        case 0: s[at] = alphabet[rng() % (sizeof alphabet - 1)]; break;
-        case 1: s.insert(at, 1, alphabet[rng() % (sizeof alphabet - 1)]); break;
-        case 2: s.erase(at, 1 + rng() % 8); break;
-        default: s.resize(at); break;
-      }
-    }
-    const PointSetParseResult r = parse_point_set(s);
-    if (r.ok()) {
-      ++accepted;
-      const PointSetParseResult again = round_trip(r.value);
-      ASSERT_TRUE(again.ok()) << again.error;
-      ASSERT_EQ(again.value, r.value) << s;
-    } else {
-      ++rejected;
-      ASSERT_EQ(r.error.rfind("line ", 0), 0u) << r.error;
-      ASSERT_GE(r.error_line, 1);
-    }
-  }
-  EXPECT_GT(accepted, 100);
-  EXPECT_GT(rejected, 10000);
+  // A small deterministic fuzz of the parser (fuzz_pointset_file does the long run).
+  expect_mutations_round_trip_or_name_a_line(kSquareExampleText,
+                                             " \t\n#0123456789abcdefpx.+-nanifpointqueryend\\\r\x01\xff", 11,
+                                             &parse_point_set, &write_point_set);
 }
 
 // ---------------------------------------------------------------------------
@@ -370,7 +284,6 @@ TEST(PointSetParse, MutatedFilesNeverCrash) {
 
 TEST(PointSetValidate, PointSetError) {
   PointSetFile f = square_example();
-  EXPECT_FALSE(point_set_error(f).has_value());
   f.oracle_verdict = "";
   EXPECT_FALSE(point_set_error(f).has_value());
   for (auto v : point_set_verdicts()) {
@@ -379,20 +292,8 @@ TEST(PointSetValidate, PointSetError) {
   }
   EXPECT_EQ(point_set_verdicts().size(), 5u);
 
-  f.oracle_verdict = "touching";
-  ASSERT_TRUE(point_set_error(f).has_value());
-  EXPECT_NE(point_set_error(f)->find("unknown oracle verdict 'touching'"), std::string::npos);
-  EXPECT_EQ(round_trip(f).error_line, 5);
-
-  f = square_example();
-  f.oracle_verdict = "empty\nend";
-  EXPECT_TRUE(point_set_error(f).has_value());
-  EXPECT_FALSE(round_trip(f).ok());
-
-  f = square_example();
-  f.version = 2;
-  EXPECT_NE(point_set_error(f)->find("version 2"), std::string::npos);
-  EXPECT_EQ(round_trip(f).error, "line 2: unsupported case-file version 2 (this build reads version 1)");
+  expect_invalid_values_reported(square_example(), "touching", "empty\nend", &point_set_error, &parse_point_set,
+                                 &write_point_set);
 }
 
 TEST(PointSetDispatch, IsPointSetText) {
@@ -504,33 +405,12 @@ TEST(PointSetConvert, FuzzInput) {
 // Files
 
 TEST(PointSetFiles, SaveAndLoad) {
-  const fs::path dir = fs::temp_directory_path() / ("geomcheck_pointset_test_" + std::to_string(::getpid()));
-  fs::create_directories(dir);
-  const fs::path p = dir / "0001-square.case";
-  std::string error;
+  const fs::path dir = fresh_temp_dir("geomcheck_pointset_test_");
   PointSetFile f = square_example();
   f.points[0].x = -0.0;
-  ASSERT_TRUE(save_point_set(p, f, error)) << error;
-  EXPECT_FALSE(fs::exists(dir / "0001-square.case.tmp"));
-  const PointSetParseResult r = load_point_set(p);
-  ASSERT_TRUE(r.ok()) << r.error;
-  EXPECT_EQ(r.value, f);
-
   PointSetFile bad = f;
   bad.oracle_verdict = "hit";
-  EXPECT_FALSE(save_point_set(dir / "bad.case", bad, error));
-  EXPECT_NE(error.find("refusing to write"), std::string::npos) << error;
-  EXPECT_FALSE(fs::exists(dir / "bad.case"));
-
-  EXPECT_FALSE(save_point_set(dir / "no-such-dir" / "x.case", f, error));
-  EXPECT_NE(error.find("cannot create"), std::string::npos) << error;
-
-  const PointSetParseResult missing = load_point_set(dir / "missing.case");
-  ASSERT_FALSE(missing.ok());
-  EXPECT_NE(missing.error.find("cannot open case file '" + (dir / "missing.case").string() + "'"),
-            std::string::npos)
-      << missing.error;
-  EXPECT_EQ(missing.error_line, 0);
+  ASSERT_NO_FATAL_FAILURE(expect_save_and_load(dir, "0001-square.case", f, bad, &save_point_set, &load_point_set));
 
   {
     std::ofstream o(dir / "broken.case", std::ios::binary);
@@ -541,14 +421,7 @@ TEST(PointSetFiles, SaveAndLoad) {
   EXPECT_EQ(broken.error, (dir / "broken.case").string() + ": line 3: 'point' takes 2 values (x y), got 1");
   EXPECT_EQ(broken.error_line, 3);
 
-  {
-    std::ofstream big(dir / "big.case", std::ios::binary);
-    big << std::string(kMaxPointSetFileBytes + 100, '#');
-  }
-  const PointSetParseResult large = load_point_set(dir / "big.case");
-  ASSERT_FALSE(large.ok());
-  EXPECT_EQ(large.error, (dir / "big.case").string() + ": line 1: file too large (8388708 bytes, limit 8388608)");
-  EXPECT_EQ(large.error_line, 1);
+  expect_too_large_refused(dir, kMaxPointSetFileBytes + 100, 8388608, &load_point_set);
   fs::remove_all(dir);
 }
 
@@ -570,10 +443,7 @@ PointSetFile check_corpus_file(const fs::path& f) {
     EXPECT_EQ(r.value.oracle_verdict, classify_point_set(r.value.points)) << "filed verdict against the content";
   }
   EXPECT_EQ(round_trip(r.value).value, r.value);
-  std::ifstream in(f, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  EXPECT_TRUE(is_point_set_text(text.str()));
+  EXPECT_TRUE(is_point_set_text(read_file(f)));
   return r.value;
 }
 

@@ -8,7 +8,9 @@
 // read it. Files live in corpora/seeds/<query-id>/ (hand cases, fuzz seeds)
 // and corpora/regressions/<query-id>/NNNN-<slug>.case (counterexamples,
 // never deleted). The Delaunay query's inputs (point lists, not a registered
-// pair of shapes) use the sibling format of pointset_file.hpp.
+// pair of shapes) use the sibling format of pointset_file.hpp; the text
+// conventions both formats share are implemented once, in
+// geomcheck/detail/text_format.hpp.
 //
 // Format, version 1. Lines end in LF (a CR before the LF is ignored); blank
 // lines and lines whose first non-blank character is '#' are ignored
@@ -95,14 +97,21 @@ struct CaseFile {
 bool operator==(const CaseFile& x, const CaseFile& y);
 inline bool operator!=(const CaseFile& x, const CaseFile& y) { return !(x == y); }
 
-/// Outcome of parse_case / load_case: the case, or an error.
-struct ParseResult {
-  CaseFile value;     ///< the parsed case when ok()
-  std::string error;  ///< "line N: what is wrong" (load_case: "<path>: line N: ...") when !ok()
+/// Outcome of parsing or loading a file of either format (ParseResult here,
+/// PointSetParseResult in pointset_file.hpp): the parsed value, or an error.
+template <class T>
+struct BasicParseResult {
+  T value;            ///< the parsed value when ok(); T{} when !ok()
+  std::string error;  ///< "line N: what is wrong" (when loading: "<path>: line N: ...") when !ok()
   int error_line = 0; ///< N of the error; 0 when ok() or the file could not be read
+  /// True when the text parsed.
   bool ok() const { return error.empty(); }
+  /// ok().
   explicit operator bool() const { return ok(); }
 };
+
+/// Outcome of parse_case / load_case: the case, or an error.
+using ParseResult = BasicParseResult<CaseFile>;
 
 // ----------------------------------------------------------------------------
 // Shape layouts (runtime view of ShapeTraits)
@@ -113,6 +122,13 @@ struct ShapeLayout {
   const ShapeField* fields = nullptr;
   std::size_t num_fields = 0;
   std::size_t size = 0;
+
+  /// Index of the first double of field `field` (< num_fields) in the shape's doubles.
+  constexpr std::size_t offset(std::size_t field) const {
+    std::size_t off = 0;
+    for (std::size_t i = 0; i < field; ++i) off += static_cast<std::size_t>(fields[i].arity);
+    return off;
+  }
 };
 
 /// The layout of ShapeTraits<S>.

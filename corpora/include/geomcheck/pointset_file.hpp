@@ -87,14 +87,9 @@ struct PointSetFile {
 bool operator==(const PointSetFile& x, const PointSetFile& y);
 inline bool operator!=(const PointSetFile& x, const PointSetFile& y) { return !(x == y); }
 
-/// Outcome of parse_point_set / load_point_set: the point set, or an error.
-struct PointSetParseResult {
-  PointSetFile value;  ///< the parsed file when ok()
-  std::string error;   ///< "line N: what is wrong" (load_point_set: "<path>: line N: ...") when !ok()
-  int error_line = 0;  ///< N of the error; 0 when ok() or the file could not be read
-  bool ok() const { return error.empty(); }
-  explicit operator bool() const { return ok(); }
-};
+/// Outcome of parse_point_set / load_point_set: the point set, or an error
+/// (BasicParseResult of casefile.hpp).
+using PointSetParseResult = BasicParseResult<PointSetFile>;
 
 /// The verdict words a point-set file may record: "triangulated",
 /// "collinear", "coincident", "empty", "rejected".
