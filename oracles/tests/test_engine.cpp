@@ -9,6 +9,7 @@
 #include <cmath>
 #include <cstdio>
 #include <string>
+#include <utility>
 
 #include "geomcheck/oracles/cast_segment_cylinder.hpp"
 #include "geomcheck/oracles/cylinder_sphere.hpp"
@@ -70,6 +71,30 @@ void expect_consistent(const ConvexShape& a, const ConvexShape& b, const Distanc
   }
 }
 
+/// classify(a, b): expects `verdict` and a consistent result (see
+/// expect_consistent, `what` names the case).
+DistanceResult expect_verdict(const ConvexShape& a, const ConvexShape& b, Verdict verdict, const std::string& what) {
+  const DistanceResult r = classify(a, b);
+  EXPECT_EQ(r.verdict, verdict) << r.note;
+  expect_consistent(a, b, r, what);
+  return r;
+}
+
+/// Runs `property` with RapidCheck (RC_PARAMS from ctest) and expects it to
+/// hold.
+template <class Property>
+void expect_property(const std::string& description, Property&& property) {
+  EXPECT_TRUE(rc::check(description, std::forward<Property>(property)));
+}
+
+/// An axis-aligned box: centre c, half extents e.
+Obb axis_box(Vec3 c, Vec3 e) {
+  Obb b;
+  b.c = c;
+  b.e = e;
+  return b;
+}
+
 // ---- generators ------------------------------------------------------------------
 
 rc::Gen<double> coord() {
@@ -118,7 +143,7 @@ rc::Gen<Obb> box() {
 // ---- closed-form agreement -------------------------------------------------------------
 
 TEST(EngineClosedForm, SphereCylinderVerdictAndDistance) {
-  const bool ok = rc::check("engine agrees with the closed-form cylinder-sphere oracle", [] {
+  expect_property("engine agrees with the closed-form cylinder-sphere oracle", [] {
     const Cylinder c = *cylinder();
     const Sphere s = *sphere();
     const auto truth = solve_cylinder_sphere(c, s);
@@ -131,11 +156,10 @@ TEST(EngineClosedForm, SphereCylinderVerdictAndDistance) {
     if (r.verdict == Verdict::Separated) RC_ASSERT(check_separation(A, B, *r.separation, true));
     if (r.verdict == Verdict::Overlapping) RC_ASSERT(check_overlap(A, B, *r.overlap));
   });
-  EXPECT_TRUE(ok);
 }
 
 TEST(EngineClosedForm, PointCylinderDistance) {
-  const bool ok = rc::check("point distance interval meets the closed form", [] {
+  expect_property("point distance interval meets the closed form", [] {
     const Cylinder c = *cylinder();
     const Vec3 x = *vec();
     const QInterval truth = signed_distance(to_q(c), to_q(x));
@@ -152,11 +176,10 @@ TEST(EngineClosedForm, PointCylinderDistance) {
       RC_ASSERT(r.verdict == Verdict::Touching || r.verdict == Verdict::Undecided);
     }
   });
-  EXPECT_TRUE(ok);
 }
 
 TEST(EngineClosedForm, PenetrationDepthMatchesSphereCylinder) {
-  const bool ok = rc::check("certified depth meets the closed form", [] {
+  expect_property("certified depth meets the closed form", [] {
     const Cylinder c = *cylinder();
     const Sphere s = *sphere();
     const auto truth = solve_cylinder_sphere(c, s);
@@ -168,11 +191,10 @@ TEST(EngineClosedForm, PenetrationDepthMatchesSphereCylinder) {
     const QInterval depth{Q(-truth.signed_distance.hi), Q(-truth.signed_distance.lo)};
     RC_ASSERT(intervals_meet(p.depth, depth));
   });
-  EXPECT_TRUE(ok);
 }
 
 TEST(EngineClosedForm, TimeOfImpactMatchesSegmentCast) {
-  const bool ok = rc::check("time of impact meets the closed-form cast", [] {
+  expect_property("time of impact meets the closed-form cast", [] {
     const Cylinder c = *cylinder();
     const Segment s = *segment();
     const CastTruth truth = solve_cast(s, c);
@@ -187,13 +209,12 @@ TEST(EngineClosedForm, TimeOfImpactMatchesSegmentCast) {
       RC_ASSERT((r.kind == ImpactResult::Kind::StartsInside) == (truth.t.hi == 0));
     }
   });
-  EXPECT_TRUE(ok);
 }
 
 TEST(EngineClosedForm, SphereSweepMatchesQuadratic) {
   // A sphere moving against a sphere: first contact at the smaller root of
   // |d + t delta|^2 = (r1 + r2)^2, d = c1 - c2; exact up to one square root.
-  const bool ok = rc::check("sphere sweep meets the closed form", [] {
+  expect_property("sphere sweep meets the closed form", [] {
     const Sphere a = *sphere();
     const Sphere b = *sphere();
     const Vec3 end = *vec();
@@ -225,7 +246,6 @@ TEST(EngineClosedForm, SphereSweepMatchesQuadratic) {
     RC_ASSERT(intervals_meet(r.t, t));
     RC_ASSERT(r.t.hi - r.t.lo <= Q(1, 1 << 30));
   });
-  EXPECT_TRUE(ok);
 }
 
 // ---- exact constructions -----------------------------------------------------------------
@@ -233,46 +253,28 @@ TEST(EngineClosedForm, SphereSweepMatchesQuadratic) {
 TEST(EngineHand, SphereOnCapIsTouching) {
   const Cylinder c{{0, 0, 0}, {0, 0, 2}, 1};
   const Sphere s{{0.25, 0.5, 2.75}, 0.75};
-  const ConvexShape A = make_shape(c), B = make_shape(s);
-  const DistanceResult r = classify(A, B);
-  EXPECT_EQ(r.verdict, Verdict::Touching) << r.note;
-  expect_consistent(A, B, r, "sphere on cap");
+  expect_verdict(make_shape(c), make_shape(s), Verdict::Touching, "sphere on cap");
 }
 
 TEST(EngineHand, ParallelCylindersSideBySide) {
   const Cylinder a{{0, 0, 0}, {0, 0, 3}, 1};
   const Cylinder b{{2, 0, 1}, {2, 0, 5}, 1};
-  const DistanceResult r = classify(make_shape(a), make_shape(b));
-  EXPECT_EQ(r.verdict, Verdict::Touching) << r.note;
-  expect_consistent(make_shape(a), make_shape(b), r, "side by side");
+  expect_verdict(make_shape(a), make_shape(b), Verdict::Touching, "side by side");
   // One ulp apart / one ulp into each other.
   const Cylinder apart{{std::nextafter(2.0, 3.0), 0, 1}, {std::nextafter(2.0, 3.0), 0, 5}, 1};
-  const DistanceResult r2 = classify(make_shape(a), make_shape(apart));
-  EXPECT_EQ(r2.verdict, Verdict::Separated) << r2.note;
-  expect_consistent(make_shape(a), make_shape(apart), r2, "one ulp apart");
+  expect_verdict(make_shape(a), make_shape(apart), Verdict::Separated, "one ulp apart");
   const Cylinder into{{std::nextafter(2.0, 1.0), 0, 1}, {std::nextafter(2.0, 1.0), 0, 5}, 1};
-  const DistanceResult r3 = classify(make_shape(a), make_shape(into));
-  EXPECT_EQ(r3.verdict, Verdict::Overlapping) << r3.note;
-  expect_consistent(make_shape(a), make_shape(into), r3, "one ulp into");
+  expect_verdict(make_shape(a), make_shape(into), Verdict::Overlapping, "one ulp into");
 }
 
 TEST(EngineHand, BoxOnCapAndCornerOnRim) {
   const Cylinder c{{0, 0, -1}, {0, 0, 0}, 1};
-  Obb b;
-  b.c = {0.25, 0, 0.5};
-  b.e = {0.5, 0.5, 0.5};
-  const DistanceResult r = classify(make_shape(b), make_shape(c));
-  EXPECT_EQ(r.verdict, Verdict::Touching) << r.note;
-  expect_consistent(make_shape(b), make_shape(c), r, "box on cap");
+  expect_verdict(make_shape(axis_box({0.25, 0, 0.5}, {0.5, 0.5, 0.5})), make_shape(c), Verdict::Touching, "box on cap");
   // A box corner exactly on the rim (3, 4, 0) of a radius-5 cylinder:
   // touching; lifted by one ulp: separated; lowered: overlapping.
   const Cylinder c5{{0, 0, -1}, {0, 0, 0}, 5};
-  Obb k;
-  k.c = {3.5, 4.5, 0.5};
-  k.e = {0.5, 0.5, 0.5};
-  const DistanceResult r2 = classify(make_shape(k), make_shape(c5));
-  EXPECT_EQ(r2.verdict, Verdict::Touching) << r2.note;
-  expect_consistent(make_shape(k), make_shape(c5), r2, "corner on rim");
+  Obb k = axis_box({3.5, 4.5, 0.5}, {0.5, 0.5, 0.5});
+  expect_verdict(make_shape(k), make_shape(c5), Verdict::Touching, "corner on rim");
   k.c.z = std::nextafter(0.5, 1.0);
   const DistanceResult r3 = classify(make_shape(k), make_shape(c5));
   EXPECT_EQ(r3.verdict, Verdict::Separated) << r3.note;
@@ -284,9 +286,7 @@ TEST(EngineHand, BoxOnCapAndCornerOnRim) {
 TEST(EngineHand, TriangleThroughCylinder) {
   const Cylinder c{{0, 0, 0}, {0, 0, 1}, 0.5};
   const Triangle t{{-2, -2, 0.5}, {2, -2, 0.5}, {0, 2, 0.5}};
-  const DistanceResult r = classify(make_shape(t), make_shape(c));
-  EXPECT_EQ(r.verdict, Verdict::Overlapping) << r.note;
-  expect_consistent(make_shape(t), make_shape(c), r, "triangle through");
+  expect_verdict(make_shape(t), make_shape(c), Verdict::Overlapping, "triangle through");
   const PenetrationResult p = penetration(make_shape(t), make_shape(c));
   // The cheapest way out is through a cap: depth 0.5 exactly.
   EXPECT_TRUE(p.overlapping) << p.note;
@@ -383,7 +383,7 @@ TEST(EngineHand, ForgedDepthCertificatesAreRejected) {
 
 template <class SA, class SB>
 void pair_properties(const char* name, rc::Gen<SA> ga, rc::Gen<SB> gb) {
-  const bool ok = rc::check(std::string(name) + ": certified, symmetric, translation and scale invariant", [&] {
+  expect_property(std::string(name) + ": certified, symmetric, translation and scale invariant", [&] {
     const SA a = *ga;
     const SB b = *gb;
     const ConvexShape A = make_shape(a), B = make_shape(b);
@@ -409,7 +409,6 @@ void pair_properties(const char* name, rc::Gen<SA> ga, rc::Gen<SB> gb) {
     RC_ASSERT(u.verdict == r.verdict);
     RC_ASSERT(intervals_meet(u.distance, r.distance));
   });
-  EXPECT_TRUE(ok);
 }
 
 TEST(EnginePairs, CylinderCylinder) { pair_properties("cylinder-cylinder", cylinder(), cylinder()); }

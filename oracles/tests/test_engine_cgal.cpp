@@ -53,7 +53,9 @@
 #include <random>
 #include <sstream>
 #include <string>
+#include <tuple>
 #include <type_traits>
+#include <utility>
 #include <vector>
 
 #include "geomcheck/collide_cylinder_obb.hpp"
@@ -209,21 +211,25 @@ struct CShape {
   std::vector<Tet3> tets;            // box: the six Kuhn tetrahedra
 };
 
+/// c's first two vertices as CGAL's segment, or its point when they
+/// coincide.
+void set_segment_or_point(CShape& c) {
+  if (c.v[0] == c.v[1]) {
+    c.t = CShape::T::Point;
+    c.v.resize(1);
+  } else {
+    c.t = CShape::T::Segment;
+    c.e = {{0, 1}};
+  }
+}
+
 CShape cgal_shape(const Shape& s) {
   CShape c;
   const std::vector<QVec> qv = qverts(s);
   for (const QVec& q : qv) c.v.push_back(p3(q));
   switch (s.t) {
     case Shape::T::Point: c.t = CShape::T::Point; break;
-    case Shape::T::Segment:
-      if (c.v[0] == c.v[1]) {
-        c.t = CShape::T::Point;
-        c.v.resize(1);
-      } else {
-        c.t = CShape::T::Segment;
-        c.e = {{0, 1}};
-      }
-      break;
+    case Shape::T::Segment: set_segment_or_point(c); break;
     case Shape::T::Triangle:
       if (!CGAL::collinear(c.v[0], c.v[1], c.v[2])) {
         c.t = CShape::T::Triangle;
@@ -237,13 +243,7 @@ CShape cgal_shape(const Shape& s) {
         else if (d12 >= d20) w = {c.v[1], c.v[2]};
         else w = {c.v[2], c.v[0]};
         c.v = w;
-        if (c.v[0] == c.v[1]) {
-          c.t = CShape::T::Point;
-          c.v.resize(1);
-        } else {
-          c.t = CShape::T::Segment;
-          c.e = {{0, 1}};
-        }
+        set_segment_or_point(c);
       }
       break;
     case Shape::T::Box: {
@@ -693,6 +693,21 @@ void check_certificates(const Shape& sa, const Shape& sb, const ConvexShape& A, 
   }
 }
 
+/// Runs f() (an engine call) and adds its wall time to `ms`; an exception is
+/// a test failure ("<what> threw: ...") and gives no answer.
+template <class F>
+auto engine_call(const char* what, double& ms, F&& f) -> std::optional<decltype(f())> {
+  try {
+    const auto t0 = std::chrono::steady_clock::now();
+    auto r = f();
+    ms += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+    return r;
+  } catch (const std::exception& e) {
+    ADD_FAILURE() << what << " threw: " << e.what();
+    return std::nullopt;
+  }
+}
+
 /// The whole cross-check of one pair. Returns the truth.
 Truth check_pair(const Shape& sa, const Shape& sb, const std::string& label, std::mt19937_64& rng, Stats& st,
                  bool with_penetration = true) {
@@ -742,15 +757,10 @@ Truth check_pair(const Shape& sa, const Shape& sb, const std::string& label, std
     SCOPED_TRACE(filter ? "classify(default)" : "classify(filter = false)");
     EngineOptions opt;
     opt.filter = filter;
-    DistanceResult r;
-    try {
-      const auto t0 = std::chrono::steady_clock::now();
-      r = classify(A, B, opt);
-      st.engine_ms += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
-    } catch (const std::exception& e) {
-      ADD_FAILURE() << "classify threw: " << e.what();
-      continue;
-    }
+    const std::optional<DistanceResult> answer =
+        engine_call("classify", st.engine_ms, [&] { return classify(A, B, opt); });
+    if (!answer) continue;
+    const DistanceResult& r = *answer;
     if (r.by_filter) ++st.by_filter;
     check_result(r, t, scale, st);
     const auto c_start = std::chrono::steady_clock::now();
@@ -889,6 +899,30 @@ Vec3 axis_vec(int k, double d) {
 // (a) random doubles in [-2, 2]
 // =====================================================================================
 
+namespace {
+
+/// Random shapes of the (a) tests: vertices uvec(g), in the order drawn.
+Shape u_point(std::mt19937_64& g) { return point_shape(uvec(g)); }
+Shape u_segment(std::mt19937_64& g) {
+  const Segment s{uvec(g), uvec(g)};
+  return segment_shape(s.a, s.b);
+}
+Shape u_triangle(std::mt19937_64& g) {
+  const Triangle t = random_triangle(g);
+  return triangle_shape(t.a, t.b, t.c);
+}
+Shape u_box(std::mt19937_64& g) { return box_shape(random_box(g)); }
+
+/// A random pair: A drawn first, then B.
+template <Shape (*DrawA)(std::mt19937_64&), Shape (*DrawB)(std::mt19937_64&)>
+std::pair<Shape, Shape> random_pair(std::mt19937_64& g) {
+  Shape a = DrawA(g);
+  Shape b = DrawB(g);
+  return {std::move(a), std::move(b)};
+}
+
+}  // namespace
+
 class EngineCgalRandom : public ::testing::Test {
  protected:
   void run(const char* name, std::uint64_t seed, int n, const std::function<std::pair<Shape, Shape>(std::mt19937_64&)>& gen) {
@@ -904,63 +938,19 @@ class EngineCgalRandom : public ::testing::Test {
   }
 };
 
-TEST_F(EngineCgalRandom, SegmentTriangle) {
-  run("segment-triangle", 1001, 300, [](std::mt19937_64& g) {
-    const Segment s{uvec(g), uvec(g)};
-    const Triangle t = random_triangle(g);
-    return std::make_pair(segment_shape(s.a, s.b), triangle_shape(t.a, t.b, t.c));
-  });
-}
-
-TEST_F(EngineCgalRandom, TriangleTriangle) {
-  run("triangle-triangle", 1002, 300, [](std::mt19937_64& g) {
-    const Triangle t = random_triangle(g), u = random_triangle(g);
-    return std::make_pair(triangle_shape(t.a, t.b, t.c), triangle_shape(u.a, u.b, u.c));
-  });
-}
-
-TEST_F(EngineCgalRandom, SegmentSegment) {
-  run("segment-segment", 1003, 300, [](std::mt19937_64& g) {
-    const Vec3 a = uvec(g), b = uvec(g), c = uvec(g), d = uvec(g);
-    return std::make_pair(segment_shape(a, b), segment_shape(c, d));
-  });
-}
-
-TEST_F(EngineCgalRandom, PointTriangle) {
-  run("point-triangle", 1004, 300, [](std::mt19937_64& g) {
-    const Vec3 p = uvec(g);
-    const Triangle t = random_triangle(g);
-    return std::make_pair(point_shape(p), triangle_shape(t.a, t.b, t.c));
-  });
-}
-
-TEST_F(EngineCgalRandom, BoxSegment) {
-  run("box-segment", 1005, 300, [](std::mt19937_64& g) {
-    const Obb b = random_box(g);
-    const Vec3 p = uvec(g), q = uvec(g);
-    return std::make_pair(box_shape(b), segment_shape(p, q));
-  });
-}
-
-TEST_F(EngineCgalRandom, BoxTriangle) {
-  run("box-triangle", 1006, 300, [](std::mt19937_64& g) {
-    const Obb b = random_box(g);
-    const Triangle t = random_triangle(g);
-    return std::make_pair(box_shape(b), triangle_shape(t.a, t.b, t.c));
-  });
-}
-
-TEST_F(EngineCgalRandom, BoxBox) {
-  run("box-box", 1007, 300, [](std::mt19937_64& g) {
-    const Obb a = random_box(g), b = random_box(g);
-    return std::make_pair(box_shape(a), box_shape(b));
-  });
-}
+TEST_F(EngineCgalRandom, SegmentTriangle) { run("segment-triangle", 1001, 300, random_pair<u_segment, u_triangle>); }
+TEST_F(EngineCgalRandom, TriangleTriangle) { run("triangle-triangle", 1002, 300, random_pair<u_triangle, u_triangle>); }
+TEST_F(EngineCgalRandom, SegmentSegment) { run("segment-segment", 1003, 300, random_pair<u_segment, u_segment>); }
+TEST_F(EngineCgalRandom, PointTriangle) { run("point-triangle", 1004, 300, random_pair<u_point, u_triangle>); }
+TEST_F(EngineCgalRandom, BoxSegment) { run("box-segment", 1005, 300, random_pair<u_box, u_segment>); }
+TEST_F(EngineCgalRandom, BoxTriangle) { run("box-triangle", 1006, 300, random_pair<u_box, u_triangle>); }
+TEST_F(EngineCgalRandom, BoxBox) { run("box-box", 1007, 300, random_pair<u_box, u_box>); }
 
 TEST_F(EngineCgalRandom, PointBox) {
+  // The box is drawn first.
   run("point-box", 1008, 200, [](std::mt19937_64& g) {
-    const Obb b = random_box(g);
-    return std::make_pair(point_shape(uvec(g)), box_shape(b));
+    const Shape b = u_box(g);
+    return std::make_pair(u_point(g), b);
   });
 }
 
@@ -1022,6 +1012,46 @@ std::vector<NearCase> neighbours(const Shape& a, const Shape& b, int contact_ver
 int main_axis(Vec3 n) {
   const double ax = std::fabs(n.x), ay = std::fabs(n.y), az = std::fabs(n.z);
   return ax >= ay && ax >= az ? 0 : (ay >= az ? 1 : 2);
+}
+
+/// A grid box and an exact point p of its boundary, on the face of axis k
+/// and outward sign s (box_face_point's draw).
+struct BoxFacePoint {
+  Obb box;
+  Vec3 p;
+  int k = 0, s = 0;
+};
+BoxFacePoint grid_box_face_point(std::mt19937_64& g) {
+  BoxFacePoint f;
+  f.box = grid_box(g);
+  f.p = box_face_point(f.box, g, &f.k, &f.s);
+  return f;
+}
+
+/// The point `al` beyond f's face (along s * axes_k) from f.p, moved along
+/// the face by dyadic multiples of the other two axes.
+Vec3 beyond(const BoxFacePoint& f, double al, std::mt19937_64& g) {
+  return f.p + (f.s * al) * f.box.axes[f.k] + dyadic_t(g) * f.box.axes[(f.k + 1) % 3] +
+         dyadic_t(g) * f.box.axes[(f.k + 2) % 3];
+}
+
+/// A non-degenerate triangle with its vertex a at f.p and the other two
+/// drawn by `outward()`.
+template <class Outward>
+Triangle triangle_on_face_point(const BoxFacePoint& f, Outward outward) {
+  Vec3 q, r;
+  do {
+    q = outward();
+    r = outward();
+  } while (!nondegenerate_triangle(f.p, q, r));
+  return {f.p, q, r};
+}
+
+/// The neighbours of the touching pair (f's box, b), b touching the face at
+/// its vertex 0.
+std::vector<NearCase> face_neighbours(const BoxFacePoint& f, const Shape& b, std::mt19937_64& g) {
+  const Vec3 nrm = cross(f.box.axes[(f.k + 1) % 3], f.box.axes[(f.k + 2) % 3]);
+  return neighbours(box_shape(f.box), b, 0, main_axis(nrm), g);
 }
 
 }  // namespace
@@ -1163,47 +1193,30 @@ TEST_F(EngineCgalNear, CoincidentPoints) {
 
 TEST_F(EngineCgalNear, PointOnBoxFace) {
   run("point on box boundary", 2008, 20, [](std::mt19937_64& g) {
-    const Obb box = grid_box(g);
-    int k = 0, s = 0;
-    Shape b = point_shape(box_face_point(box, g, &k, &s));
-    const Vec3 nrm = cross(box.axes[(k + 1) % 3], box.axes[(k + 2) % 3]);
-    return neighbours(box_shape(box), b, 0, main_axis(nrm), g);
+    const BoxFacePoint f = grid_box_face_point(g);
+    return face_neighbours(f, point_shape(f.p), g);
   });
 }
 
 TEST_F(EngineCgalNear, TriangleVertexOnBoxFace) {
   run("triangle vertex on box face", 2009, 20, [](std::mt19937_64& g) {
-    const Obb box = grid_box(g);
-    int k = 0, s = 0;
-    const Vec3 p = box_face_point(box, g, &k, &s);
+    const BoxFacePoint f = grid_box_face_point(g);
     // Other vertices outside, beyond the face: + alpha * s * axes_k + tangential.
-    auto outward = [&] {
+    const Triangle t = triangle_on_face_point(f, [&] {
       const double al = std::ldexp(irand(g, 1, 8), -3);
-      return p + (s * al) * box.axes[k] + dyadic_t(g) * box.axes[(k + 1) % 3] + dyadic_t(g) * box.axes[(k + 2) % 3];
-    };
-    Vec3 q, r;
-    do {
-      q = outward();
-      r = outward();
-    } while (!nondegenerate_triangle(p, q, r));
-    Shape b = triangle_shape(p, q, r);
-    const Vec3 nrm = cross(box.axes[(k + 1) % 3], box.axes[(k + 2) % 3]);
-    return neighbours(box_shape(box), b, 0, main_axis(nrm), g);
+      return beyond(f, al, g);
+    });
+    return face_neighbours(f, triangle_shape(t.a, t.b, t.c), g);
   });
 }
 
 TEST_F(EngineCgalNear, SegmentEndOnBoxFace) {
   run("segment end on box face", 2010, 16, [](std::mt19937_64& g) {
-    const Obb box = grid_box(g);
-    int k = 0, s = 0;
-    const Vec3 p = box_face_point(box, g, &k, &s);
+    const BoxFacePoint f = grid_box_face_point(g);
     const int mode = irand(g, 0, 2);
     // mode 0: along the face (touching along a segment), else leaving the face outward.
     const double al = mode == 0 ? 0.0 : std::ldexp(irand(g, 1, 8), -3);
-    const Vec3 q = p + (s * al) * box.axes[k] + dyadic_t(g) * box.axes[(k + 1) % 3] + dyadic_t(g) * box.axes[(k + 2) % 3];
-    Shape b = segment_shape(p, q);
-    const Vec3 nrm = cross(box.axes[(k + 1) % 3], box.axes[(k + 2) % 3]);
-    return neighbours(box_shape(box), b, 0, main_axis(nrm), g);
+    return face_neighbours(f, segment_shape(f.p, beyond(f, al, g)), g);
   });
 }
 
@@ -1296,43 +1309,80 @@ Obb grid_orthonormal_box(std::mt19937_64& g) {
 }
 }  // namespace
 
-TEST(EngineCgalCylinder0, ZeroRadiusCylinderAgainstBox) {
-  const std::uint64_t seed = 20261122;
-  std::mt19937_64 g(seed);
-  int checked = 0, meets = 0, prod_checked = 0;
-  for (int i = 0; i < 3000; ++i) {
-    const Obb box = grid_orthonormal_box(g);
-    // Segment ends: grid points, points on the box's boundary (touching),
-    // and boundary points moved by one ulp.
+/// The zero-radius cylinder tests: their seed and generator, the draw of a
+/// cylinder, the checks against CGAL's verdict, and the counts they report.
+class EngineCgalCylinder0 : public ::testing::Test {
+ protected:
+  /// A zero-radius cylinder (its axis segment) and CGAL's exact verdict on
+  /// it against the other shape.
+  struct Drawn {
+    Cylinder cyl;
+    bool truth = false;
+  };
+
+  /// A zero-radius cylinder whose ends are grid points within `lim` (modes
+  /// 0..grid_modes of 0..6) or on() (points of `other`), the latter moved by
+  /// one ulp in mode 6, with CGAL's verdict against `other` (counted in
+  /// `meets`); nothing when the ends coincide.
+  template <class On>
+  std::optional<Drawn> draw(int grid_modes, double lim, On on, const Shape& other) {
     auto end = [&]() {
       const int mode = irand(g, 0, 6);
-      if (mode <= 3) return gvec(g, 3);
-      Vec3 p = box_face_point(box, g);
+      if (mode <= grid_modes) return gvec(g, lim);
+      Vec3 p = on();
       if (mode == 6) p = ulp_move(p, irand(g, 0, 2), irand(g, 0, 1) ? 1 : -1);
       return p;
     };
     const Vec3 a = end(), b = end();
-    if (a == b) continue;
-    const Cylinder cyl{a, b, 0.0};
-    const bool truth = cgal_intersect(cgal_shape(segment_shape(a, b)), cgal_shape(box_shape(box)));
+    if (a == b) return std::nullopt;
+    const bool truth = cgal_intersect(cgal_shape(segment_shape(a, b)), cgal_shape(other));
     meets += truth;
-    const DistanceResult r = classify(make_shape(cyl), make_shape(box));
+    return Drawn{Cylinder{a, b, 0.0}, truth};
+  }
+
+  /// The engine's decided verdict r on (d.cyl, other) must be CGAL's, and
+  /// where r's distance is outside `band` so must production's
+  /// overlap(d.cyl, other); counted in `checked` and `prod_checked`.
+  template <class Other>
+  void expect_as_cgal(const Drawn& d, const Other& other, const DistanceResult& r, const Q& band,
+                      const std::string& where) {
+    ASSERT_EQ(d.truth, r.verdict != Verdict::Separated) << where << " engine " << to_string(r.verdict);
+    ++checked;
+    if (r.distance.lo > band || r.distance.hi < -band) {
+      ++prod_checked;
+      ASSERT_EQ(d.truth, overlap(d.cyl, other)) << where << " production disagrees with CGAL outside the band";
+    }
+  }
+
+  /// Between a fifth and four fifths of the checked pairs meet.
+  void expect_balanced() const {
+    EXPECT_GT(meets, checked / 5);
+    EXPECT_LT(meets, checked * 4 / 5);
+  }
+
+  const std::uint64_t seed = 20261122;
+  std::mt19937_64 g{seed};
+  int checked = 0, meets = 0, prod_checked = 0;
+};
+
+TEST_F(EngineCgalCylinder0, ZeroRadiusCylinderAgainstBox) {
+  for (int i = 0; i < 3000; ++i) {
+    const Obb box = grid_orthonormal_box(g);
+    // Segment ends: grid points, points on the box's boundary (touching),
+    // and boundary points moved by one ulp.
+    const auto d = draw(3, 3, [&] { return box_face_point(box, g); }, box_shape(box));
+    if (!d) continue;
+    const Vec3 a = d->cyl.p, b = d->cyl.q;
+    const DistanceResult r = classify(make_shape(d->cyl), make_shape(box));
     const std::string where = "seed " + std::to_string(seed) + " #" + std::to_string(i) + ": Cylinder{" + hex(a) + ", " +
                               hex(b) + ", 0} vs Obb{c=" + hex(box.c) + ", e=" + hex(box.e) + "}";
     ASSERT_NE(r.verdict, Verdict::Undecided) << where;
-    ASSERT_EQ(truth, r.verdict != Verdict::Separated) << where << " engine " << to_string(r.verdict);
-    ++checked;
     const double scale = std::max({max_abs(a), max_abs(b), max_abs(box.c), max_abs(box.e), length(b - a)});
-    const Q band = to_q(1e-14) * to_q(scale);
-    if (r.distance.lo > band || r.distance.hi < -band) {
-      ++prod_checked;
-      ASSERT_EQ(truth, overlap(cyl, box)) << where << " production disagrees with CGAL outside the band";
-    }
+    ASSERT_NO_FATAL_FAILURE(expect_as_cgal(*d, box, r, to_q(1e-14) * to_q(scale), where));
   }
   std::printf("[EngineCgalCylinder0] seed %llu: %d pairs, %d meeting; production checked outside the band on %d\n",
               static_cast<unsigned long long>(seed), checked, meets, prod_checked);
-  EXPECT_GT(meets, checked / 5);
-  EXPECT_LT(meets, checked * 4 / 5);
+  expect_balanced();
 }
 
 // The same for triangles (collide_cylinder_triangle): a zero-radius cylinder
@@ -1340,32 +1390,21 @@ TEST(EngineCgalCylinder0, ZeroRadiusCylinderAgainstBox) {
 // vertices, a vertex at the midpoint of the opposite edge), against segments
 // whose ends are grid points, points of the triangle, or such points moved
 // by one ulp. CGAL decides segment-triangle intersection exactly.
-TEST(EngineCgalCylinder0, ZeroRadiusCylinderAgainstTriangle) {
-  const std::uint64_t seed = 20261122;
-  std::mt19937_64 g(seed);
-  int checked = 0, meets = 0, prod_checked = 0, undecided = 0;
+TEST_F(EngineCgalCylinder0, ZeroRadiusCylinderAgainstTriangle) {
+  int undecided = 0;
   for (int i = 0; i < 1500; ++i) {
     Triangle t = grid_triangle(g);
     const int deg = irand(g, 0, 9);
     if (deg == 0) t.c = t.b;
     if (deg == 1) t.c = 0.5 * (t.a + t.b);
-    auto end = [&]() {
-      const int mode = irand(g, 0, 6);
-      if (mode <= 2) return gvec(g, 2);
-      Vec3 p = bary_point(t, g);
-      if (mode == 6) p = ulp_move(p, irand(g, 0, 2), irand(g, 0, 1) ? 1 : -1);
-      return p;
-    };
-    const Vec3 a = end(), b = end();
-    if (a == b) continue;
-    const Cylinder cyl{a, b, 0.0};
-    const bool truth = cgal_intersect(cgal_shape(segment_shape(a, b)), cgal_shape(triangle_shape(t.a, t.b, t.c)));
-    meets += truth;
-    DistanceResult r = classify(make_shape(cyl), make_shape(t));
+    const auto d = draw(2, 2, [&] { return bary_point(t, g); }, triangle_shape(t.a, t.b, t.c));
+    if (!d) continue;
+    const Vec3 a = d->cyl.p, b = d->cyl.q;
+    DistanceResult r = classify(make_shape(d->cyl), make_shape(t));
     if (r.verdict == Verdict::Undecided) {
       EngineOptions opt;
       opt.rel_width = 1e-20;
-      r = classify(make_shape(cyl), make_shape(t), opt);
+      r = classify(make_shape(d->cyl), make_shape(t), opt);
     }
     const std::string where = "seed " + std::to_string(seed) + " #" + std::to_string(i) + ": Cylinder{" + hex(a) + ", " +
                               hex(b) + ", 0} vs Triangle{" + hex(t.a) + ", " + hex(t.b) + ", " + hex(t.c) + "}";
@@ -1380,23 +1419,17 @@ TEST(EngineCgalCylinder0, ZeroRadiusCylinderAgainstTriangle) {
       ++undecided;
       const Q d2 = decomposed_d2(cgal_shape(segment_shape(a, b)), cgal_shape(triangle_shape(t.a, t.b, t.c)));
       if (d2 > band * band) {
-        ASSERT_FALSE(overlap(cyl, t)) << where << " production overlaps; CGAL distance^2 " << to_double(d2);
+        ASSERT_FALSE(overlap(d->cyl, t)) << where << " production overlaps; CGAL distance^2 " << to_double(d2);
       }
       continue;
     }
-    ASSERT_EQ(truth, r.verdict != Verdict::Separated) << where << " engine " << to_string(r.verdict);
-    ++checked;
-    if (r.distance.lo > band || r.distance.hi < -band) {
-      ++prod_checked;
-      ASSERT_EQ(truth, overlap(cyl, t)) << where << " production disagrees with CGAL outside the band";
-    }
+    ASSERT_NO_FATAL_FAILURE(expect_as_cgal(*d, t, r, band, where));
   }
   std::printf("[EngineCgalCylinder0] triangles, seed %llu: %d pairs, %d meeting; production checked outside the band on "
               "%d; engine undecided (touching within the band) on %d\n",
               static_cast<unsigned long long>(seed), checked, meets, prod_checked, undecided);
   EXPECT_LT(undecided, checked / 10);
-  EXPECT_GT(meets, checked / 5);
-  EXPECT_LT(meets, checked * 4 / 5);
+  expect_balanced();
 }
 
 TEST(EngineCgalHand, PointOnSegment) {
@@ -1475,15 +1508,10 @@ void check_impact(const Shape& sa, Vec3 delta, const Shape& sb, const std::strin
   const bool contact = feasible && first <= 1 && (!has_hi || first <= Hi);
   const bool grazing = has_lo && has_hi && Lo == Hi;  // meets at one instant only
   const ConvexShape A = engine_shape(sa), B = engine_shape(sb);
-  ImpactResult r;
-  try {
-    const auto t0 = std::chrono::steady_clock::now();
-    r = time_of_impact(A, d, B);
-    st.engine_ms += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
-  } catch (const std::exception& e) {
-    ADD_FAILURE() << "time_of_impact threw: " << e.what();
-    return;
-  }
+  const std::optional<ImpactResult> answer =
+      engine_call("time_of_impact", st.engine_ms, [&] { return time_of_impact(A, d, B); });
+  if (!answer) return;
+  const ImpactResult& r = *answer;
   SCOPED_TRACE(std::string("engine ") + to_string(r.kind) + " t [" + qs(r.t.lo) + ", " + qs(r.t.hi) + "] note " + r.note);
   switch (r.kind) {
     case ImpactResult::Kind::NoHit: ++st.nohit; break;
@@ -1511,12 +1539,28 @@ void check_impact(const Shape& sa, Vec3 delta, const Shape& sb, const std::strin
 
 }  // namespace
 
-TEST(EngineCgalImpact, RandomPairs) {
-  const std::uint64_t seed = 3001;
-  std::printf("[impact random] seed %llu\n", static_cast<unsigned long long>(seed));
-  std::mt19937_64 g(seed);
-  ImpactStats st;
-  for (int i = 0; i < 100; ++i) {
+/// The time-of-impact checks: `n` motions (moving A, its delta, resting B)
+/// from `make(g, i)` on the seed, each checked by check_impact; prints the
+/// counts.
+class EngineCgalImpact : public ::testing::Test {
+ protected:
+  void run(const char* name, std::uint64_t seed, int n,
+           const std::function<std::tuple<Shape, Vec3, Shape>(std::mt19937_64&, int)>& make) {
+    std::printf("[%s] seed %llu\n", name, static_cast<unsigned long long>(seed));
+    std::mt19937_64 g(seed);
+    ImpactStats st;
+    for (int i = 0; i < n; ++i) {
+      const auto [a, delta, b] = make(g, i);
+      check_impact(a, delta, b, std::string(name) + " seed " + std::to_string(seed) + " #" + std::to_string(i), st);
+    }
+    std::printf("[%s] pairs %d (%d flat A - B skipped): %d no hit, %d hit, %d starts inside, %d undecided; engine %.0f "
+                "ms\n",
+                name, st.pairs, st.flat, st.nohit, st.hit, st.starts, st.undecided, st.engine_ms);
+  }
+};
+
+TEST_F(EngineCgalImpact, RandomPairs) {
+  run("impact random", 3001, 100, [](std::mt19937_64& g, int i) {
     Shape a, b;
     switch (i % 5) {
       case 0: { const Triangle t = random_triangle(g); a = triangle_shape(t.a, t.b, t.c); b = box_shape(random_box(g)); break; }
@@ -1526,46 +1570,47 @@ TEST(EngineCgalImpact, RandomPairs) {
       default: { const Triangle t = random_triangle(g); a = segment_shape(uvec(g), uvec(g)); b = triangle_shape(t.a, t.b, t.c); break; }
     }
     const Vec3 delta = uvec(g, -3, 3);
-    check_impact(a, delta, b, "impact random seed 3001 #" + std::to_string(i), st);
-  }
-  std::printf("[impact random] pairs %d (%d flat A - B skipped): %d no hit, %d hit, %d starts inside, %d undecided; engine %.0f ms\n",
-              st.pairs, st.flat, st.nohit, st.hit, st.starts, st.undecided, st.engine_ms);
+    return std::make_tuple(a, delta, b);
+  });
 }
 
-TEST(EngineCgalImpact, TriangleVertexLandsOnBoxFace) {
+TEST_F(EngineCgalImpact, TriangleVertexLandsOnBoxFace) {
   // The triangle's vertex reaches a box face exactly at t = 1/2 (or 1, or
   // never: delta too short / pointing away).
-  const std::uint64_t seed = 3002;
-  std::printf("[impact onto face] seed %llu\n", static_cast<unsigned long long>(seed));
-  std::mt19937_64 g(seed);
-  ImpactStats st;
-  for (int i = 0; i < 24; ++i) {
-    const Obb box = grid_box(g);
-    int k = 0, s = 0;
-    const Vec3 p = box_face_point(box, g, &k, &s);
+  run("impact onto face", 3002, 24, [](std::mt19937_64& g, int i) {
+    const BoxFacePoint f = grid_box_face_point(g);
     const double al = std::ldexp(irand(g, 1, 8), -3);
-    const Vec3 off = (s * al) * box.axes[k];
-    auto outward = [&] {
-      return p + (s * std::ldexp(irand(g, 1, 8), -3)) * box.axes[k] + dyadic_t(g) * box.axes[(k + 1) % 3] +
-             dyadic_t(g) * box.axes[(k + 2) % 3];
-    };
-    Vec3 q, r;
-    do {
-      q = outward();
-      r = outward();
-    } while (!nondegenerate_triangle(p, q, r));
-    const Shape tri_s = triangle_shape(p + off, q + off + off, r + off + off);
-    const double f = (i % 4 == 0) ? 1.0 : (i % 4 == 1 ? 2.0 : (i % 4 == 2 ? 4.0 : -2.0));
-    const Vec3 delta = (-f) * off;  // contact at t = 1/f
-    check_impact(tri_s, delta, box_shape(box), "impact onto face seed 3002 #" + std::to_string(i), st);
-  }
-  std::printf("[impact onto face] pairs %d: %d no hit, %d hit, %d starts inside, %d undecided; engine %.0f ms\n", st.pairs,
-              st.nohit, st.hit, st.starts, st.undecided, st.engine_ms);
+    const Vec3 off = (f.s * al) * f.box.axes[f.k];
+    // Other vertices outside, beyond the face.
+    const Triangle t = triangle_on_face_point(f, [&] {
+      return f.p + (f.s * std::ldexp(irand(g, 1, 8), -3)) * f.box.axes[f.k] + dyadic_t(g) * f.box.axes[(f.k + 1) % 3] +
+             dyadic_t(g) * f.box.axes[(f.k + 2) % 3];
+    });
+    const Shape tri_s = triangle_shape(t.a + off, t.b + off + off, t.c + off + off);
+    const double d = (i % 4 == 0) ? 1.0 : (i % 4 == 1 ? 2.0 : (i % 4 == 2 ? 4.0 : -2.0));
+    const Vec3 delta = (-d) * off;  // contact at t = 1/d
+    return std::make_tuple(tri_s, delta, box_shape(f.box));
+  });
 }
 
 // =====================================================================================
 // (c) forged certificates, hand-made
 // =====================================================================================
+
+namespace {
+
+/// The overlap certificate of the tetrahedron a[0..3] (points of A) around
+/// the point x (B, a single point).
+OverlapCertificate certificate_around(const Vec3 (&a)[4], Vec3 x) {
+  OverlapCertificate c;
+  for (int i = 0; i < 4; ++i) {
+    c.a[i] = to_q(a[i]);
+    c.b[i] = to_q(x);
+  }
+  return c;
+}
+
+}  // namespace
 
 TEST(EngineCgalForged, CylinderRimPushedOutByOneUlp) {
   // Cylinder p = 0, q = (0, 0, 2), r = 5: (3, -4, 0), (-3, -4, 0), (0, 5, 0)
@@ -1574,12 +1619,8 @@ TEST(EngineCgalForged, CylinderRimPushedOutByOneUlp) {
   const Cylinder cyl{{0, 0, 0}, {0, 0, 2}, 5};
   const Vec3 x{0, 0, 0.5};
   const ConvexShape A = make_shape(cyl), B = make_point(x);
-  OverlapCertificate c;
   const Vec3 a[4] = {{3, -4, 0}, {-3, -4, 0}, {0, 5, 0}, {0, 0, 2}};
-  for (int i = 0; i < 4; ++i) {
-    c.a[i] = to_q(a[i]);
-    c.b[i] = to_q(x);
-  }
+  const OverlapCertificate c = certificate_around(a, x);
   EXPECT_TRUE(check_overlap(A, B, c)) << "genuine rim certificate rejected";
   const Vec3 forged[] = {{std::nextafter(3.0, 4.0), -4, 0},
                          {3, std::nextafter(-4.0, -5.0), 0},
@@ -1625,11 +1666,7 @@ TEST(EngineCgalForged, TiltedCylinderRimPushedOut) {
   const ConvexShape B = make_point(x);
   const Vec3 a[4] = {{2, 1, -2}, {-2, -1, 2}, {2, -2, 1}, {-1, 4, 1}};
   const Vec3 cap[4] = {{0, 0, 0}, {0, 0, 0}, {0, 0, 0}, {1, 2, 2}};
-  OverlapCertificate c;
-  for (int i = 0; i < 4; ++i) {
-    c.a[i] = to_q(a[i]);
-    c.b[i] = to_q(x);
-  }
+  const OverlapCertificate c = certificate_around(a, x);
   EXPECT_TRUE(check_overlap(A, B, c)) << "genuine tilted rim certificate rejected";
   for (int i = 0; i < 4; ++i)
     for (int k = 0; k < 3; ++k) {
@@ -1658,11 +1695,7 @@ TEST(EngineCgalForged, BoxVertexPushedOut) {
   // Vertices (-,-,-), (+,-,-), (-,+,-), (-,-,+) ... their tetrahedron does
   // not hold the centre; use (+,+,+) with three of its far neighbours.
   const Vec3 v[4] = {{1.5, 0.25, 1.25}, {-0.5, -0.75, 1.25}, {-0.5, 0.25, 0.75}, {1.5, -0.75, 0.75}};
-  OverlapCertificate c;
-  for (int i = 0; i < 4; ++i) {
-    c.a[i] = to_q(v[i]);
-    c.b[i] = to_q(x);
-  }
+  const OverlapCertificate c = certificate_around(v, x);
   EXPECT_TRUE(check_overlap(A, B, c)) << "genuine box-vertex certificate rejected";
   for (int i = 0; i < 4; ++i)
     for (int k = 0; k < 3; ++k) {

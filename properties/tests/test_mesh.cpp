@@ -46,17 +46,15 @@ struct MeshCase {
   std::string tag;
 };
 
-std::string hex(double x) {
-  char b[40];
-  std::snprintf(b, sizeof b, "%a", x);
-  return b;
+/// A point's coordinates as hexadecimal floats (the case files' form).
+std::string hex(Vec3 v) {
+  return "(" + format_double(v.x) + ", " + format_double(v.y) + ", " + format_double(v.z) + ")";
 }
-std::string hex(Vec3 v) { return "(" + hex(v.x) + ", " + hex(v.y) + ", " + hex(v.z) + ")"; }
 
 std::string describe(const MeshCase& c) {
   std::ostringstream os;
-  os << "[" << c.tag << "] cylinder p=" << hex(c.cyl.p) << " q=" << hex(c.cyl.q) << " r=" << hex(c.cyl.r) << "\n  "
-     << c.vertices.size() << " vertices:";
+  os << "[" << c.tag << "] cylinder p=" << hex(c.cyl.p) << " q=" << hex(c.cyl.q) << " r=" << format_double(c.cyl.r)
+     << "\n  " << c.vertices.size() << " vertices:";
   for (std::size_t i = 0; i < c.vertices.size(); ++i) os << "\n    v" << i << " " << hex(c.vertices[i]);
   os << "\n  " << c.faces.size() << " faces:";
   for (std::size_t i = 0; i < c.faces.size(); ++i)
@@ -66,7 +64,7 @@ std::string describe(const MeshCase& c) {
 
 std::string describe(const Contact& k) {
   if (!k.hit) return "no hit";
-  return "depth=" + hex(k.depth) + " normal=" + hex(k.normal) + " point=" + hex(k.point);
+  return "depth=" + format_double(k.depth) + " normal=" + hex(k.normal) + " point=" + hex(k.point);
 }
 
 bool same(const Contact& a, const Contact& b) {

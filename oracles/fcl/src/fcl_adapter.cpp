@@ -6,6 +6,7 @@
 #include <limits>
 #include <string>
 #include <type_traits>
+#include <utility>
 #include <vector>
 
 #include <ccd/vec3.h>
@@ -86,6 +87,13 @@ bool guarded_bool(std::string* error, F&& f) {
   return false;
 }
 
+/// An answered contact query that found no hit.
+PeerContact no_contact() {
+  PeerContact out;
+  out.ok = true;
+  return out;
+}
+
 /// FCL's contact (a hit), checked for garbage. `zero_normal_touch`: accept
 /// libccd MPR's touching contact (see below).
 PeerContact contact_from(const fcl::Vector3d& pos, const fcl::Vector3d& normal, double depth,
@@ -116,11 +124,7 @@ PeerContact contact_from(const fcl::Vector3d& pos, const fcl::Vector3d& normal, 
 
 /// FCL's contact, checked for garbage. `res` holds at most one contact.
 PeerContact contact_from(const fcl::CollisionResultd& res, bool zero_normal_touch = false) {
-  if (!res.isCollision()) {
-    PeerContact out;
-    out.ok = true;
-    return out;
-  }
+  if (!res.isCollision()) return no_contact();
   if (res.numContacts() == 0) {
     PeerContact out;
     out.hit = true;
@@ -129,6 +133,57 @@ PeerContact contact_from(const fcl::CollisionResultd& res, bool zero_normal_touc
   }
   const fcl::Contactd& c = res.getContact(0);
   return contact_from(c.pos, c.normal, c.penetration_depth, zero_normal_touch);
+}
+
+/// FCL's distance and nearest points, checked for garbage.
+PeerDistance distance_from(double dist, const fcl::Vector3d& p1, const fcl::Vector3d& p2) {
+  PeerDistance out;
+  out.ok = true;
+  out.distance = dist;
+  out.p_a = from_fcl(p1);
+  out.p_b = from_fcl(p2);
+  if (!std::isfinite(out.distance) || !is_finite(out.p_a) || !is_finite(out.p_b)) {
+    out.ok = false;
+    out.error = "FCL returned a non-finite distance or point";
+  }
+  return out;
+}
+
+constexpr const char* kBoxAxesNotOrthonormal = "box axes not orthonormal";
+
+/// Why FCL is not asked about a pair (nullptr: it is).
+template <class B>
+const char* refusal(const Cylinder& a, const B& b) {
+  return is_valid(a) && is_valid(b) ? nullptr : kInvalidInput;
+}
+const char* refusal(const Cylinder& a, const Obb& b) {
+  if (!is_valid(a) || !is_valid(b)) return kInvalidInput;
+  return obb_axes_orthonormal(b) ? nullptr : kBoxAxesNotOrthonormal;
+}
+
+/// The answer R of a query on (a, b): not ok, saying why, when FCL is not
+/// asked (see `refusal`); otherwise f()'s answer, guarded.
+template <class R, class B, class F>
+R validated(const Cylinder& a, const B& b, F&& f) {
+  R out;
+  if (const char* why = refusal(a, b)) {
+    out.error = why;
+    return out;
+  }
+  return guarded_into(out, std::forward<F>(f));
+}
+
+/// A yes/no query on (a, b): false when FCL is not asked (see `refusal`),
+/// the reason in *error; otherwise f()'s answer, guarded (*error cleared
+/// first).
+template <class B, class F>
+bool validated_bool(const Cylinder& a, const B& b, std::string* error, F&& f) {
+  if (error) error->clear();
+  if (const char* why = refusal(a, b)) {
+    if (error) *error = why;
+    return false;
+  }
+  return guarded_bool(error, std::forward<F>(f));
 }
 
 // --- libccd's MPR and GJK with guarded support functions ----------------------
@@ -268,7 +323,9 @@ class GuardedObjects {
 /// product turns NaN and FCL's "A is not in region 1" assert aborts.
 const double kGjkMaxExtent = std::ldexp(1.0, 250);
 
-bool within_gjk_range(const Cylinder& c, const Capsule& k) {
+/// A capsule or a second cylinder: its end points' offsets and its radius.
+template <class B>
+bool within_gjk_range(const Cylinder& c, const B& k) {
   const double offsets = std::fmax(max_abs(c.q - c.p), std::fmax(max_abs(k.p - c.p), max_abs(k.q - c.p)));
   const double extent = std::fmax(offsets, std::fmax(c.r, k.r));
   return extent <= kGjkMaxExtent;  // false for NaN too
@@ -279,13 +336,6 @@ bool within_gjk_range(const Cylinder& c, const Capsule& k) {
 bool within_gjk_range(const Cylinder& c, const Obb& b) {
   const double offsets = std::fmax(max_abs(c.q - c.p), max_abs(b.c - c.p));
   const double extent = std::fmax(offsets, std::fmax(c.r, max_abs(b.e)));
-  return extent <= kGjkMaxExtent;  // false for NaN too
-}
-
-/// A second cylinder: its end points' offsets and its radius.
-bool within_gjk_range(const Cylinder& c, const Cylinder& k) {
-  const double offsets = std::fmax(max_abs(c.q - c.p), std::fmax(max_abs(k.p - c.p), max_abs(k.q - c.p)));
-  const double extent = std::fmax(offsets, std::fmax(c.r, k.r));
   return extent <= kGjkMaxExtent;  // false for NaN too
 }
 
@@ -345,20 +395,12 @@ PeerDistance guarded_gjk_distance(const Obj1& d1, const Obj2& d2) {
   fcl::Vector3d p1 = fcl::Vector3d::Zero(), p2 = fcl::Vector3d::Zero();
   fcl::detail::GJKDistance<double>(objs.o1(), &guarded_support, objs.o2(), &guarded_support,
                                    solver.max_distance_iterations, request.distance_tolerance, &dist, &p1, &p2);
-  PeerDistance out;
   if (objs.guard().spent || objs.guard().non_finite) {
+    PeerDistance out;
     out.error = objs.guard().spent ? kSupportSpent : kSupportNonFinite;
     return out;
   }
-  out.ok = true;
-  out.distance = dist;
-  out.p_a = from_fcl(p1);
-  out.p_b = from_fcl(p2);
-  if (!std::isfinite(out.distance) || !is_finite(out.p_a) || !is_finite(out.p_b)) {
-    out.ok = false;
-    out.error = "FCL returned a non-finite distance or point";
-  }
-  return out;
+  return distance_from(dist, p1, p2);
 }
 
 /// A sphere of radius r translated from `from` to `to` (a segment cast: r = 0).
@@ -459,23 +501,23 @@ fcl::Matrix3d fcl_rotation_z_to(const Vec3& u) {
 }
 
 FclCylinder::FclCylinder(const Cylinder& c)
-    : shape(c.r, norm(c.q - c.p)), pose(fcl::Transform3d::Identity()) {
+    : FclPosed{fcl::Cylinderd(c.r, norm(c.q - c.p)), fcl::Transform3d::Identity()} {
   pose.linear() = fcl_rotation_z_to(unit(c.q - c.p));
   pose.translation() = to_fcl(0.5 * c.p + 0.5 * c.q);
 }
 
-FclSphere::FclSphere(const Sphere& s) : shape(s.r), pose(fcl::Transform3d::Identity()) {
+FclSphere::FclSphere(const Sphere& s) : FclPosed{fcl::Sphered(s.r), fcl::Transform3d::Identity()} {
   pose.translation() = to_fcl(s.c);
 }
 
 FclCapsule::FclCapsule(const Capsule& c)
-    : shape(c.r, norm(c.q - c.p)), pose(fcl::Transform3d::Identity()) {
+    : FclPosed{fcl::Capsuled(c.r, norm(c.q - c.p)), fcl::Transform3d::Identity()} {
   if (c.p != c.q) pose.linear() = fcl_rotation_z_to(unit(c.q - c.p));
   pose.translation() = to_fcl(0.5 * c.p + 0.5 * c.q);
 }
 
 FclBox::FclBox(const Obb& b)
-    : shape(2 * b.e.x, 2 * b.e.y, 2 * b.e.z), pose(fcl::Transform3d::Identity()) {
+    : FclPosed{fcl::Boxd(2 * b.e.x, 2 * b.e.y, 2 * b.e.z), fcl::Transform3d::Identity()} {
   // FCL takes the frame for a rotation: a left-handed one gets its third
   // axis negated, which leaves the (symmetric) box the same set.
   const bool left_handed = dot(cross(b.axes[0], b.axes[1]), b.axes[2]) < 0;
@@ -513,20 +555,6 @@ PeerContact collide_on(const Pair& pair, bool zero_normal_touch = false) {
   });
 }
 
-/// FCL's distance and nearest points, checked for garbage.
-PeerDistance distance_from(double dist, const fcl::Vector3d& p1, const fcl::Vector3d& p2) {
-  PeerDistance out;
-  out.ok = true;
-  out.distance = dist;
-  out.p_a = from_fcl(p1);
-  out.p_b = from_fcl(p2);
-  if (!std::isfinite(out.distance) || !is_finite(out.p_a) || !is_finite(out.p_b)) {
-    out.ok = false;
-    out.error = "FCL returned a non-finite distance or point";
-  }
-  return out;
-}
-
 template <class Pair>
 PeerDistance distance_on(const Pair& pair) {
   return guarded<PeerDistance>([&]() -> PeerDistance {
@@ -550,17 +578,19 @@ fcl::detail::GJKSolver_libccdd triangle_solver() {
 
 }  // namespace
 
+// The converted pairs' calls, query by query (the triangle's and the
+// mesh's are below).
 bool fcl_overlap_prepared(const FclCylinderSphere& pair) { return overlap_on(pair); }
-PeerContact fcl_collide_prepared(const FclCylinderSphere& pair) { return collide_on(pair); }
-PeerDistance fcl_distance_prepared(const FclCylinderSphere& pair) { return distance_on(pair); }
 bool fcl_overlap_prepared(const FclCylinderCylinder& pair) { return overlap_on(pair); }
-PeerContact fcl_collide_prepared(const FclCylinderCylinder& pair) { return collide_on(pair, true); }
-PeerDistance fcl_distance_prepared(const FclCylinderCylinder& pair) { return distance_on(pair); }
 bool fcl_overlap_prepared(const FclCylinderCapsule& pair) { return overlap_on(pair); }
-PeerContact fcl_collide_prepared(const FclCylinderCapsule& pair) { return collide_on(pair); }
-PeerDistance fcl_distance_prepared(const FclCylinderCapsule& pair) { return distance_on(pair); }
 bool fcl_overlap_prepared(const FclCylinderBox& pair) { return overlap_on(pair); }
+PeerContact fcl_collide_prepared(const FclCylinderSphere& pair) { return collide_on(pair); }
+PeerContact fcl_collide_prepared(const FclCylinderCylinder& pair) { return collide_on(pair, true); }
+PeerContact fcl_collide_prepared(const FclCylinderCapsule& pair) { return collide_on(pair); }
 PeerContact fcl_collide_prepared(const FclCylinderBox& pair) { return collide_on(pair, true); }
+PeerDistance fcl_distance_prepared(const FclCylinderSphere& pair) { return distance_on(pair); }
+PeerDistance fcl_distance_prepared(const FclCylinderCylinder& pair) { return distance_on(pair); }
+PeerDistance fcl_distance_prepared(const FclCylinderCapsule& pair) { return distance_on(pair); }
 PeerDistance fcl_distance_prepared(const FclCylinderBox& pair) { return distance_on(pair); }
 
 FclMesh::FclMesh(const TriangleMesh& m) {
@@ -582,11 +612,7 @@ PeerContact fcl_collide_prepared(const FclCylinder& cyl, const FclMesh& mesh, in
     fcl::CollisionResultd res;
     fcl::collide(&mesh.model, fcl::Transform3d::Identity(), &cyl.shape, cyl.pose, req, res);
     if (contacts) *contacts = static_cast<int>(res.numContacts());
-    if (!res.isCollision()) {
-      PeerContact out;
-      out.ok = true;
-      return out;
-    }
+    if (!res.isCollision()) return no_contact();
     std::size_t deepest = 0;
     for (std::size_t i = 1; i < res.numContacts(); ++i)
       if (res.getContact(i).penetration_depth > res.getContact(deepest).penetration_depth) deepest = i;
@@ -605,9 +631,7 @@ PeerContact fcl_collide_prepared(const FclCylinderTriangle& pair) {
     double depth = 0;
     if (!triangle_solver().shapeTriangleIntersect(pair.a.shape, pair.a.pose, pair.b.a, pair.b.b, pair.b.c, &point,
                                                   &depth, &normal)) {
-      PeerContact out;
-      out.ok = true;
-      return out;
+      return no_contact();
     }
     return contact_from(point, normal, depth, true);
   });
@@ -623,34 +647,19 @@ PeerDistance fcl_distance_prepared(const FclCylinderTriangle& pair) {
 }
 
 PeerContact fcl_collide(const Cylinder& a, const Sphere& b) {
-  if (!is_valid(a) || !is_valid(b)) {
-    PeerContact out;
-    out.error = kInvalidInput;
-    return out;
-  }
-  return guarded<PeerContact>([&]() -> PeerContact {
+  return validated<PeerContact>(a, b, [&]() -> PeerContact {
     return fcl_collide_prepared(FclCylinderSphere(a, b));
   });
 }
 
 bool fcl_overlap(const Cylinder& a, const Sphere& b, std::string* error) {
-  if (error) error->clear();
-  if (!is_valid(a) || !is_valid(b)) {
-    if (error) *error = kInvalidInput;
-    return false;
-  }
-  return guarded_bool(error, [&]() -> bool {
+  return validated_bool(a, b, error, [&]() -> bool {
     return fcl_overlap_prepared(FclCylinderSphere(a, b));
   });
 }
 
 PeerDistance fcl_distance(const Cylinder& a, const Sphere& b) {
-  if (!is_valid(a) || !is_valid(b)) {
-    PeerDistance out;
-    out.error = kInvalidInput;
-    return out;
-  }
-  return guarded<PeerDistance>([&]() -> PeerDistance {
+  return validated<PeerDistance>(a, b, [&]() -> PeerDistance {
     return distance_on(FclCylinderSphere(a, b));
   });
 }
@@ -663,24 +672,10 @@ PeerCast fcl_sweep(const MovingSphere& m, const Cylinder& c, FclCastMethod metho
   return continuous_collide(m, c, method);
 }
 
+// The pairs that run libccd's MPR and GJK, guarded: one template per query,
+// each followed by its overloads.
+
 namespace {
-
-constexpr const char* kBoxAxesNotOrthonormal = "box axes not orthonormal";
-
-/// Why FCL is not asked about a pair (nullptr: it is).
-const char* refusal(const Cylinder& a, const Capsule& b) {
-  return is_valid(a) && is_valid(b) ? nullptr : kInvalidInput;
-}
-const char* refusal(const Cylinder& a, const Obb& b) {
-  if (!is_valid(a) || !is_valid(b)) return kInvalidInput;
-  return obb_axes_orthonormal(b) ? nullptr : kBoxAxesNotOrthonormal;
-}
-const char* refusal(const Cylinder& a, const Triangle& b) {
-  return is_valid(a) && is_valid(b) ? nullptr : kInvalidInput;
-}
-const char* refusal(const Cylinder& a, const Cylinder& b) {
-  return is_valid(a) && is_valid(b) ? nullptr : kInvalidInput;
-}
 
 /// The converted pair of a cylinder and B.
 template <class B> struct PairOf;
@@ -692,34 +687,32 @@ template <> struct PairOf<Cylinder> { using type = FclCylinderCylinder; };
 /// fcl_collide of the pairs that run libccd's MPR: guarded, validated.
 template <class B>
 PeerContact guarded_collide(const Cylinder& a, const B& b) {
-  PeerContact out;
-  if (const char* why = refusal(a, b)) {
-    out.error = why;
-    return out;
-  }
-  return guarded_into(out, [&]() -> PeerContact {
+  return validated<PeerContact>(a, b, [&]() -> PeerContact {
     const typename PairOf<B>::type pair(a, b);
     const MprAnswer r = guarded_mpr(libccd(pair.a), libccd(pair.b), true);
     if (r.error) {
+      PeerContact out;
       out.error = r.error;
       return out;
     }
-    if (!r.hit) {
-      out.ok = true;
-      return out;
-    }
+    if (!r.hit) return no_contact();
     return contact_from(r.point, r.normal, r.depth, true);
   });
 }
 
+}  // namespace
+
+PeerContact fcl_collide(const Cylinder& a, const Capsule& b) { return guarded_collide(a, b); }
+PeerContact fcl_collide(const Cylinder& a, const Obb& b) { return guarded_collide(a, b); }
+PeerContact fcl_collide(const Cylinder& a, const Triangle& b) { return guarded_collide(a, b); }
+PeerContact fcl_collide(const Cylinder& a, const Cylinder& b) { return guarded_collide(a, b); }
+
+namespace {
+
+/// fcl_overlap of the pairs that run libccd's MPR: guarded, validated.
 template <class B>
 bool guarded_overlap(const Cylinder& a, const B& b, std::string* error) {
-  if (error) error->clear();
-  if (const char* why = refusal(a, b)) {
-    if (error) *error = why;
-    return false;
-  }
-  return guarded_bool(error, [&]() -> bool {
+  return validated_bool(a, b, error, [&]() -> bool {
     const typename PairOf<B>::type pair(a, b);
     const MprAnswer r = guarded_mpr(libccd(pair.a), libccd(pair.b), false);
     if (!r.error) return r.hit;
@@ -728,18 +721,25 @@ bool guarded_overlap(const Cylinder& a, const B& b, std::string* error) {
   });
 }
 
+}  // namespace
+
+bool fcl_overlap(const Cylinder& a, const Capsule& b, std::string* error) { return guarded_overlap(a, b, error); }
+bool fcl_overlap(const Cylinder& a, const Obb& b, std::string* error) { return guarded_overlap(a, b, error); }
+bool fcl_overlap(const Cylinder& a, const Triangle& b, std::string* error) { return guarded_overlap(a, b, error); }
+bool fcl_overlap(const Cylinder& a, const Cylinder& b, std::string* error) { return guarded_overlap(a, b, error); }
+
+namespace {
+
+/// fcl_distance of the pairs that run libccd's GJK: guarded, validated,
+/// within GJK's range.
 template <class B>
 PeerDistance guarded_distance(const Cylinder& a, const B& b) {
-  PeerDistance out;
-  if (const char* why = refusal(a, b)) {
-    out.error = why;
-    return out;
-  }
-  if (!within_gjk_range(a, b)) {
-    out.error = "outside FCL's range";
-    return out;
-  }
-  return guarded_into(out, [&]() -> PeerDistance {
+  return validated<PeerDistance>(a, b, [&]() -> PeerDistance {
+    if (!within_gjk_range(a, b)) {
+      PeerDistance out;
+      out.error = "outside FCL's range";
+      return out;
+    }
     const typename PairOf<B>::type pair(a, b);
     return guarded_gjk_distance(libccd(pair.a), libccd(pair.b));
   });
@@ -747,20 +747,9 @@ PeerDistance guarded_distance(const Cylinder& a, const B& b) {
 
 }  // namespace
 
-PeerContact fcl_collide(const Cylinder& a, const Capsule& b) { return guarded_collide(a, b); }
-bool fcl_overlap(const Cylinder& a, const Capsule& b, std::string* error) { return guarded_overlap(a, b, error); }
 PeerDistance fcl_distance(const Cylinder& a, const Capsule& b) { return guarded_distance(a, b); }
-
-PeerContact fcl_collide(const Cylinder& a, const Obb& b) { return guarded_collide(a, b); }
-bool fcl_overlap(const Cylinder& a, const Obb& b, std::string* error) { return guarded_overlap(a, b, error); }
 PeerDistance fcl_distance(const Cylinder& a, const Obb& b) { return guarded_distance(a, b); }
-
-PeerContact fcl_collide(const Cylinder& a, const Triangle& b) { return guarded_collide(a, b); }
-bool fcl_overlap(const Cylinder& a, const Triangle& b, std::string* error) { return guarded_overlap(a, b, error); }
 PeerDistance fcl_distance(const Cylinder& a, const Triangle& b) { return guarded_distance(a, b); }
-
-PeerContact fcl_collide(const Cylinder& a, const Cylinder& b) { return guarded_collide(a, b); }
-bool fcl_overlap(const Cylinder& a, const Cylinder& b, std::string* error) { return guarded_overlap(a, b, error); }
 PeerDistance fcl_distance(const Cylinder& a, const Cylinder& b) { return guarded_distance(a, b); }
 
 }  // namespace geomcheck::oracles

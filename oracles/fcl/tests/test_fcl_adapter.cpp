@@ -9,6 +9,7 @@
 #include <cstring>
 #include <limits>
 #include <string>
+#include <type_traits>
 #include <utility>
 
 #include "geomcheck/oracles/fcl_adapter.hpp"
@@ -23,6 +24,191 @@ const Cylinder kZ{{0, 0, -1}, {0, 0, 1}, 1.0};
 const Cylinder kZFlipped{{0, 0, 1}, {0, 0, -1}, 1.0};
 // An oblique cylinder away from the origin: axis (2, 3, 6)/7, length 7.
 const Cylinder kOblique{{10, -4, 3}, {12, -1, 9}, 0.5};
+// kOblique's mid-point, unit axis, and a unit perpendicular to the axis,
+// (3, -2, 0)/sqrt(13).
+const Vec3 kObliqueMid{11, -2.5, 6};
+const Vec3 kObliqueAxis = (1.0 / 7) * Vec3{2, 3, 6};
+const Vec3 kObliquePerp = (1.0 / std::sqrt(13.0)) * Vec3{3, -2, 0};
+
+/// Tolerances of a contact check: on the depth and on the normal's direction.
+struct Tol {
+  double depth, normal;
+};
+/// FCL's closed form (cylinder/sphere): to rounding.
+constexpr Tol kClosedForm{1e-14, 1e-14};
+/// libccd's MPR (tolerance 1e-6, absolute) on the symmetric hand cases.
+constexpr Tol kMpr{1e-6, 1e-6};
+/// libccd's MPR where the normal is the side's: within 1e-3.
+constexpr Tol kMprSide{1e-6, 1e-3};
+
+/// Checks that `r` is an answered hit `depth` deep (within `tol`).
+void expect_hit_depth(const PeerContact& r, double depth, double tol) {
+  ASSERT_TRUE(r.ok) << r.error;
+  ASSERT_TRUE(r.hit);
+  EXPECT_NEAR(r.depth, depth, tol);
+}
+
+/// Checks that `r` is an answered hit `depth` deep along `normal`.
+void expect_hit(const PeerContact& r, double depth, Vec3 normal, Tol tol) {
+  ASSERT_NO_FATAL_FAILURE(expect_hit_depth(r, depth, tol.depth));
+  EXPECT_NEAR(length(r.normal - normal), 0.0, tol.normal);
+}
+
+/// Checks that `r` is an answered contact query that found no hit.
+void expect_no_hit(const PeerContact& r) {
+  ASSERT_TRUE(r.ok) << r.error;
+  EXPECT_FALSE(r.hit);
+}
+
+/// Checks that collide finds no hit on (a, b) and that overlap says no,
+/// without an error.
+template <class A, class B>
+void expect_miss(const A& a, const B& b) {
+  ASSERT_NO_FATAL_FAILURE(expect_no_hit(fcl_collide(a, b)));
+  std::string err = "stale";
+  EXPECT_FALSE(fcl_overlap(a, b, &err));
+  EXPECT_EQ(err, "");
+}
+
+/// Checks that `d` is an answered distance of `distance` (within `tol`).
+void expect_distance(const PeerDistance& d, double distance, double tol) {
+  ASSERT_TRUE(d.ok) << d.error;
+  EXPECT_NEAR(d.distance, distance, tol);
+}
+
+/// Checks that `d` is a gap along coordinate `k`: the nearest points have
+/// coordinate k at `on_a` (the cylinder) and `on_b`, the distance is
+/// on_b - on_a, all within `tol`.
+void expect_gap(const PeerDistance& d, int k, double on_a, double on_b, double tol) {
+  ASSERT_NO_FATAL_FAILURE(expect_distance(d, on_b - on_a, tol));
+  EXPECT_NEAR(d.p_a[k], on_a, tol);
+  EXPECT_NEAR(d.p_b[k], on_b, tol);
+}
+
+/// Checks that `d` reports overlapping shapes: exactly -1, nearest points
+/// zero.
+void expect_overlapping(const PeerDistance& d) {
+  ASSERT_TRUE(d.ok) << d.error;
+  EXPECT_EQ(d.distance, -1.0);
+  EXPECT_EQ(d.p_a, Vec3{});
+  EXPECT_EQ(d.p_b, Vec3{});
+}
+
+/// Checks that collide, overlap and distance all refuse (a, b), saying
+/// `why`.
+template <class A, class B>
+void expect_refused(const A& a, const B& b, const std::string& why) {
+  const PeerContact r = fcl_collide(a, b);
+  EXPECT_FALSE(r.ok);
+  EXPECT_EQ(r.error, why);
+  std::string err;
+  EXPECT_FALSE(fcl_overlap(a, b, &err));
+  EXPECT_EQ(err, why);
+  const PeerDistance d = fcl_distance(a, b);
+  EXPECT_FALSE(d.ok);
+  EXPECT_EQ(d.error, why);
+}
+
+/// Checks that collide and overlap on (c, b), a scene on which libccd's MPR
+/// does not terminate, give up within 5 s and say so.
+template <class B>
+void expect_mpr_budget_stops(const Cylinder& c, const B& b) {
+  const auto start = std::chrono::steady_clock::now();
+  const PeerContact r = fcl_collide(c, b);
+  EXPECT_FALSE(r.ok) << "FCL no longer shows the documented non-termination";
+  EXPECT_NE(r.error.find("did not terminate"), std::string::npos) << r.error;
+  std::string err;
+  EXPECT_FALSE(fcl_overlap(c, b, &err));
+  EXPECT_NE(err.find("did not terminate"), std::string::npos) << err;
+  EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 5.0);
+}
+
+/// Checks that distance refuses (kZ, b), a scene whose first GJK direction
+/// is zero (FCL as shipped computes with NaN there), and says why.
+template <class B>
+void expect_zero_direction_refused(const B& b) {
+  const PeerDistance d = fcl_distance(kZ, b);
+  EXPECT_FALSE(d.ok) << "FCL no longer shows the documented defect";
+  EXPECT_NE(d.error.find("non-finite point"), std::string::npos) << d.error;
+}
+
+/// Checks that collide on (kZ, b), touching the top cap, is MPR's touching
+/// hit: rounding-sized depth.
+template <class B>
+void expect_touching_hit(const B& b) {
+  const PeerContact cap = fcl_collide(kZ, b);
+  ASSERT_TRUE(cap.ok) << cap.error;
+  EXPECT_TRUE(cap.hit) << "FCL's touching verdict changed: update fcl_adapter.hpp";
+  EXPECT_LT(cap.depth, 1e-15);
+}
+
+/// Checks that `c` is an answered cast (or sweep) that hits or misses as
+/// `hit` says.
+void expect_cast(const PeerCast& c, bool hit) {
+  ASSERT_TRUE(c.ok) << c.error;
+  EXPECT_EQ(c.hit, hit);
+}
+
+/// Checks that `c` is an answered cast (or sweep) that hits at `t` (within
+/// `tol`).
+void expect_cast_hit(const PeerCast& c, double t, double tol) {
+  ASSERT_NO_FATAL_FAILURE(expect_cast(c, true));
+  EXPECT_NEAR(c.t, t, tol);
+}
+
+/// Checks that `c` hits at `t` as conservative advancement finds it: from
+/// below, within 1e-4.
+void expect_advanced_to(const PeerCast& c, double t) {
+  ASSERT_NO_FATAL_FAILURE(expect_cast_hit(c, t, 1e-4));
+  EXPECT_LE(c.t, t + 1e-15);
+}
+
+/// Deterministic numbers in [-1, 1) for the randomised tests.
+struct TestRng {
+  std::uint64_t state;
+  double next() {
+    state = state * 6364136223846793005ULL + 1442695040888963407ULL;
+    return static_cast<double>(state >> 11) * 0x1.0p-53 * 2 - 1;
+  }
+  Vec3 vec() { return {next(), next(), next()}; }
+  int below(int n) { return std::min(n - 1, static_cast<int>((next() + 1) * 0.5 * n)); }
+};
+
+/// Over 500 random scenes (a cylinder, then B from `draw_b`) checks that,
+/// within the budget, the adapter's collide, overlap and distance are FCL's
+/// calls on the converted pair `Prepared`, bit for bit; more than 100 of
+/// the scenes must be hits.
+template <class Prepared, class DrawB>
+void expect_calls_are_fcls(std::uint64_t seed, DrawB draw_b) {
+  TestRng rng{seed};
+  int hits = 0;
+  for (int i = 0; i < 500; ++i) {
+    const Cylinder c{4 * rng.vec(), 4 * rng.vec(), 1.0 + rng.next()};
+    const auto b = draw_b(rng);
+    // FCL takes a box's frame for a rotation.
+    if constexpr (std::is_same_v<std::decay_t<decltype(b)>, Obb>) {
+      ASSERT_TRUE(obb_axes_orthonormal(b)) << i;
+    }
+    const PeerContact adapter = fcl_collide(c, b);
+    const PeerContact raw = fcl_collide_prepared(Prepared(c, b));
+    ASSERT_TRUE(adapter.ok) << adapter.error;
+    ASSERT_EQ(adapter.hit, raw.hit) << i;
+    EXPECT_EQ(fcl_overlap(c, b), fcl_overlap_prepared(Prepared(c, b))) << i;
+    const PeerDistance d = fcl_distance(c, b);
+    const PeerDistance d_raw = fcl_distance_prepared(Prepared(c, b));
+    ASSERT_TRUE(d.ok) << d.error;
+    EXPECT_EQ(std::memcmp(&d.distance, &d_raw.distance, sizeof(double)), 0) << i;
+    EXPECT_EQ(d.p_a, d_raw.p_a) << i;
+    EXPECT_EQ(d.p_b, d_raw.p_b) << i;
+    if (!adapter.hit) continue;
+    ++hits;
+    EXPECT_TRUE(raw.ok) << raw.error;
+    EXPECT_EQ(std::memcmp(&adapter.depth, &raw.depth, sizeof(double)), 0) << i;
+    EXPECT_EQ(adapter.normal, raw.normal) << i;
+    EXPECT_EQ(adapter.point, raw.point) << i;
+  }
+  EXPECT_GT(hits, 100);
+}
 
 TEST(FclConvert, RotationTakesZToAxis) {
   for (Vec3 u : {Vec3{0, 0, 1}, Vec3{0, 0, -1}, Vec3{1, 0, 0}, Vec3{0, -1, 0}, Vec3{2.0 / 7, 3.0 / 7, 6.0 / 7},
@@ -50,18 +236,13 @@ TEST(FclPeer, DistanceSphereAboveCap) {
   // Sphere of radius 0.5 centred 2 above the top cap: distance 1.5.
   for (const Cylinder& c : {kZ, kZFlipped}) {
     const PeerDistance d = fcl_distance(c, Sphere{{0.25, -0.25, 3}, 0.5});
-    ASSERT_TRUE(d.ok) << d.error;
-    EXPECT_NEAR(d.distance, 1.5, 1e-14);
+    ASSERT_NO_FATAL_FAILURE(expect_distance(d, 1.5, 1e-14));
     EXPECT_NEAR(length(d.p_a - Vec3{0.25, -0.25, 1}), 0.0, 1e-14);
     EXPECT_NEAR(length(d.p_b - Vec3{0.25, -0.25, 2.5}), 0.0, 1e-14);
   }
   // Beside the oblique cylinder: the centre 2 from the side, radius 0.25.
-  // Perpendicular to the axis (2,3,6)/7: (3,-2,0)/sqrt(13).
-  const Vec3 mid{11, -2.5, 6};
-  const Vec3 perp = (1.0 / std::sqrt(13.0)) * Vec3{3, -2, 0};
-  const PeerDistance d = fcl_distance(kOblique, Sphere{mid + 2.5 * perp, 0.25});
-  ASSERT_TRUE(d.ok) << d.error;
-  EXPECT_NEAR(d.distance, 1.75, 1e-13);
+  const Sphere beside{kObliqueMid + 2.5 * kObliquePerp, 0.25};
+  ASSERT_NO_FATAL_FAILURE(expect_distance(fcl_distance(kOblique, beside), 1.75, 1e-13));
 }
 
 TEST(FclPeer, DistanceWhenOverlappingIsMinusOne) {
@@ -83,38 +264,22 @@ TEST(FclPeer, CollideDepthAndNormalAboveTopCap) {
   // Sphere above the top cap, penetrating by 0.25: our normal is +z (from
   // the cylinder towards the sphere), also when the caps are swapped.
   for (const Cylinder& c : {kZ, kZFlipped}) {
-    const PeerContact k = fcl_collide(c, Sphere{{0.3, 0.1, 1.25}, 0.5});
-    ASSERT_TRUE(k.ok) << k.error;
-    ASSERT_TRUE(k.hit);
-    EXPECT_NEAR(k.depth, 0.25, 1e-14);
-    EXPECT_NEAR(length(k.normal - Vec3{0, 0, 1}), 0.0, 1e-14);
+    ASSERT_NO_FATAL_FAILURE(expect_hit(fcl_collide(c, Sphere{{0.3, 0.1, 1.25}, 0.5}), 0.25, {0, 0, 1}, kClosedForm));
   }
   // Below the bottom cap: normal -z.
-  const PeerContact k = fcl_collide(kZ, Sphere{{0, 0, -1.4}, 0.5});
-  ASSERT_TRUE(k.ok) << k.error;
-  ASSERT_TRUE(k.hit);
-  EXPECT_NEAR(k.depth, 0.1, 1e-14);
-  EXPECT_NEAR(length(k.normal - Vec3{0, 0, -1}), 0.0, 1e-14);
+  ASSERT_NO_FATAL_FAILURE(expect_hit(fcl_collide(kZ, Sphere{{0, 0, -1.4}, 0.5}), 0.1, {0, 0, -1}, kClosedForm));
 }
 
 TEST(FclPeer, CollideBesideOblique) {
-  const Vec3 mid{11, -2.5, 6};
-  const Vec3 perp = (1.0 / std::sqrt(13.0)) * Vec3{3, -2, 0};
-  const PeerContact k = fcl_collide(kOblique, Sphere{mid + 0.75 * perp, 0.5});
-  ASSERT_TRUE(k.ok) << k.error;
-  ASSERT_TRUE(k.hit);
-  EXPECT_NEAR(k.depth, 0.25, 1e-13);
-  EXPECT_NEAR(length(k.normal - perp), 0.0, 1e-13);
+  // 0.25 into the oblique cylinder's side: normal the outward perpendicular.
+  const PeerContact k = fcl_collide(kOblique, Sphere{kObliqueMid + 0.75 * kObliquePerp, 0.5});
+  ASSERT_NO_FATAL_FAILURE(expect_hit(k, 0.25, kObliquePerp, Tol{1e-13, 1e-13}));
 }
 
 TEST(FclPeer, CollideCentreInside) {
   // Centre inside, nearer the top cap (gap 0.2) than the side (gap 0.9):
   // FCL pushes out through the top: depth 0.2 + r.
-  const PeerContact k = fcl_collide(kZ, Sphere{{0.1, 0, 0.8}, 0.3});
-  ASSERT_TRUE(k.ok) << k.error;
-  ASSERT_TRUE(k.hit);
-  EXPECT_NEAR(k.depth, 0.5, 1e-14);
-  EXPECT_NEAR(length(k.normal - Vec3{0, 0, 1}), 0.0, 1e-14);
+  ASSERT_NO_FATAL_FAILURE(expect_hit(fcl_collide(kZ, Sphere{{0.1, 0, 0.8}, 0.3}), 0.5, {0, 0, 1}, kClosedForm));
 }
 
 TEST(FclPeer, CollideCentreOnAxisNearerTheSide) {
@@ -122,10 +287,7 @@ TEST(FclPeer, CollideCentreOnAxisNearerTheSide) {
   // +x axis, here any_perpendicular((0,0,1)) = (0,1,0).
   const Cylinder thin{{0, 0, -2}, {0, 0, 2}, 0.5};
   const PeerContact k = fcl_collide(thin, Sphere{{0, 0, 0}, 0.25});
-  ASSERT_TRUE(k.ok) << k.error;
-  ASSERT_TRUE(k.hit);
-  EXPECT_NEAR(k.depth, 0.75, 1e-14);
-  EXPECT_NEAR(length(k.normal - any_perpendicular(Vec3{0, 0, 1})), 0.0, 1e-14);
+  ASSERT_NO_FATAL_FAILURE(expect_hit(k, 0.75, any_perpendicular(Vec3{0, 0, 1}), kClosedForm));
 }
 
 TEST(FclPeer, ContactPointIsMidOverlap) {
@@ -137,9 +299,8 @@ TEST(FclPeer, ContactPointIsMidOverlap) {
 }
 
 TEST(FclPeer, MissHasNoContact) {
-  const PeerContact k = fcl_collide(kZ, Sphere{{0, 0, 3}, 0.5});
-  ASSERT_TRUE(k.ok) << k.error;
-  EXPECT_FALSE(k.hit);
+  // 1.5 above the top cap: no hit, no overlap.
+  ASSERT_NO_FATAL_FAILURE(expect_miss(kZ, Sphere{{0, 0, 3}, 0.5}));
 }
 
 TEST(FclPeer, InvalidInputNeverReachesFcl) {
@@ -148,13 +309,7 @@ TEST(FclPeer, InvalidInputNeverReachesFcl) {
   const Cylinder bad_cyls[] = {{{0, 0, 0}, {0, 0, 0}, 1}, {{0, 0, 0}, {0, 0, 1}, -1}, {{nan, 0, 0}, {0, 0, 1}, 1},
                                {{0, 0, 0}, {0, 0, 1}, inf}};
   for (const Cylinder& c : bad_cyls) {
-    const PeerContact k = fcl_collide(c, Sphere{{0, 0, 0}, 1});
-    EXPECT_FALSE(k.ok);
-    EXPECT_EQ(k.error, "invalid input");
-    std::string err;
-    EXPECT_FALSE(fcl_overlap(c, Sphere{{0, 0, 0}, 1}, &err));
-    EXPECT_EQ(err, "invalid input");
-    EXPECT_FALSE(fcl_distance(c, Sphere{{0, 0, 0}, 1}).ok);
+    expect_refused(c, Sphere{{0, 0, 0}, 1}, "invalid input");
     EXPECT_FALSE(fcl_cast(Segment{{0, 0, -5}, {0, 0, 5}}, c).ok);
   }
   EXPECT_FALSE(fcl_collide(kZ, Sphere{{0, 0, 0}, -1}).ok);
@@ -191,10 +346,7 @@ TEST(FclPeer, ExtremeButValidInputDoesNotCrash) {
   const PeerContact t = fcl_collide(tiny, Sphere{{0, 0, 0}, 0});
   ASSERT_TRUE(t.ok) << t.error;
   EXPECT_TRUE(t.hit);
-  const PeerCast tc = fcl_cast(Segment{{0, 0, -1e-149}, {0, 0, 1e-149}}, tiny);
-  ASSERT_TRUE(tc.ok) << tc.error;
-  EXPECT_TRUE(tc.hit);
-  EXPECT_NEAR(tc.t, 0.45, 1e-4);
+  ASSERT_NO_FATAL_FAILURE(expect_cast_hit(fcl_cast(Segment{{0, 0, -1e-149}, {0, 0, 1e-149}}, tiny), 0.45, 1e-4));
 }
 
 const FclCastMethod kBothMethods[] = {FclCastMethod::kConservativeAdvancement,
@@ -206,53 +358,46 @@ TEST(FclPeer, CastAxisParallel) {
   const Segment s{{0.3, 0.2, 5}, {0.3, 0.2, -5}};
   for (FclCastMethod m : kBothMethods) {
     const PeerCast c = fcl_cast(s, kZ, m);
-    ASSERT_TRUE(c.ok) << c.error;
+    ASSERT_NO_FATAL_FAILURE(expect_cast_hit(c, 0.4, 1e-12));
     EXPECT_TRUE(c.supported);
-    EXPECT_TRUE(c.hit);
-    EXPECT_NEAR(c.t, 0.4, 1e-12);
   }
 }
 
 TEST(FclPeer, CastSideHitAndMiss) {
   // Along x at height 0.5, from x = -4 to x = 4: enters the side at x = -1,
   // t = 3/8. Conservative advancement approaches from below, within 1e-4.
-  const PeerCast hit = fcl_cast(Segment{{-4, 0, 0.5}, {4, 0, 0.5}}, kZ);
-  ASSERT_TRUE(hit.ok) << hit.error;
-  EXPECT_TRUE(hit.hit);
-  EXPECT_NEAR(hit.t, 0.375, 1e-4);
-  EXPECT_LE(hit.t, 0.375 + 1e-15);
+  ASSERT_NO_FATAL_FAILURE(expect_advanced_to(fcl_cast(Segment{{-4, 0, 0.5}, {4, 0, 0.5}}, kZ), 0.375));
   for (FclCastMethod m : kBothMethods) {
     // Passing by at y = 1.5.
-    const PeerCast miss = fcl_cast(Segment{{-4, 1.5, 0.5}, {4, 1.5, 0.5}}, kZ, m);
-    ASSERT_TRUE(miss.ok) << miss.error;
-    EXPECT_FALSE(miss.hit);
+    ASSERT_NO_FATAL_FAILURE(expect_cast(fcl_cast(Segment{{-4, 1.5, 0.5}, {4, 1.5, 0.5}}, kZ, m), false));
     // Stopping short of the cylinder.
-    const PeerCast short_of = fcl_cast(Segment{{-4, 0, 0.5}, {-1.5, 0, 0.5}}, kZ, m);
-    ASSERT_TRUE(short_of.ok) << short_of.error;
-    EXPECT_FALSE(short_of.hit);
+    ASSERT_NO_FATAL_FAILURE(expect_cast(fcl_cast(Segment{{-4, 0, 0.5}, {-1.5, 0, 0.5}}, kZ, m), false));
   }
   // Oblique cylinder, segment through both cap centres from outside: enters
   // the p cap at t = 1/3.
   const Vec3 p = kOblique.p, d = kOblique.q - kOblique.p;
-  const PeerCast through = fcl_cast(Segment{p - 0.5 * d, p + d}, kOblique);
-  ASSERT_TRUE(through.ok) << through.error;
-  EXPECT_TRUE(through.hit);
-  EXPECT_NEAR(through.t, 1.0 / 3, 1e-4);
+  ASSERT_NO_FATAL_FAILURE(expect_cast_hit(fcl_cast(Segment{p - 0.5 * d, p + d}, kOblique), 1.0 / 3, 1e-4));
 }
 
 TEST(FclPeer, CastStartInsideAndPoint) {
+  // Starting inside hits at t = 0; a point segment hits iff it is inside.
   for (FclCastMethod m : kBothMethods) {
     const PeerCast in = fcl_cast(Segment{{0, 0, 0}, {0, 0, 5}}, kZ, m);
-    ASSERT_TRUE(in.ok) << in.error;
-    EXPECT_TRUE(in.hit);
+    ASSERT_NO_FATAL_FAILURE(expect_cast(in, true));
     EXPECT_EQ(in.t, 0.0);
-    const PeerCast point_in = fcl_cast(Segment{{0.5, 0, 0}, {0.5, 0, 0}}, kZ, m);
-    ASSERT_TRUE(point_in.ok) << point_in.error;
-    EXPECT_TRUE(point_in.hit);
-    const PeerCast point_out = fcl_cast(Segment{{2, 0, 0}, {2, 0, 0}}, kZ, m);
-    ASSERT_TRUE(point_out.ok) << point_out.error;
-    EXPECT_FALSE(point_out.hit);
+    ASSERT_NO_FATAL_FAILURE(expect_cast(fcl_cast(Segment{{0.5, 0, 0}, {0.5, 0, 0}}, kZ, m), true));
+    ASSERT_NO_FATAL_FAILURE(expect_cast(fcl_cast(Segment{{2, 0, 0}, {2, 0, 0}}, kZ, m), false));
   }
+}
+
+/// Checks that FCL asked once misses the cast of `s` against `c` (the
+/// defect documented in fcl_adapter.hpp) and that the default method finds
+/// it at `t` (within 1e-4).
+void expect_missed_once_found_by_default(const Segment& s, const Cylinder& c, double t) {
+  const PeerCast once = fcl_cast(s, c, FclCastMethod::kConservativeAdvancementOnce);
+  ASSERT_TRUE(once.ok) << once.error;
+  EXPECT_FALSE(once.hit) << "FCL no longer shows the documented defect";
+  ASSERT_NO_FATAL_FAILURE(expect_cast_hit(fcl_cast(s, c), t, 1e-4));
 }
 
 // The FCL 0.7 defect documented in fcl_adapter.hpp, on a segment whose
@@ -261,13 +406,7 @@ TEST(FclPeer, CastStartInsideAndPoint) {
 // "Once" expectation starts failing, FCL has changed: update the header.
 TEST(FclPeer, CastMissedByFclOnceFoundByDefault) {
   const Segment s{{0.21651, 0.0520333, 1.01067}, {-1.6799, -0.530865, 0.933436}};
-  const PeerCast once = fcl_cast(s, kZ, FclCastMethod::kConservativeAdvancementOnce);
-  ASSERT_TRUE(once.ok) << once.error;
-  EXPECT_FALSE(once.hit) << "FCL no longer shows the documented defect";
-  const PeerCast found = fcl_cast(s, kZ);
-  ASSERT_TRUE(found.ok) << found.error;
-  EXPECT_TRUE(found.hit);
-  EXPECT_NEAR(found.t, 0.138152, 1e-4);
+  ASSERT_NO_FATAL_FAILURE(expect_missed_once_found_by_default(s, kZ, 0.138152));
 }
 
 // The second mechanism (zero direction at a rounding-sized distance), on
@@ -278,13 +417,7 @@ TEST(FclPeer, CastMissedByFclOnceZeroDirection) {
   const Cylinder c{{0x1.e73ed06a6de49p+1, 0x1.4a9e9cf9c784p-2, 0x1.aa9aba663a2b6p+1},
                    {0x1.818dd4502c7e3p+1, -0x1.bcde3a871b68cp-1, 0x1.289fd56fd6dc1p+2},
                    0x1.d505711caa2ecp+0};
-  const PeerCast once = fcl_cast(s, c, FclCastMethod::kConservativeAdvancementOnce);
-  ASSERT_TRUE(once.ok) << once.error;
-  EXPECT_FALSE(once.hit) << "FCL no longer shows the documented defect";
-  const PeerCast found = fcl_cast(s, c);
-  ASSERT_TRUE(found.ok) << found.error;
-  EXPECT_TRUE(found.hit);
-  EXPECT_NEAR(found.t, 0.195369, 1e-4);
+  ASSERT_NO_FATAL_FAILURE(expect_missed_once_found_by_default(s, c, 0.195369));
 }
 
 
@@ -314,50 +447,27 @@ TEST(FclPeerCapsule, CollideAboveCap) {
   for (const Cylinder& c : {kZ, kZFlipped}) {
     for (const Capsule& k : {Capsule{{0.3, 0.1, 1.25}, {0.3, 0.1, 3}, 0.5}, Capsule{{0.3, 0.1, 3}, {0.3, 0.1, 1.25}, 0.5}}) {
       const PeerContact r = fcl_collide(c, k);
-      ASSERT_TRUE(r.ok) << r.error;
-      ASSERT_TRUE(r.hit);
-      EXPECT_NEAR(r.depth, 0.25, 1e-6);
-      EXPECT_NEAR(length(r.normal - Vec3{0, 0, 1}), 0.0, 1e-6);
+      ASSERT_NO_FATAL_FAILURE(expect_hit(r, 0.25, {0, 0, 1}, kMpr));
       EXPECT_NEAR(length(r.normal), 1.0, 1e-12);
     }
   }
   // Lying across the cap: same depth and normal.
-  const PeerContact r = fcl_collide(kZ, Capsule{{-0.5, 0.1, 1.25}, {0.5, 0.1, 1.25}, 0.5});
-  ASSERT_TRUE(r.ok) << r.error;
-  ASSERT_TRUE(r.hit);
-  EXPECT_NEAR(r.depth, 0.25, 1e-6);
-  EXPECT_NEAR(length(r.normal - Vec3{0, 0, 1}), 0.0, 1e-6);
+  const Capsule across{{-0.5, 0.1, 1.25}, {0.5, 0.1, 1.25}, 0.5};
+  ASSERT_NO_FATAL_FAILURE(expect_hit(fcl_collide(kZ, across), 0.25, {0, 0, 1}, kMpr));
   // Below the bottom cap: normal -z.
-  const PeerContact b = fcl_collide(kZ, Capsule{{0, 0, -1.4}, {0, 0, -3}, 0.5});
-  ASSERT_TRUE(b.ok) << b.error;
-  ASSERT_TRUE(b.hit);
-  EXPECT_NEAR(b.depth, 0.1, 1e-6);
-  EXPECT_NEAR(length(b.normal - Vec3{0, 0, -1}), 0.0, 1e-6);
+  ASSERT_NO_FATAL_FAILURE(expect_hit(fcl_collide(kZ, Capsule{{0, 0, -1.4}, {0, 0, -3}, 0.5}), 0.1, {0, 0, -1}, kMpr));
 }
 
 TEST(FclPeerCapsule, CollideBesideSide) {
   // Parallel to the axis, 0.25 into the side.
-  const PeerContact par = fcl_collide(kZ, Capsule{{1.25, 0, -0.5}, {1.25, 0, 0.5}, 0.5});
-  ASSERT_TRUE(par.ok) << par.error;
-  ASSERT_TRUE(par.hit);
-  EXPECT_NEAR(par.depth, 0.25, 1e-6);
-  EXPECT_NEAR(length(par.normal - Vec3{1, 0, 0}), 0.0, 1e-3);
+  const Capsule par{{1.25, 0, -0.5}, {1.25, 0, 0.5}, 0.5};
+  ASSERT_NO_FATAL_FAILURE(expect_hit(fcl_collide(kZ, par), 0.25, {1, 0, 0}, kMprSide));
   // Radial, its end 0.25 into the side.
-  const PeerContact rad = fcl_collide(kZ, Capsule{{1.25, 0, 0}, {3, 0, 0}, 0.5});
-  ASSERT_TRUE(rad.ok) << rad.error;
-  ASSERT_TRUE(rad.hit);
-  EXPECT_NEAR(rad.depth, 0.25, 1e-6);
-  EXPECT_NEAR(length(rad.normal - Vec3{1, 0, 0}), 0.0, 1e-6);
+  ASSERT_NO_FATAL_FAILURE(expect_hit(fcl_collide(kZ, Capsule{{1.25, 0, 0}, {3, 0, 0}, 0.5}), 0.25, {1, 0, 0}, kMpr));
   // The oblique cylinder, a capsule parallel to its axis 0.25 into its side.
-  const Vec3 mid{11, -2.5, 6};
-  const Vec3 perp = (1.0 / std::sqrt(13.0)) * Vec3{3, -2, 0};
-  const Vec3 axis = (1.0 / 7) * Vec3{2, 3, 6};
-  const Vec3 centre = mid + 0.5 * perp;
-  const PeerContact ob = fcl_collide(kOblique, Capsule{centre - axis, centre + axis, 0.25});
-  ASSERT_TRUE(ob.ok) << ob.error;
-  ASSERT_TRUE(ob.hit);
-  EXPECT_NEAR(ob.depth, 0.25, 1e-6);
-  EXPECT_NEAR(length(ob.normal - perp), 0.0, 1e-3);
+  const Vec3 centre = kObliqueMid + 0.5 * kObliquePerp;
+  const PeerContact ob = fcl_collide(kOblique, Capsule{centre - kObliqueAxis, centre + kObliqueAxis, 0.25});
+  ASSERT_NO_FATAL_FAILURE(expect_hit(ob, 0.25, kObliquePerp, kMprSide));
 }
 
 TEST(FclPeerCapsule, CollideDeepIsNotMinimal) {
@@ -382,46 +492,27 @@ TEST(FclPeerCapsule, CollideDeepIsNotMinimal) {
 
 TEST(FclPeerCapsule, SphereCapsule) {
   // p == q: the ball, as an fcl::Capsuled of length 0.
-  const PeerContact hit = fcl_collide(kZ, Capsule{{0.3, 0.1, 1.25}, {0.3, 0.1, 1.25}, 0.5});
-  ASSERT_TRUE(hit.ok) << hit.error;
-  ASSERT_TRUE(hit.hit);
-  EXPECT_NEAR(hit.depth, 0.25, 1e-6);
-  EXPECT_NEAR(length(hit.normal - Vec3{0, 0, 1}), 0.0, 1e-6);
-  const PeerDistance d = fcl_distance(kZ, Capsule{{0, 0, 2}, {0, 0, 2}, 0.5});
-  ASSERT_TRUE(d.ok) << d.error;
-  EXPECT_NEAR(d.distance, 0.5, 1e-6);
+  const Capsule ball{{0.3, 0.1, 1.25}, {0.3, 0.1, 1.25}, 0.5};
+  ASSERT_NO_FATAL_FAILURE(expect_hit(fcl_collide(kZ, ball), 0.25, {0, 0, 1}, kMpr));
+  ASSERT_NO_FATAL_FAILURE(expect_distance(fcl_distance(kZ, Capsule{{0, 0, 2}, {0, 0, 2}, 0.5}), 0.5, 1e-6));
 }
 
 TEST(FclPeerCapsule, Distance) {
   // Separated above the cap by 1.5 and beside the side by 1.75 (GJK,
   // tolerance 1e-6: from above, within about 1e-7 here).
   const PeerDistance above = fcl_distance(kZ, Capsule{{0.25, -0.25, 3}, {0.25, -0.25, 5}, 0.5});
-  ASSERT_TRUE(above.ok) << above.error;
-  EXPECT_NEAR(above.distance, 1.5, 1e-6);
+  ASSERT_NO_FATAL_FAILURE(expect_gap(above, 2, 1.0, 2.5, 1e-6));
   EXPECT_GE(above.distance, 1.5);
-  EXPECT_NEAR(above.p_a.z, 1.0, 1e-6);
-  EXPECT_NEAR(above.p_b.z, 2.5, 1e-6);
   EXPECT_NEAR(length(above.p_a - Vec3{0.25, -0.25, 1}), 0.0, 1e-4);
-  const PeerDistance side = fcl_distance(kZ, Capsule{{3, 0, -0.5}, {3, 0, 0.5}, 0.25});
-  ASSERT_TRUE(side.ok) << side.error;
-  EXPECT_NEAR(side.distance, 1.75, 1e-6);
-  EXPECT_NEAR(side.p_a.x, 1.0, 1e-6);
-  EXPECT_NEAR(side.p_b.x, 2.75, 1e-6);
+  ASSERT_NO_FATAL_FAILURE(expect_gap(fcl_distance(kZ, Capsule{{3, 0, -0.5}, {3, 0, 0.5}, 0.25}), 0, 1.0, 2.75, 1e-6));
   // Overlapping: exactly -1, nearest points zero (as for the sphere).
-  const PeerDistance over = fcl_distance(kZ, Capsule{{0, 0, 1.2}, {0, 0, 3}, 0.5});
-  ASSERT_TRUE(over.ok) << over.error;
-  EXPECT_EQ(over.distance, -1.0);
-  EXPECT_EQ(over.p_a, Vec3{});
-  EXPECT_EQ(over.p_b, Vec3{});
+  ASSERT_NO_FATAL_FAILURE(expect_overlapping(fcl_distance(kZ, Capsule{{0, 0, 1.2}, {0, 0, 3}, 0.5})));
 }
 
 TEST(FclPeerCapsule, TouchingAndTolerance) {
   // Exact touching is "no hit" for MPR (its tolerance is 1e-6, absolute);
   // distance then answers a positive rounding-sized number.
-  const PeerContact cap = fcl_collide(kZ, Capsule{{0.3, 0.1, 1.5}, {0.3, 0.1, 3}, 0.5});
-  ASSERT_TRUE(cap.ok) << cap.error;
-  EXPECT_FALSE(cap.hit);
-  EXPECT_FALSE(fcl_overlap(kZ, Capsule{{0.3, 0.1, 1.5}, {0.3, 0.1, 3}, 0.5}));
+  ASSERT_NO_FATAL_FAILURE(expect_miss(kZ, Capsule{{0.3, 0.1, 1.5}, {0.3, 0.1, 3}, 0.5}));
   // Overlaps of 1e-9 are missed too; 1e-5 is found.
   EXPECT_FALSE(fcl_overlap(kZ, Capsule{{0.3, 0.1, 1.5 - 1e-9}, {0.3, 0.1, 3}, 0.5}));
   EXPECT_TRUE(fcl_overlap(kZ, Capsule{{0.3, 0.1, 1.5 - 1e-5}, {0.3, 0.1, 3}, 0.5}));
@@ -440,9 +531,7 @@ TEST(FclPeerCapsule, OverlapHitMiss) {
   EXPECT_TRUE(fcl_overlap(kZ, Capsule{{-5, 0, 0.5}, {5, 0, 0.5}, 0}));      // a segment through
   EXPECT_FALSE(fcl_overlap(kZ, Capsule{{1.5, 0, 1.5}, {3, 0, 3}, 0.7}));    // near the rim: 0.707 > 0.7
   EXPECT_TRUE(fcl_overlap(kZ, Capsule{{1.5, 0, 1.5}, {3, 0, 3}, 0.71}));
-  const PeerContact miss = fcl_collide(kZ, Capsule{{0, 0, 3}, {0, 0, 4}, 0.5});
-  ASSERT_TRUE(miss.ok) << miss.error;
-  EXPECT_FALSE(miss.hit);
+  ASSERT_NO_FATAL_FAILURE(expect_miss(kZ, Capsule{{0, 0, 3}, {0, 0, 4}, 0.5}));
 }
 
 // A scene on which libccd's MPR portal refinement does not terminate (an
@@ -456,14 +545,7 @@ TEST(FclPeerCapsule, MprBudgetStopsNonTermination) {
   const Capsule k{{0x1.0c6972a90e86p+17, -0x1.6c0dcb27722a6p+17, 0x1.bad5fafdfa9dbp+12},
                   {-0x1.52aedc96cb7b8p+18, 0x1.b68c8cc0a347ep+18, -0x1.204f67849297ep+14},
                   0x1.52998f31db8e9p-1};
-  const auto start = std::chrono::steady_clock::now();
-  const PeerContact r = fcl_collide(c, k);
-  EXPECT_FALSE(r.ok) << "FCL no longer shows the documented non-termination";
-  EXPECT_NE(r.error.find("did not terminate"), std::string::npos) << r.error;
-  std::string err;
-  EXPECT_FALSE(fcl_overlap(c, k, &err));
-  EXPECT_NE(err.find("did not terminate"), std::string::npos) << err;
-  EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 5.0);
+  expect_mpr_budget_stops(c, k);
   // GJK's distance has iteration caps: it answers (overlapping).
   const PeerDistance d = fcl_distance(c, k);
   ASSERT_TRUE(d.ok) << d.error;
@@ -480,13 +562,9 @@ TEST(FclPeerCapsule, MprBudgetStopsNonTermination) {
 TEST(FclPeerCapsule, DistanceZeroDirectionDoesNotAbort) {
   for (const Capsule& k : {Capsule{{1.5, 0, 0}, {1.5, 0, 2}, 0.5}, Capsule{{1.5, 0, 0}, {1.5, 0, 0}, 0.5},
                            Capsule{{1, 0, 0}, {1, 0, 0}, 0}}) {
-    const PeerDistance d = fcl_distance(kZ, k);
-    EXPECT_FALSE(d.ok) << "FCL no longer shows the documented defect";
-    EXPECT_NE(d.error.find("non-finite point"), std::string::npos) << d.error;
+    expect_zero_direction_refused(k);
     // collide (MPR) copes: exact touching is "no hit".
-    const PeerContact c = fcl_collide(kZ, k);
-    ASSERT_TRUE(c.ok) << c.error;
-    EXPECT_FALSE(c.hit);
+    ASSERT_NO_FATAL_FAILURE(expect_no_hit(fcl_collide(kZ, k)));
   }
   // Far from the origin the Minkowski points round to zero the same way
   // (offset 1e17, shapes of size 1); in a subnormal scene the directions
@@ -504,34 +582,9 @@ TEST(FclPeerCapsule, DistanceZeroDirectionDoesNotAbort) {
 // Within the budget the adapter's calls are fcl::collide's and
 // fcl::distance's, bit for bit.
 TEST(FclPeerCapsule, GuardedCallsAreFcls) {
-  std::uint64_t state = 12345;
-  auto next = [&state] {
-    state = state * 6364136223846793005ULL + 1442695040888963407ULL;
-    return static_cast<double>(state >> 11) * 0x1.0p-53 * 2 - 1;  // [-1, 1)
-  };
-  auto vec = [&] { return Vec3{next(), next(), next()}; };
-  int hits = 0;
-  for (int i = 0; i < 500; ++i) {
-    const Cylinder c{4 * vec(), 4 * vec(), 1.0 + next()};
-    const Capsule k{2 * vec(), 2 * vec(), 0.5 + 0.5 * next()};
-    const PeerContact adapter = fcl_collide(c, k);
-    const PeerContact raw = fcl_collide_prepared(FclCylinderCapsule(c, k));
-    ASSERT_TRUE(adapter.ok) << adapter.error;
-    ASSERT_EQ(adapter.hit, raw.hit) << i;
-    EXPECT_EQ(fcl_overlap(c, k), fcl_overlap_prepared(FclCylinderCapsule(c, k))) << i;
-    const PeerDistance d = fcl_distance(c, k);
-    const PeerDistance d_raw = fcl_distance_prepared(FclCylinderCapsule(c, k));
-    ASSERT_TRUE(d.ok) << d.error;
-    EXPECT_EQ(std::memcmp(&d.distance, &d_raw.distance, sizeof(double)), 0) << i;
-    EXPECT_EQ(d.p_a, d_raw.p_a) << i;
-    EXPECT_EQ(d.p_b, d_raw.p_b) << i;
-    if (!adapter.hit) continue;
-    ++hits;
-    EXPECT_EQ(std::memcmp(&adapter.depth, &raw.depth, sizeof(double)), 0) << i;
-    EXPECT_EQ(adapter.normal, raw.normal) << i;
-    EXPECT_EQ(adapter.point, raw.point) << i;
-  }
-  EXPECT_GT(hits, 100);
+  expect_calls_are_fcls<FclCylinderCapsule>(12345, [](TestRng& rng) {
+    return Capsule{2 * rng.vec(), 2 * rng.vec(), 0.5 + 0.5 * rng.next()};
+  });
 }
 
 TEST(FclPeerCapsule, InvalidInputNeverReachesFcl) {
@@ -540,18 +593,8 @@ TEST(FclPeerCapsule, InvalidInputNeverReachesFcl) {
   const Capsule good{{0, 0, 2}, {0, 0, 3}, 0.5};
   const Capsule bad[] = {{{0, 0, 2}, {0, 0, 3}, -0.5}, {{nan, 0, 2}, {0, 0, 3}, 0.5}, {{0, 0, 2}, {0, inf, 3}, 0.5},
                          {{0, 0, 2}, {0, 0, 3}, inf}};
-  for (const Capsule& k : bad) {
-    const PeerContact r = fcl_collide(kZ, k);
-    EXPECT_FALSE(r.ok);
-    EXPECT_EQ(r.error, "invalid input");
-    std::string err;
-    EXPECT_FALSE(fcl_overlap(kZ, k, &err));
-    EXPECT_EQ(err, "invalid input");
-    EXPECT_FALSE(fcl_distance(kZ, k).ok);
-  }
-  const Cylinder bad_cyl{{0, 0, 0}, {0, 0, 0}, 1};
-  EXPECT_EQ(fcl_collide(bad_cyl, good).error, "invalid input");
-  EXPECT_FALSE(fcl_distance(bad_cyl, good).ok);
+  for (const Capsule& k : bad) expect_refused(kZ, k, "invalid input");
+  expect_refused(Cylinder{{0, 0, 0}, {0, 0, 0}, 1}, good, "invalid input");
 }
 
 // --- cylinder/box and cylinder/triangle -----------------------------------------
@@ -583,17 +626,6 @@ std::array<Vec3, 3> rotation_axes(double w, double x, double y, double z) {
            {2 * (x * y - w * z), 1 - 2 * (x * x + z * z), 2 * (y * z + w * x)},
            {2 * (x * z + w * y), 2 * (y * z - w * x), 1 - 2 * (x * x + y * y)}}};
 }
-
-/// Deterministic numbers in [-1, 1) for the randomised tests.
-struct TestRng {
-  std::uint64_t state;
-  double next() {
-    state = state * 6364136223846793005ULL + 1442695040888963407ULL;
-    return static_cast<double>(state >> 11) * 0x1.0p-53 * 2 - 1;
-  }
-  Vec3 vec() { return {next(), next(), next()}; }
-  int below(int n) { return std::min(n - 1, static_cast<int>((next() + 1) * 0.5 * n)); }
-};
 
 TEST(FclConvert, BoxPose) {
   // Full side lengths 2 e; columns of the rotation are the axes.
@@ -659,66 +691,35 @@ TEST(FclPeerBox, CollideNormalFromCylinderTowardsBox) {
     for (const Obb& b : {box_at({0.2, 0.1, 1.25}, {0.5, 0.5, 0.5}),
                          rotated_about_z(box_at({0.2, 0.1, 1.25}, {0.5, 0.3, 0.5}), 0.5235987755982988)}) {
       const PeerContact r = fcl_collide(c, b);
-      ASSERT_TRUE(r.ok) << r.error;
-      ASSERT_TRUE(r.hit);
-      EXPECT_NEAR(r.depth, 0.25, 1e-6);
-      EXPECT_NEAR(length(r.normal - Vec3{0, 0, 1}), 0.0, 1e-6);
+      ASSERT_NO_FATAL_FAILURE(expect_hit(r, 0.25, {0, 0, 1}, kMpr));
       EXPECT_NEAR(length(r.normal), 1.0, 1e-12);
       EXPECT_TRUE(fcl_overlap(c, b));
     }
   }
   // Under the bottom cap: normal -z.
-  const PeerContact below = fcl_collide(kZ, box_at({0.2, 0.1, -1.4}, {0.5, 0.5, 0.5}));
-  ASSERT_TRUE(below.ok) << below.error;
-  ASSERT_TRUE(below.hit);
-  EXPECT_NEAR(below.depth, 0.1, 1e-6);
-  EXPECT_NEAR(length(below.normal - Vec3{0, 0, -1}), 0.0, 1e-6);
+  const Obb below = box_at({0.2, 0.1, -1.4}, {0.5, 0.5, 0.5});
+  ASSERT_NO_FATAL_FAILURE(expect_hit(fcl_collide(kZ, below), 0.1, {0, 0, -1}, kMpr));
   // Beside the side, 0.25 in: the outward radial.
-  const PeerContact side = fcl_collide(kZ, box_at({1.25, 0, 0}, {0.5, 0.5, 0.5}));
-  ASSERT_TRUE(side.ok) << side.error;
-  ASSERT_TRUE(side.hit);
-  EXPECT_NEAR(side.depth, 0.25, 1e-6);
-  EXPECT_NEAR(length(side.normal - Vec3{1, 0, 0}), 0.0, 1e-3);
+  const Obb side = box_at({1.25, 0, 0}, {0.5, 0.5, 0.5});
+  ASSERT_NO_FATAL_FAILURE(expect_hit(fcl_collide(kZ, side), 0.25, {1, 0, 0}, kMprSide));
   // The oblique cylinder, a box in its frame 0.25 into its side.
-  const Vec3 mid{11, -2.5, 6};
-  const Vec3 perp = (1.0 / std::sqrt(13.0)) * Vec3{3, -2, 0};
-  const Vec3 axis = (1.0 / 7) * Vec3{2, 3, 6};
-  Obb ob = box_at(mid + 0.75 * perp, {0.5, 0.5, 0.5});
-  ob.axes = {perp, cross(axis, perp), axis};
+  Obb ob = box_at(kObliqueMid + 0.75 * kObliquePerp, {0.5, 0.5, 0.5});
+  ob.axes = {kObliquePerp, cross(kObliqueAxis, kObliquePerp), kObliqueAxis};
   ASSERT_TRUE(obb_axes_orthonormal(ob));
-  const PeerContact r = fcl_collide(kOblique, ob);
-  ASSERT_TRUE(r.ok) << r.error;
-  ASSERT_TRUE(r.hit);
-  EXPECT_NEAR(r.depth, 0.25, 1e-6);
-  EXPECT_NEAR(length(r.normal - perp), 0.0, 1e-3);
+  ASSERT_NO_FATAL_FAILURE(expect_hit(fcl_collide(kOblique, ob), 0.25, kObliquePerp, kMprSide));
 }
 
 TEST(FclPeerBox, DistanceAndMiss) {
   // 0.25 above the cap and 0.25 beside the side (GJK, from above, within
   // 1e-6).
-  const PeerDistance above = fcl_distance(kZ, box_at({0.2, 0.1, 1.75}, {0.5, 0.5, 0.5}));
-  ASSERT_TRUE(above.ok) << above.error;
-  EXPECT_NEAR(above.distance, 0.25, 1e-6);
-  EXPECT_NEAR(above.p_a.z, 1.0, 1e-6);
-  EXPECT_NEAR(above.p_b.z, 1.25, 1e-6);
-  const PeerDistance side = fcl_distance(kZ, rotated_about_z(box_at({1.75, 0, 0}, {0.5, 0.5, 0.5}), 1.5707963267948966));
-  ASSERT_TRUE(side.ok) << side.error;
-  EXPECT_NEAR(side.distance, 0.25, 1e-6);
-  EXPECT_NEAR(side.p_a.x, 1.0, 1e-6);
-  EXPECT_NEAR(side.p_b.x, 1.25, 1e-6);
+  const Obb above = box_at({0.2, 0.1, 1.75}, {0.5, 0.5, 0.5});
+  ASSERT_NO_FATAL_FAILURE(expect_gap(fcl_distance(kZ, above), 2, 1.0, 1.25, 1e-6));
+  const Obb side = rotated_about_z(box_at({1.75, 0, 0}, {0.5, 0.5, 0.5}), 1.5707963267948966);
+  ASSERT_NO_FATAL_FAILURE(expect_gap(fcl_distance(kZ, side), 0, 1.0, 1.25, 1e-6));
   // Separated: no hit, no overlap.
-  const PeerContact miss = fcl_collide(kZ, box_at({0.2, 0.1, 1.75}, {0.5, 0.5, 0.5}));
-  ASSERT_TRUE(miss.ok) << miss.error;
-  EXPECT_FALSE(miss.hit);
-  std::string err = "stale";
-  EXPECT_FALSE(fcl_overlap(kZ, box_at({0.2, 0.1, 1.75}, {0.5, 0.5, 0.5}), &err));
-  EXPECT_EQ(err, "");
+  ASSERT_NO_FATAL_FAILURE(expect_miss(kZ, above));
   // Overlapping: exactly -1, nearest points zero.
-  const PeerDistance over = fcl_distance(kZ, box_at({0.2, 0.1, 1.25}, {0.5, 0.5, 0.5}));
-  ASSERT_TRUE(over.ok) << over.error;
-  EXPECT_EQ(over.distance, -1.0);
-  EXPECT_EQ(over.p_a, Vec3{});
-  EXPECT_EQ(over.p_b, Vec3{});
+  ASSERT_NO_FATAL_FAILURE(expect_overlapping(fcl_distance(kZ, box_at({0.2, 0.1, 1.25}, {0.5, 0.5, 0.5}))));
 }
 
 TEST(FclPeerBox, LeftHandedFrameSameAnswer) {
@@ -747,46 +748,25 @@ TEST(FclPeerBox, LeftHandedFrameSameAnswer) {
   // And a hand case: a left-handed box over the top cap, 0.15 in.
   Obb lh = box_at({0.2, 0.1, 1.25}, {0.5, 0.3, 0.4});
   lh.axes[2] = {0, 0, -1};
-  const PeerContact k = fcl_collide(kZ, lh);
-  ASSERT_TRUE(k.ok) << k.error;
-  ASSERT_TRUE(k.hit);
-  EXPECT_NEAR(k.depth, 0.15, 1e-6);
-  EXPECT_NEAR(length(k.normal - Vec3{0, 0, 1}), 0.0, 1e-6);
+  ASSERT_NO_FATAL_FAILURE(expect_hit(fcl_collide(kZ, lh), 0.15, {0, 0, 1}, kMpr));
 }
 
 TEST(FclPeerBox, ZeroExtentsWork) {
   // FCL's box support takes corners +-e_i without dividing: flat boxes,
   // segments and points are answered like their solid neighbours.
-  const PeerContact flat = fcl_collide(kZ, box_at({0.2, 0.1, 0.75}, {0.5, 0.5, 0}));
-  ASSERT_TRUE(flat.ok) << flat.error;
-  ASSERT_TRUE(flat.hit);
-  EXPECT_NEAR(flat.depth, 0.25, 1e-6);
-  EXPECT_NEAR(length(flat.normal - Vec3{0, 0, 1}), 0.0, 1e-6);
-  const PeerDistance flat_above = fcl_distance(kZ, box_at({0.2, 0.1, 1.25}, {0.5, 0.5, 0}));
-  ASSERT_TRUE(flat_above.ok) << flat_above.error;
-  EXPECT_NEAR(flat_above.distance, 0.25, 1e-6);
-  const PeerContact segment = fcl_collide(kZ, box_at({0, 0, 0.5}, {2, 0, 0}));
-  ASSERT_TRUE(segment.ok) << segment.error;
-  ASSERT_TRUE(segment.hit);
-  EXPECT_NEAR(segment.depth, 0.5, 1e-6);
-  const PeerContact point_in = fcl_collide(kZ, box_at({0.2, 0.1, 0.5}, {0, 0, 0}));
-  ASSERT_TRUE(point_in.ok) << point_in.error;
-  ASSERT_TRUE(point_in.hit);
-  EXPECT_NEAR(point_in.depth, 0.5, 1e-6);
-  EXPECT_NEAR(length(point_in.normal - Vec3{0, 0, 1}), 0.0, 1e-6);
-  const PeerDistance point_out = fcl_distance(kZ, box_at({0.2, 0.1, 1.5}, {0, 0, 0}));
-  ASSERT_TRUE(point_out.ok) << point_out.error;
-  EXPECT_NEAR(point_out.distance, 0.5, 1e-6);
-  EXPECT_FALSE(fcl_overlap(kZ, box_at({0.2, 0.1, 1.5}, {0, 0, 0})));
+  ASSERT_NO_FATAL_FAILURE(expect_hit(fcl_collide(kZ, box_at({0.2, 0.1, 0.75}, {0.5, 0.5, 0})), 0.25, {0, 0, 1}, kMpr));
+  ASSERT_NO_FATAL_FAILURE(expect_distance(fcl_distance(kZ, box_at({0.2, 0.1, 1.25}, {0.5, 0.5, 0})), 0.25, 1e-6));
+  ASSERT_NO_FATAL_FAILURE(expect_hit_depth(fcl_collide(kZ, box_at({0, 0, 0.5}, {2, 0, 0})), 0.5, 1e-6));
+  ASSERT_NO_FATAL_FAILURE(expect_hit(fcl_collide(kZ, box_at({0.2, 0.1, 0.5}, {0, 0, 0})), 0.5, {0, 0, 1}, kMpr));
+  const Obb point_out = box_at({0.2, 0.1, 1.5}, {0, 0, 0});
+  ASSERT_NO_FATAL_FAILURE(expect_distance(fcl_distance(kZ, point_out), 0.5, 1e-6));
+  EXPECT_FALSE(fcl_overlap(kZ, point_out));
 }
 
 TEST(FclPeerBox, TouchingAndTolerance) {
   // Face on the cap: MPR sees the origin on its portal: a hit of
   // rounding-sized depth whose normal means nothing (here sideways).
-  const PeerContact cap = fcl_collide(kZ, box_at({0.2, 0.1, 1.5}, {0.5, 0.5, 0.5}));
-  ASSERT_TRUE(cap.ok) << cap.error;
-  EXPECT_TRUE(cap.hit) << "FCL's touching verdict changed: update fcl_adapter.hpp";
-  EXPECT_LT(cap.depth, 1e-15);
+  ASSERT_NO_FATAL_FAILURE(expect_touching_hit(box_at({0.2, 0.1, 1.5}, {0.5, 0.5, 0.5})));
   // Overlaps of 1e-12 over the cap are seen; 1e-12 gaps are not.
   EXPECT_TRUE(fcl_overlap(kZ, box_at({0.2, 0.1, 1.5 - 1e-12}, {0.5, 0.5, 0.5})));
   EXPECT_FALSE(fcl_overlap(kZ, box_at({0.2, 0.1, 1.5 + 1e-12}, {0.5, 0.5, 0.5})));
@@ -810,33 +790,13 @@ TEST(FclPeerBox, RefusedInput) {
   skew.axes[1] = {0.1, 1, 0};
   Obb scaled = box_at({0, 0, 1}, {0.5, 0.5, 0.5});
   scaled.axes[0] = {2, 0, 0};
-  for (const Obb& b : {skew, scaled}) {
-    const PeerContact r = fcl_collide(kZ, b);
-    EXPECT_FALSE(r.ok);
-    EXPECT_EQ(r.error, "box axes not orthonormal");
-    std::string err;
-    EXPECT_FALSE(fcl_overlap(kZ, b, &err));
-    EXPECT_EQ(err, "box axes not orthonormal");
-    const PeerDistance d = fcl_distance(kZ, b);
-    EXPECT_FALSE(d.ok);
-    EXPECT_EQ(d.error, "box axes not orthonormal");
-  }
+  for (const Obb& b : {skew, scaled}) expect_refused(kZ, b, "box axes not orthonormal");
   Obb nan_axis = box_at({0, 0, 1}, {0.5, 0.5, 0.5});
   nan_axis.axes[2] = {0, nan, 1};
   const Obb bad[] = {box_at({0, 0, 1}, {-0.5, 0.5, 0.5}), box_at({nan, 0, 1}, {0.5, 0.5, 0.5}),
                      box_at({0, 0, 1}, {0.5, inf, 0.5}), nan_axis};
-  for (const Obb& b : bad) {
-    const PeerContact r = fcl_collide(kZ, b);
-    EXPECT_FALSE(r.ok);
-    EXPECT_EQ(r.error, "invalid input");
-    std::string err;
-    EXPECT_FALSE(fcl_overlap(kZ, b, &err));
-    EXPECT_EQ(err, "invalid input");
-    EXPECT_EQ(fcl_distance(kZ, b).error, "invalid input");
-  }
-  const Cylinder bad_cyl{{0, 0, 0}, {0, 0, 0}, 1};
-  EXPECT_EQ(fcl_collide(bad_cyl, box_at({0, 0, 0}, {1, 1, 1})).error, "invalid input");
-  EXPECT_EQ(fcl_distance(bad_cyl, box_at({0, 0, 0}, {1, 1, 1})).error, "invalid input");
+  for (const Obb& b : bad) expect_refused(kZ, b, "invalid input");
+  expect_refused(Cylinder{{0, 0, 0}, {0, 0, 0}, 1}, box_at({0, 0, 0}, {1, 1, 1}), "invalid input");
   // Sizes beyond 2^250: GJK's products overflow: distance refuses.
   const PeerDistance huge = fcl_distance(Cylinder{{0, 0, -1e200}, {0, 0, 1e200}, 1e200}, box_at({0, 0, 0}, {1, 1, 1}));
   EXPECT_FALSE(huge.ok);
@@ -854,14 +814,7 @@ TEST(FclPeerBox, MprBudgetStopsNonTermination) {
   Obb b = box_at({-0x1.ac2c71d5ff996p+47, 0x1.552a31384a0a9p+47, -0x1.9ae18dc80dfaep+48},
                  {0x1.9b00b36c61ep-10, 0x1.850b0cd4b0a28p-1, 0x1.d413997620aa7p-1});
   b.axes = {Vec3{0, 0, 1}, Vec3{-1, 0, 0}, Vec3{0, 1, 0}};
-  const auto start = std::chrono::steady_clock::now();
-  const PeerContact r = fcl_collide(c, b);
-  EXPECT_FALSE(r.ok) << "FCL no longer shows the documented non-termination";
-  EXPECT_NE(r.error.find("did not terminate"), std::string::npos) << r.error;
-  std::string err;
-  EXPECT_FALSE(fcl_overlap(c, b, &err));
-  EXPECT_NE(err.find("did not terminate"), std::string::npos) << err;
-  EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 5.0);
+  expect_mpr_budget_stops(c, b);
   const PeerDistance d = fcl_distance(c, b);
   ASSERT_TRUE(d.ok) << d.error;
 }
@@ -869,33 +822,12 @@ TEST(FclPeerBox, MprBudgetStopsNonTermination) {
 // Within the budget the adapter's calls are fcl::collide's and
 // fcl::distance's, bit for bit.
 TEST(FclPeerBox, GuardedCallsAreFcls) {
-  TestRng rng{4242};
-  int hits = 0;
-  for (int i = 0; i < 500; ++i) {
-    const Cylinder c{4 * rng.vec(), 4 * rng.vec(), 1.0 + rng.next()};
+  expect_calls_are_fcls<FclCylinderBox>(4242, [](TestRng& rng) {
     Obb b = box_at(2 * rng.vec(), {0.75 + 0.5 * rng.next(), 0.75 + 0.5 * rng.next(), 0.75 + 0.5 * rng.next()});
     b.axes = rotation_axes(rng.next(), rng.next(), rng.next(), rng.next());
     if (rng.below(4) == 0) b.axes[1] = -b.axes[1];
-    ASSERT_TRUE(obb_axes_orthonormal(b)) << i;
-    const PeerContact adapter = fcl_collide(c, b);
-    const PeerContact raw = fcl_collide_prepared(FclCylinderBox(c, b));
-    ASSERT_TRUE(adapter.ok) << adapter.error;
-    ASSERT_EQ(adapter.hit, raw.hit) << i;
-    EXPECT_EQ(fcl_overlap(c, b), fcl_overlap_prepared(FclCylinderBox(c, b))) << i;
-    const PeerDistance d = fcl_distance(c, b);
-    const PeerDistance d_raw = fcl_distance_prepared(FclCylinderBox(c, b));
-    ASSERT_TRUE(d.ok) << d.error;
-    EXPECT_EQ(std::memcmp(&d.distance, &d_raw.distance, sizeof(double)), 0) << i;
-    EXPECT_EQ(d.p_a, d_raw.p_a) << i;
-    EXPECT_EQ(d.p_b, d_raw.p_b) << i;
-    if (!adapter.hit) continue;
-    ++hits;
-    EXPECT_TRUE(raw.ok) << raw.error;
-    EXPECT_EQ(std::memcmp(&adapter.depth, &raw.depth, sizeof(double)), 0) << i;
-    EXPECT_EQ(adapter.normal, raw.normal) << i;
-    EXPECT_EQ(adapter.point, raw.point) << i;
-  }
-  EXPECT_GT(hits, 100);
+    return b;
+  });
 }
 
 // --- cylinder/triangle: FCL's per-triangle narrow phase --------------------------
@@ -908,32 +840,20 @@ TEST(FclPeerTriangle, CollideNormalFromCylinderTowardsTriangle) {
   for (const Cylinder& cyl : {kZ, kZFlipped}) {
     for (const Triangle& t : {Triangle{a, b, c}, Triangle{c, a, b}, Triangle{b, a, c}}) {
       const PeerContact r = fcl_collide(cyl, t);
-      ASSERT_TRUE(r.ok) << r.error;
-      ASSERT_TRUE(r.hit);
-      EXPECT_NEAR(r.depth, 0.25, 1e-6);
-      EXPECT_NEAR(length(r.normal - Vec3{0, 0, 1}), 0.0, 1e-6);
+      ASSERT_NO_FATAL_FAILURE(expect_hit(r, 0.25, {0, 0, 1}, kMpr));
       EXPECT_NEAR(length(r.normal), 1.0, 1e-12);
       EXPECT_TRUE(fcl_overlap(cyl, t));
     }
   }
   // Lying flat in the cylinder 0.25 under the top cap: out through the cap.
-  const PeerContact flat = fcl_collide(kZ, Triangle{{-0.5, -0.5, 0.75}, {0.5, -0.5, 0.75}, {0, 0.5, 0.75}});
-  ASSERT_TRUE(flat.ok) << flat.error;
-  ASSERT_TRUE(flat.hit);
-  EXPECT_NEAR(flat.depth, 0.25, 1e-6);
-  EXPECT_NEAR(length(flat.normal - Vec3{0, 0, 1}), 0.0, 1e-6);
+  const Triangle flat{{-0.5, -0.5, 0.75}, {0.5, -0.5, 0.75}, {0, 0.5, 0.75}};
+  ASSERT_NO_FATAL_FAILURE(expect_hit(fcl_collide(kZ, flat), 0.25, {0, 0, 1}, kMpr));
   // Under the bottom cap: -z.
-  const PeerContact below = fcl_collide(kZ, Triangle{{0.2, 0, -0.9}, {0.2, -0.5, -2}, {0.2, 0.5, -2}});
-  ASSERT_TRUE(below.ok) << below.error;
-  ASSERT_TRUE(below.hit);
-  EXPECT_NEAR(below.depth, 0.1, 1e-6);
-  EXPECT_NEAR(length(below.normal - Vec3{0, 0, -1}), 0.0, 1e-6);
+  const Triangle below{{0.2, 0, -0.9}, {0.2, -0.5, -2}, {0.2, 0.5, -2}};
+  ASSERT_NO_FATAL_FAILURE(expect_hit(fcl_collide(kZ, below), 0.1, {0, 0, -1}, kMpr));
   // A vertex 0.25 into the side: the outward radial.
-  const PeerContact side = fcl_collide(kZ, Triangle{{0.75, 0, 0}, {3, -0.5, 0}, {3, 0.5, 0}});
-  ASSERT_TRUE(side.ok) << side.error;
-  ASSERT_TRUE(side.hit);
-  EXPECT_NEAR(side.depth, 0.25, 1e-6);
-  EXPECT_NEAR(length(side.normal - Vec3{1, 0, 0}), 0.0, 1e-3);
+  const Triangle side{{0.75, 0, 0}, {3, -0.5, 0}, {3, 0.5, 0}};
+  ASSERT_NO_FATAL_FAILURE(expect_hit(fcl_collide(kZ, side), 0.25, {1, 0, 0}, kMprSide));
   // FCL as shipped (shapeTriangleIntersect) gives the same direction: no flip.
   const PeerContact raw = fcl_collide_prepared(FclCylinderTriangle(kZ, Triangle{a, b, c}));
   ASSERT_TRUE(raw.ok) << raw.error;
@@ -972,24 +892,17 @@ TEST(FclPeerMesh, NormalFromCylinderTowardsMeshAndDeepest) {
 }
 
 TEST(FclPeerTriangle, DistanceAndMiss) {
+  // 0.25 above the cap and 0.25 beside the side: no hit there, no overlap.
   const PeerDistance above = fcl_distance(kZ, Triangle{{0.2, 0, 1.25}, {0.2, -0.5, 2}, {0.2, 0.5, 2}});
-  ASSERT_TRUE(above.ok) << above.error;
-  EXPECT_NEAR(above.distance, 0.25, 1e-6);
+  ASSERT_NO_FATAL_FAILURE(expect_distance(above, 0.25, 1e-6));
   EXPECT_NEAR(length(above.p_a - Vec3{0.2, 0, 1}), 0.0, 1e-6);
   EXPECT_NEAR(length(above.p_b - Vec3{0.2, 0, 1.25}), 0.0, 1e-6);
-  const PeerDistance side = fcl_distance(kZ, Triangle{{1.25, 0, 0}, {3, -0.5, 0}, {3, 0.5, 0}});
-  ASSERT_TRUE(side.ok) << side.error;
-  EXPECT_NEAR(side.distance, 0.25, 1e-6);
-  const PeerContact miss = fcl_collide(kZ, Triangle{{1.25, 0, 0}, {3, -0.5, 0}, {3, 0.5, 0}});
-  ASSERT_TRUE(miss.ok) << miss.error;
-  EXPECT_FALSE(miss.hit);
-  EXPECT_FALSE(fcl_overlap(kZ, Triangle{{1.25, 0, 0}, {3, -0.5, 0}, {3, 0.5, 0}}));
+  const Triangle side{{1.25, 0, 0}, {3, -0.5, 0}, {3, 0.5, 0}};
+  ASSERT_NO_FATAL_FAILURE(expect_distance(fcl_distance(kZ, side), 0.25, 1e-6));
+  ASSERT_NO_FATAL_FAILURE(expect_miss(kZ, side));
   // Overlapping: exactly -1, nearest points zero.
-  const PeerDistance over = fcl_distance(kZ, Triangle{{0.2, 0, 0.75}, {0.2, -0.5, 2}, {0.2, 0.5, 2}});
-  ASSERT_TRUE(over.ok) << over.error;
-  EXPECT_EQ(over.distance, -1.0);
-  EXPECT_EQ(over.p_a, Vec3{});
-  EXPECT_EQ(over.p_b, Vec3{});
+  const Triangle over{{0.2, 0, 0.75}, {0.2, -0.5, 2}, {0.2, 0.5, 2}};
+  ASSERT_NO_FATAL_FAILURE(expect_overlapping(fcl_distance(kZ, over)));
   // A large triangle cutting the cylinder: a hit (MPR's depth along its
   // ray, 6 here, not the minimal 1).
   const PeerContact cut = fcl_collide(kZ, Triangle{{-5, -5, 0}, {5, -5, 0}, {0, 5, 0}});
@@ -1003,46 +916,27 @@ TEST(FclPeerTriangle, DegenerateTriangles) {
   // centre: their mean): collinear and coincident vertices are answered as
   // the segment or the point.
   const Triangle through{{-3, 0, 0.5}, {0, 0, 0.5}, {3, 0, 0.5}};
-  const PeerContact t = fcl_collide(kZ, through);
-  ASSERT_TRUE(t.ok) << t.error;
-  ASSERT_TRUE(t.hit);
-  EXPECT_NEAR(t.depth, 0.5, 1e-6);
-  EXPECT_NEAR(length(t.normal - Vec3{0, 0, 1}), 0.0, 1e-6);
-  const PeerContact into = fcl_collide(kZ, Triangle{{0.2, 0, 0.75}, {0.2, 0, 2}, {0.2, 0, 3}});
-  ASSERT_TRUE(into.ok) << into.error;
-  ASSERT_TRUE(into.hit);
-  EXPECT_NEAR(into.depth, 0.25, 1e-6);
-  EXPECT_NEAR(length(into.normal - Vec3{0, 0, 1}), 0.0, 1e-6);
-  const PeerDistance sep = fcl_distance(kZ, Triangle{{-3, 0, 1.5}, {0, 0, 1.5}, {3, 0, 1.5}});
-  ASSERT_TRUE(sep.ok) << sep.error;
-  EXPECT_NEAR(sep.distance, 0.5, 1e-6);
+  ASSERT_NO_FATAL_FAILURE(expect_hit(fcl_collide(kZ, through), 0.5, {0, 0, 1}, kMpr));
+  const Triangle into{{0.2, 0, 0.75}, {0.2, 0, 2}, {0.2, 0, 3}};
+  ASSERT_NO_FATAL_FAILURE(expect_hit(fcl_collide(kZ, into), 0.25, {0, 0, 1}, kMpr));
+  const Triangle sep{{-3, 0, 1.5}, {0, 0, 1.5}, {3, 0, 1.5}};
+  ASSERT_NO_FATAL_FAILURE(expect_distance(fcl_distance(kZ, sep), 0.5, 1e-6));
   // a == b == c.
   const Vec3 in{0.2, 0.1, 0.5}, out{0.2, 0.1, 1.5};
-  const PeerContact point_in = fcl_collide(kZ, Triangle{in, in, in});
-  ASSERT_TRUE(point_in.ok) << point_in.error;
-  ASSERT_TRUE(point_in.hit);
-  EXPECT_NEAR(point_in.depth, 0.5, 1e-6);
-  EXPECT_NEAR(length(point_in.normal - Vec3{0, 0, 1}), 0.0, 1e-6);
+  ASSERT_NO_FATAL_FAILURE(expect_hit(fcl_collide(kZ, Triangle{in, in, in}), 0.5, {0, 0, 1}, kMpr));
   EXPECT_EQ(fcl_distance(kZ, Triangle{in, in, in}).distance, -1.0);
   const PeerDistance point_out = fcl_distance(kZ, Triangle{out, out, out});
-  ASSERT_TRUE(point_out.ok) << point_out.error;
-  EXPECT_NEAR(point_out.distance, 0.5, 1e-6);
+  ASSERT_NO_FATAL_FAILURE(expect_distance(point_out, 0.5, 1e-6));
   EXPECT_NEAR(length(point_out.p_b - out), 0.0, 1e-12);
   EXPECT_FALSE(fcl_overlap(kZ, Triangle{out, out, out}));
   // Two equal vertices: the segment from outside into the cylinder.
-  const PeerContact two = fcl_collide(kZ, Triangle{out, out, in});
-  ASSERT_TRUE(two.ok) << two.error;
-  ASSERT_TRUE(two.hit);
-  EXPECT_NEAR(two.depth, 0.5, 1e-6);
+  ASSERT_NO_FATAL_FAILURE(expect_hit_depth(fcl_collide(kZ, Triangle{out, out, in}), 0.5, 1e-6));
 }
 
 TEST(FclPeerTriangle, TouchingAndTolerance) {
   // A vertex on the cap: a hit of rounding-sized depth (its normal means
   // nothing); on the side: no hit.
-  const PeerContact cap = fcl_collide(kZ, Triangle{{0.2, 0, 1}, {0.2, -0.5, 2}, {0.2, 0.5, 2}});
-  ASSERT_TRUE(cap.ok) << cap.error;
-  EXPECT_TRUE(cap.hit) << "FCL's touching verdict changed: update fcl_adapter.hpp";
-  EXPECT_LT(cap.depth, 1e-15);
+  ASSERT_NO_FATAL_FAILURE(expect_touching_hit(Triangle{{0.2, 0, 1}, {0.2, -0.5, 2}, {0.2, 0.5, 2}}));
   const PeerContact side = fcl_collide(kZ, Triangle{{1, 0, 0}, {3, -0.5, 0}, {3, 0.5, 0}});
   ASSERT_TRUE(side.ok) << side.error;
   EXPECT_FALSE(side.hit) << "FCL's touching verdict changed: update fcl_adapter.hpp";
@@ -1061,9 +955,7 @@ TEST(FclPeerTriangle, TouchingAndTolerance) {
 TEST(FclPeerTriangle, DistanceZeroDirectionIsRefused) {
   for (const Triangle& t : {Triangle{{1, 0, 0}, {3, -0.5, 0}, {3, 0.5, 0}}, Triangle{{1, 0, 0}, {2, 0, 0}, {3, 0, 0}},
                             Triangle{{1, 0, 0}, {1, 0, 0}, {1, 0, 0}}}) {
-    const PeerDistance d = fcl_distance(kZ, t);
-    EXPECT_FALSE(d.ok) << "FCL no longer shows the documented defect";
-    EXPECT_NE(d.error.find("non-finite point"), std::string::npos) << d.error;
+    expect_zero_direction_refused(t);
     EXPECT_FALSE(fcl_distance_prepared(FclCylinderTriangle(kZ, t)).ok);
   }
   // Subnormal scenes (FCL as shipped aborts on its assert): refused.
@@ -1091,14 +983,7 @@ TEST(FclPeerTriangle, MprBudgetStopsNonTermination) {
   const Triangle t{{-0x1.4562f5dff77dfp+48, 0x1.47657640e37f3p+49, 0x1.1f98cf285b149p+49},
                    {-0x1.4562f5dff77e9p+48, 0x1.47657640e37ffp+49, 0x1.1f98cf285b13ap+49},
                    {-0x1.4562f5dff77d2p+48, 0x1.47657640e37f6p+49, 0x1.1f98cf285b14ap+49}};
-  const auto start = std::chrono::steady_clock::now();
-  const PeerContact r = fcl_collide(c, t);
-  EXPECT_FALSE(r.ok) << "FCL no longer shows the documented non-termination";
-  EXPECT_NE(r.error.find("did not terminate"), std::string::npos) << r.error;
-  std::string err;
-  EXPECT_FALSE(fcl_overlap(c, t, &err));
-  EXPECT_NE(err.find("did not terminate"), std::string::npos) << err;
-  EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 5.0);
+  expect_mpr_budget_stops(c, t);
   const PeerDistance d = fcl_distance(c, t);
   ASSERT_TRUE(d.ok) << d.error;
 }
@@ -1106,31 +991,10 @@ TEST(FclPeerTriangle, MprBudgetStopsNonTermination) {
 // Within the budget the adapter's calls are FCL's shapeTriangleIntersect /
 // shapeTriangleDistance, bit for bit.
 TEST(FclPeerTriangle, GuardedCallsAreFcls) {
-  TestRng rng{9001};
-  int hits = 0;
-  for (int i = 0; i < 500; ++i) {
-    const Cylinder c{4 * rng.vec(), 4 * rng.vec(), 1.0 + rng.next()};
+  expect_calls_are_fcls<FclCylinderTriangle>(9001, [](TestRng& rng) {
     const Vec3 centre = 2 * rng.vec();
-    const Triangle t{centre + 1.5 * rng.vec(), centre + 1.5 * rng.vec(), centre + 1.5 * rng.vec()};
-    const PeerContact adapter = fcl_collide(c, t);
-    const PeerContact raw = fcl_collide_prepared(FclCylinderTriangle(c, t));
-    ASSERT_TRUE(adapter.ok) << adapter.error;
-    ASSERT_EQ(adapter.hit, raw.hit) << i;
-    EXPECT_EQ(fcl_overlap(c, t), fcl_overlap_prepared(FclCylinderTriangle(c, t))) << i;
-    const PeerDistance d = fcl_distance(c, t);
-    const PeerDistance d_raw = fcl_distance_prepared(FclCylinderTriangle(c, t));
-    ASSERT_TRUE(d.ok) << d.error;
-    EXPECT_EQ(std::memcmp(&d.distance, &d_raw.distance, sizeof(double)), 0) << i;
-    EXPECT_EQ(d.p_a, d_raw.p_a) << i;
-    EXPECT_EQ(d.p_b, d_raw.p_b) << i;
-    if (!adapter.hit) continue;
-    ++hits;
-    EXPECT_TRUE(raw.ok) << raw.error;
-    EXPECT_EQ(std::memcmp(&adapter.depth, &raw.depth, sizeof(double)), 0) << i;
-    EXPECT_EQ(adapter.normal, raw.normal) << i;
-    EXPECT_EQ(adapter.point, raw.point) << i;
-  }
-  EXPECT_GT(hits, 100);
+    return Triangle{centre + 1.5 * rng.vec(), centre + 1.5 * rng.vec(), centre + 1.5 * rng.vec()};
+  });
 }
 
 TEST(FclPeerTriangle, InvalidInputNeverReachesFcl) {
@@ -1138,18 +1002,9 @@ TEST(FclPeerTriangle, InvalidInputNeverReachesFcl) {
   const double inf = std::numeric_limits<double>::infinity();
   for (const Triangle& t : {Triangle{{nan, 0, 0}, {1, 0, 0}, {0, 1, 0}}, Triangle{{0, 0, 0}, {1, inf, 0}, {0, 1, 0}},
                             Triangle{{0, 0, 0}, {1, 0, 0}, {0, 1, -inf}}}) {
-    const PeerContact r = fcl_collide(kZ, t);
-    EXPECT_FALSE(r.ok);
-    EXPECT_EQ(r.error, "invalid input");
-    std::string err;
-    EXPECT_FALSE(fcl_overlap(kZ, t, &err));
-    EXPECT_EQ(err, "invalid input");
-    EXPECT_EQ(fcl_distance(kZ, t).error, "invalid input");
+    expect_refused(kZ, t, "invalid input");
   }
-  const Cylinder bad_cyl{{0, 0, 0}, {0, 0, 1}, -1};
-  const Triangle good{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
-  EXPECT_EQ(fcl_collide(bad_cyl, good).error, "invalid input");
-  EXPECT_EQ(fcl_distance(bad_cyl, good).error, "invalid input");
+  expect_refused(Cylinder{{0, 0, 0}, {0, 0, 1}, -1}, Triangle{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}, "invalid input");
 }
 
 // Adversarial batches for both pairs: small integer and half coordinates
@@ -1176,6 +1031,19 @@ TEST(FclPeerBoxTriangle, AdversarialInputsDoNotHangOrAbort) {
     ok += call_ok;
     hits += call_ok && hit;
     worst = std::max(worst, std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+  };
+  // collide, overlap and distance on (c, b), each timed and counted.
+  auto probe = [&](const Cylinder& c, const auto& b) {
+    auto s = std::chrono::steady_clock::now();
+    const PeerContact r = fcl_collide(c, b);
+    check(r.ok, r.error, r.hit, s);
+    s = std::chrono::steady_clock::now();
+    std::string err;
+    const bool hit = fcl_overlap(c, b, &err);
+    check(err.empty(), err, hit, s);
+    s = std::chrono::steady_clock::now();
+    const PeerDistance d = fcl_distance(c, b);
+    check(d.ok, d.error, d.distance < 0, s);
   };
   for (int i = 0; i < 6000; ++i) {
     const int style = rng.below(3);
@@ -1223,38 +1091,8 @@ TEST(FclPeerBoxTriangle, AdversarialInputsDoNotHangOrAbort) {
       if (!is_valid(c)) continue;
     }
     ASSERT_TRUE(obb_axes_orthonormal(b));
-    {
-      const auto s = std::chrono::steady_clock::now();
-      const PeerContact r = fcl_collide(c, b);
-      check(r.ok, r.error, r.hit, s);
-    }
-    {
-      const auto s = std::chrono::steady_clock::now();
-      std::string err;
-      const bool hit = fcl_overlap(c, b, &err);
-      check(err.empty(), err, hit, s);
-    }
-    {
-      const auto s = std::chrono::steady_clock::now();
-      const PeerDistance d = fcl_distance(c, b);
-      check(d.ok, d.error, d.distance < 0, s);
-    }
-    {
-      const auto s = std::chrono::steady_clock::now();
-      const PeerContact r = fcl_collide(c, t);
-      check(r.ok, r.error, r.hit, s);
-    }
-    {
-      const auto s = std::chrono::steady_clock::now();
-      std::string err;
-      const bool hit = fcl_overlap(c, t, &err);
-      check(err.empty(), err, hit, s);
-    }
-    {
-      const auto s = std::chrono::steady_clock::now();
-      const PeerDistance d = fcl_distance(c, t);
-      check(d.ok, d.error, d.distance < 0, s);
-    }
+    probe(c, b);
+    probe(c, t);
   }
   EXPECT_GT(calls, 25000);
   EXPECT_GT(ok, calls * 8 / 10);  // the guard refuses what FCL cannot do, not everything
@@ -1277,26 +1115,15 @@ TEST(FclPeerCylinder, CollideNormalFromFirstTowardsSecond) {
   for (const Cylinder& a : {kZ, kZFlipped}) {
     for (const Cylinder& b : {Cylinder{{0.2, 0.1, 0.75}, {0.2, 0.1, 2.75}, 0.5},
                               Cylinder{{0.2, 0.1, 2.75}, {0.2, 0.1, 0.75}, 0.5}}) {
-      const PeerContact r = fcl_collide(a, b);
-      ASSERT_TRUE(r.ok) << r.error;
-      ASSERT_TRUE(r.hit);
-      EXPECT_NEAR(r.depth, 0.25, 1e-6);
-      EXPECT_NEAR(length(r.normal - Vec3{0, 0, 1}), 0.0, 1e-6);
+      ASSERT_NO_FATAL_FAILURE(expect_hit(fcl_collide(a, b), 0.25, {0, 0, 1}, kMpr));
       EXPECT_TRUE(fcl_overlap(a, b));
-      const PeerContact s = fcl_collide(b, a);
-      ASSERT_TRUE(s.ok) << s.error;
-      ASSERT_TRUE(s.hit);
-      EXPECT_NEAR(s.depth, 0.25, 1e-6);
-      EXPECT_NEAR(length(s.normal - Vec3{0, 0, -1}), 0.0, 1e-6);
+      ASSERT_NO_FATAL_FAILURE(expect_hit(fcl_collide(b, a), 0.25, {0, 0, -1}, kMpr));
     }
   }
   // Parallel side by side, the axes 1.75 apart (radii 1 and 1): 0.25 deep
   // along the outward radial.
-  const PeerContact side = fcl_collide(kZ, Cylinder{{1.75, 0, -0.5}, {1.75, 0, 0.5}, 1.0});
-  ASSERT_TRUE(side.ok) << side.error;
-  ASSERT_TRUE(side.hit);
-  EXPECT_NEAR(side.depth, 0.25, 1e-6);
-  EXPECT_NEAR(length(side.normal - Vec3{1, 0, 0}), 0.0, 1e-3);
+  const Cylinder side{{1.75, 0, -0.5}, {1.75, 0, 0.5}, 1.0};
+  ASSERT_NO_FATAL_FAILURE(expect_hit(fcl_collide(kZ, side), 0.25, {1, 0, 0}, kMprSide));
 }
 
 TEST(FclPeerCylinder, DistanceAndMiss) {
@@ -1310,60 +1137,25 @@ TEST(FclPeerCylinder, DistanceAndMiss) {
   EXPECT_LE(d.distance, 0.5 + 1e-5);
   EXPECT_NEAR(d.p_a.y, 1.0, 1e-5);
   EXPECT_NEAR(d.p_b.y, 1.5, 1e-5);
-  const PeerContact miss = fcl_collide(kZ, b);
-  ASSERT_TRUE(miss.ok) << miss.error;
-  EXPECT_FALSE(miss.hit);
-  std::string err = "stale";
-  EXPECT_FALSE(fcl_overlap(kZ, b, &err));
-  EXPECT_EQ(err, "");
+  ASSERT_NO_FATAL_FAILURE(expect_miss(kZ, b));
   // Overlapping: exactly -1, nearest points zero.
-  const PeerDistance over = fcl_distance(kZ, Cylinder{{-2, 1.5, 0}, {2, 1.5, 0}, 1.0});
-  ASSERT_TRUE(over.ok) << over.error;
-  EXPECT_EQ(over.distance, -1.0);
-  EXPECT_EQ(over.p_a, Vec3{});
-  EXPECT_EQ(over.p_b, Vec3{});
+  ASSERT_NO_FATAL_FAILURE(expect_overlapping(fcl_distance(kZ, Cylinder{{-2, 1.5, 0}, {2, 1.5, 0}, 1.0})));
 }
 
+// Within the budget the adapter's calls are fcl::collide's and
+// fcl::distance's, bit for bit.
 TEST(FclPeerCylinder, GuardedCallsAreFcls) {
-  TestRng rng{9191};
-  int hits = 0;
-  for (int i = 0; i < 500; ++i) {
-    const Cylinder a{4 * rng.vec(), 4 * rng.vec(), 1.0 + rng.next()};
-    const Cylinder b{2 * rng.vec(), 2 * rng.vec(), 0.75 + 0.5 * rng.next()};
-    const PeerContact adapter = fcl_collide(a, b);
-    const PeerContact raw = fcl_collide_prepared(FclCylinderCylinder(a, b));
-    ASSERT_TRUE(adapter.ok) << adapter.error;
-    ASSERT_EQ(adapter.hit, raw.hit) << i;
-    EXPECT_EQ(fcl_overlap(a, b), fcl_overlap_prepared(FclCylinderCylinder(a, b))) << i;
-    const PeerDistance d = fcl_distance(a, b);
-    const PeerDistance d_raw = fcl_distance_prepared(FclCylinderCylinder(a, b));
-    ASSERT_TRUE(d.ok) << d.error;
-    EXPECT_EQ(std::memcmp(&d.distance, &d_raw.distance, sizeof(double)), 0) << i;
-    EXPECT_EQ(d.p_a, d_raw.p_a) << i;
-    EXPECT_EQ(d.p_b, d_raw.p_b) << i;
-    if (!adapter.hit) continue;
-    ++hits;
-    EXPECT_TRUE(raw.ok) << raw.error;
-    EXPECT_EQ(std::memcmp(&adapter.depth, &raw.depth, sizeof(double)), 0) << i;
-    EXPECT_EQ(adapter.normal, raw.normal) << i;
-    EXPECT_EQ(adapter.point, raw.point) << i;
-  }
-  EXPECT_GT(hits, 100);
+  expect_calls_are_fcls<FclCylinderCylinder>(9191, [](TestRng& rng) {
+    return Cylinder{2 * rng.vec(), 2 * rng.vec(), 0.75 + 0.5 * rng.next()};
+  });
 }
 
 TEST(FclPeerCylinder, InvalidInputNeverReachesFcl) {
   const double nan = std::numeric_limits<double>::quiet_NaN();
   for (const Cylinder& bad : {Cylinder{{0, 0, 0}, {0, 0, 0}, 1}, Cylinder{{0, 0, 0}, {0, 0, 1}, -1},
                               Cylinder{{0, 0, nan}, {0, 0, 1}, 1}}) {
-    for (const auto& [a, b] : {std::pair<Cylinder, Cylinder>{kZ, bad}, std::pair<Cylinder, Cylinder>{bad, kZ}}) {
-      const PeerContact r = fcl_collide(a, b);
-      EXPECT_FALSE(r.ok);
-      EXPECT_EQ(r.error, "invalid input");
-      std::string err;
-      EXPECT_FALSE(fcl_overlap(a, b, &err));
-      EXPECT_EQ(err, "invalid input");
-      EXPECT_EQ(fcl_distance(a, b).error, "invalid input");
-    }
+    expect_refused(kZ, bad, "invalid input");
+    expect_refused(bad, kZ, "invalid input");
   }
   // Beyond GJK's range: distance refused, collide answered or refused, never a crash.
   const Cylinder huge{{0, 0, 0}, {0, 0, 1e200}, 1};
@@ -1378,37 +1170,23 @@ TEST(FclPeerSweep, TowardsCap) {
   for (FclCastMethod m : kBothMethods) {
     for (const Cylinder& c : {kZ, kZFlipped}) {
       const PeerCast r = fcl_sweep(MovingSphere{{0.3, 0.2, 5}, 0.5, {0, 0, -10}}, c, m);
-      ASSERT_TRUE(r.ok) << r.error;
+      ASSERT_NO_FATAL_FAILURE(expect_cast_hit(r, 0.35, 1e-12));
       EXPECT_TRUE(r.supported);
-      EXPECT_TRUE(r.hit);
-      EXPECT_NEAR(r.t, 0.35, 1e-12);
     }
   }
 }
 
 TEST(FclPeerSweep, SideRimAndMiss) {
   // Along x at height 0.5 from x = -4: touches the side at x = -1.5, t = 2.5/8.
-  const PeerCast side = fcl_sweep(MovingSphere{{-4, 0, 0.5}, 0.5, {8, 0, 0}}, kZ);
-  ASSERT_TRUE(side.ok) << side.error;
-  EXPECT_TRUE(side.hit);
-  EXPECT_NEAR(side.t, 0.3125, 1e-4);
-  EXPECT_LE(side.t, 0.3125 + 1e-15);
+  ASSERT_NO_FATAL_FAILURE(expect_advanced_to(fcl_sweep(MovingSphere{{-4, 0, 0.5}, 0.5, {8, 0, 0}}, kZ), 0.3125));
   // Aimed at the rim point (1, 0, 1) along (-1, 0, -1) from (3, 0, 3):
   // touches it when the centre is 0.5 from it, t = (2 sqrt 2 - 0.5) / (4 sqrt 2).
-  const PeerCast rim = fcl_sweep(MovingSphere{{3, 0, 3}, 0.5, {-4, 0, -4}}, kZ);
-  ASSERT_TRUE(rim.ok) << rim.error;
-  EXPECT_TRUE(rim.hit);
   const double t_rim = (2 * std::sqrt(2.0) - 0.5) / (4 * std::sqrt(2.0));
-  EXPECT_NEAR(rim.t, t_rim, 1e-4);
-  EXPECT_LE(rim.t, t_rim + 1e-15);
+  ASSERT_NO_FATAL_FAILURE(expect_advanced_to(fcl_sweep(MovingSphere{{3, 0, 3}, 0.5, {-4, 0, -4}}, kZ), t_rim));
   for (FclCastMethod m : kBothMethods) {
     // Passing by, 1e-3 away; stopping short.
-    const PeerCast by = fcl_sweep(MovingSphere{{-4, 1.501, 0.5}, 0.5, {8, 0, 0}}, kZ, m);
-    ASSERT_TRUE(by.ok) << by.error;
-    EXPECT_FALSE(by.hit);
-    const PeerCast short_of = fcl_sweep(MovingSphere{{-4, 0, 0.5}, 0.5, {2, 0, 0}}, kZ, m);
-    ASSERT_TRUE(short_of.ok) << short_of.error;
-    EXPECT_FALSE(short_of.hit);
+    ASSERT_NO_FATAL_FAILURE(expect_cast(fcl_sweep(MovingSphere{{-4, 1.501, 0.5}, 0.5, {8, 0, 0}}, kZ, m), false));
+    ASSERT_NO_FATAL_FAILURE(expect_cast(fcl_sweep(MovingSphere{{-4, 0, 0.5}, 0.5, {2, 0, 0}}, kZ, m), false));
   }
 }
 
@@ -1418,13 +1196,10 @@ TEST(FclPeerSweep, StartsTouchingOrInside) {
   for (const MovingSphere& m : {MovingSphere{{0, 0, 0}, 0.5, {0, 0, 5}}, MovingSphere{{0, 0, 1.5}, 0.5, {0, 0, 5}},
                                 MovingSphere{{0, 0, 0}, 0.5, {0, 0, 0}}}) {
     const PeerCast r = fcl_sweep(m, kZ);
-    ASSERT_TRUE(r.ok) << r.error;
-    EXPECT_TRUE(r.hit);
+    ASSERT_NO_FATAL_FAILURE(expect_cast(r, true));
     EXPECT_EQ(r.t, 0.0);
   }
-  const PeerCast still = fcl_sweep(MovingSphere{{0, 0, 3}, 0.5, {0, 0, 0}}, kZ);
-  ASSERT_TRUE(still.ok) << still.error;
-  EXPECT_FALSE(still.hit);
+  ASSERT_NO_FATAL_FAILURE(expect_cast(fcl_sweep(MovingSphere{{0, 0, 3}, 0.5, {0, 0, 0}}, kZ), false));
 }
 
 TEST(FclPeerSweep, InvalidAndOutOfRange) {

@@ -27,26 +27,27 @@ namespace geomcheck::oracles {
 /// -z. `u` must be unit.
 fcl::Matrix3d fcl_rotation_z_to(const Vec3& u);
 
-/// A geomcheck cylinder as FCL sees it. Requires is_valid(c).
-struct FclCylinder {
-  fcl::Cylinderd shape;
+/// A geomcheck shape as FCL sees it: FCL's shape and its pose.
+template <class FclShape>
+struct FclPosed {
+  FclShape shape;
   fcl::Transform3d pose;
+};
+
+/// A geomcheck cylinder as FCL sees it. Requires is_valid(c).
+struct FclCylinder : FclPosed<fcl::Cylinderd> {
   explicit FclCylinder(const Cylinder& c);
 };
 
 /// A geomcheck sphere as FCL sees it. Requires is_valid(s).
-struct FclSphere {
-  fcl::Sphered shape;
-  fcl::Transform3d pose;
+struct FclSphere : FclPosed<fcl::Sphered> {
   explicit FclSphere(const Sphere& s);
 };
 
 /// A geomcheck capsule as FCL sees it: fcl::Capsuled(r, |q - p|) at
 /// (p + q)/2 with +z along q - p; p == q gives lz = 0 and the identity
 /// rotation (a sphere, still an fcl::Capsuled). Requires is_valid(c).
-struct FclCapsule {
-  fcl::Capsuled shape;
-  fcl::Transform3d pose;
+struct FclCapsule : FclPosed<fcl::Capsuled> {
   explicit FclCapsule(const Capsule& c);
 };
 
@@ -56,9 +57,7 @@ struct FclCapsule {
 /// axes[2] negated (the same set: the box is symmetric). Zero extents (flat
 /// boxes, segments, points) are accepted by FCL. Requires is_valid(b) and
 /// obb_axes_orthonormal(b) (FCL takes the matrix for a rotation).
-struct FclBox {
-  fcl::Boxd shape;
-  fcl::Transform3d pose;
+struct FclBox : FclPosed<fcl::Boxd> {
   explicit FclBox(const Obb& b);
 };
 
@@ -69,44 +68,30 @@ struct FclTriangle {
   explicit FclTriangle(const Triangle& t);
 };
 
-/// A cylinder/sphere pair converted once; the `*_prepared` calls run only
-/// FCL's query and the conversion of its result. Requires valid shapes.
-struct FclCylinderSphere {
+/// A cylinder and a shape converted once (`FclB`: FclSphere, FclCylinder,
+/// FclCapsule, FclBox or FclTriangle, built from the geomcheck shape); the
+/// `*_prepared` calls run only FCL's query and the conversion of its result.
+/// PeerContact's normal is from the cylinder towards the second shape.
+/// Requires valid shapes (a box: orthonormal axes).
+template <class FclB>
+struct FclCylinderPair {
   FclCylinder a;
-  FclSphere b;
-  FclCylinderSphere(const Cylinder& cyl, const Sphere& sph) : a(cyl), b(sph) {}
+  FclB b;
+  template <class B>
+  FclCylinderPair(const Cylinder& cyl, const B& shape) : a(cyl), b(shape) {}
 };
 
+/// A cylinder/sphere pair converted once.
+using FclCylinderSphere = FclCylinderPair<FclSphere>;
 /// A cylinder/cylinder pair converted once (PeerContact's normal and
 /// PeerDistance's points then refer to the first and second cylinder).
-struct FclCylinderCylinder {
-  FclCylinder a, b;
-  FclCylinderCylinder(const Cylinder& first, const Cylinder& second) : a(first), b(second) {}
-};
-
-/// A cylinder/capsule pair converted once (PeerContact's normal from the
-/// cylinder towards the capsule). Requires valid shapes.
-struct FclCylinderCapsule {
-  FclCylinder a;
-  FclCapsule b;
-  FclCylinderCapsule(const Cylinder& cyl, const Capsule& cap) : a(cyl), b(cap) {}
-};
-
-/// A cylinder/box pair converted once (PeerContact's normal from the
-/// cylinder towards the box). Requires valid shapes and orthonormal axes.
-struct FclCylinderBox {
-  FclCylinder a;
-  FclBox b;
-  FclCylinderBox(const Cylinder& cyl, const Obb& box) : a(cyl), b(box) {}
-};
-
-/// A cylinder/triangle pair converted once (PeerContact's normal from the
-/// cylinder towards the triangle). Requires valid shapes.
-struct FclCylinderTriangle {
-  FclCylinder a;
-  FclTriangle b;
-  FclCylinderTriangle(const Cylinder& cyl, const Triangle& tri) : a(cyl), b(tri) {}
-};
+using FclCylinderCylinder = FclCylinderPair<FclCylinder>;
+/// A cylinder/capsule pair converted once.
+using FclCylinderCapsule = FclCylinderPair<FclCapsule>;
+/// A cylinder/box pair converted once (orthonormal axes required).
+using FclCylinderBox = FclCylinderPair<FclBox>;
+/// A cylinder/triangle pair converted once.
+using FclCylinderTriangle = FclCylinderPair<FclTriangle>;
 
 /// A geomcheck triangle mesh as FCL's BVH model of oriented-box / swept-
 /// sphere volumes (fcl::BVHModel<OBBRSSd>: beginModel, addSubModel with the
