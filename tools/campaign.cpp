@@ -276,8 +276,12 @@ class QueryRun {
                     html(std::string("case ") + name + ": " + r.failure->property + ": " + r.failure->detail +
                          "; oracle: " + e.truth_text),
                     {}, &ans);
-    report::write_counterexample_page(std::filesystem::path(path).replace_extension(".html"), name, drawing,
-                                      impl_->name, path.string());
+    const std::string subject = impl_->name;
+    const std::string replay = subject == "production"
+                                   ? "geomcheck replay " + path.string()
+                                   : "geomcheck replay --subject " + subject + " " + path.string();
+    report::write_counterexample_page(std::filesystem::path(path).replace_extension(".html"), name, drawing, subject,
+                                      replay);
     if (rep_.drawings.size() < 12) rep_.drawings.push_back(drawing);
   }
 

@@ -228,19 +228,12 @@ Contact collide_scaled(const Cylinder& cyl, const Capsule& cap) {
 
 }  // namespace
 
-bool overlap(const Cylinder& cyl_in, const Capsule& cap_in) {
-  if (!is_valid(cyl_in) || !is_valid(cap_in)) return false;
-  const detail::SceneScale sc(std::max(detail::largest(cyl_in), detail::largest(cap_in)));
-  return overlap_scaled(sc.in(cyl_in), sc.in(cap_in));
+bool overlap(const Cylinder& cyl, const Capsule& cap) {
+  return detail::overlap_rescaled(cyl, cap, [](const Cylinder& c, const Capsule& k) { return overlap_scaled(c, k); });
 }
 
-Contact collide(const Cylinder& cyl_in, const Capsule& cap_in) {
-  if (!is_valid(cyl_in) || !is_valid(cap_in)) return {};
-  const detail::SceneScale sc(std::max(detail::largest(cyl_in), detail::largest(cap_in)));
-  Contact out = collide_scaled(sc.in(cyl_in), sc.in(cap_in));
-  out.point = sc.out(out.point);
-  out.depth = std::min(sc.out(out.depth), std::numeric_limits<double>::max());
-  return out;
+Contact collide(const Cylinder& cyl, const Capsule& cap) {
+  return detail::collide_rescaled(cyl, cap, [](const Cylinder& c, const Capsule& k) { return collide_scaled(c, k); });
 }
 
 }  // namespace geomcheck

@@ -328,17 +328,7 @@ Contact collide_scaled(const Cylinder& cyl, const Obb& box, detail::ObbCapStage 
   // The side x vertex patches: a vertex whose radial direction is the
   // minimal translation is within the penetration depth (<= best.o) of the
   // side, and inside the slab.
-  for (int k = 0; k < 8; ++k) {
-    const Vec3 w = s.vertex(k) - s.P;
-    const double z = dot(w, s.u);
-    if (z < -best.o || z > s.len + best.o) continue;
-    const double rho = detail::safe_length(w - z * s.u);
-    if (rho < s.r - best.o || rho > s.r + best.o) continue;
-    // A vertex on the axis line (to rounding) has no radial direction: every
-    // one is alike, and a pick would not reflect with the scene.
-    Vec3 n;
-    if (detail::radial_direction(w, s.u, n)) best.consider(n);
-  }
+  for (int k = 0; k < 8; ++k) detail::consider_side_vertex(s.vertex(k) - s.P, s.u, s.len, s.r, best);
   search_rim_edges(s, v.point, best);
   const Vec3 n = s.from_box(best.n);
   out.normal = max_abs(n) > 0 ? detail::normalized(n) : Vec3{0, 0, 1};
@@ -381,18 +371,13 @@ Obb in_contract(const Obb& b) {
 namespace detail {
 
 bool overlap_with_stage(const Cylinder& cyl, const Obb& box, ObbCapStage stage) {
-  if (!is_valid(cyl) || !is_valid(box)) return false;
-  const SceneScale sc(std::max(largest(cyl), largest(box)));
-  return decide(BoxSpace(sc.in(cyl), sc.in(in_contract(box))), stage).hit;
+  return overlap_rescaled(cyl, box, [&](const Cylinder& c, const Obb& b) {
+    return decide(BoxSpace(c, in_contract(b)), stage).hit;
+  });
 }
 
 Contact collide_with_stage(const Cylinder& cyl, const Obb& box, ObbCapStage stage) {
-  if (!is_valid(cyl) || !is_valid(box)) return {};
-  const SceneScale sc(std::max(largest(cyl), largest(box)));
-  Contact out = collide_scaled(sc.in(cyl), sc.in(in_contract(box)), stage);
-  out.point = sc.out(out.point);
-  out.depth = std::min(sc.out(out.depth), std::numeric_limits<double>::max());
-  return out;
+  return collide_rescaled(cyl, box, [&](const Cylinder& c, const Obb& b) { return collide_scaled(c, in_contract(b), stage); });
 }
 
 }  // namespace detail

@@ -497,17 +497,7 @@ Contact collide_scaled(const Cylinder& cyl, const Triangle& tri, detail::TriCapS
   }
   // Side x vertex: the radial direction through each vertex within the best
   // overlap so far of the side, and inside the slab by as much.
-  for (int k = 0; k < 3; ++k) {
-    const Vec3 w = s.V[k];
-    const double z = dot(w, s.u);
-    if (z < -best.o || z > s.len + best.o) continue;
-    const double rho = detail::safe_length(w - z * s.u);
-    if (rho < s.r - best.o || rho > s.r + best.o) continue;
-    // A vertex on the axis line (to rounding) has no radial direction: every
-    // one is alike, and a pick would not reflect with the scene.
-    Vec3 n;
-    if (detail::radial_direction(w, s.u, n)) best.consider(n);
-  }
+  for (int k = 0; k < 3; ++k) detail::consider_side_vertex(s.V[k], s.u, s.len, s.r, best);
   // Rim x edge. The frame across the axis: f1 towards the vertex farthest
   // from the axis, f2 oriented by the vertices (both reflect with the scene).
   if (ne > 0) {
@@ -545,9 +535,7 @@ Contact collide_scaled(const Cylinder& cyl, const Triangle& tri, detail::TriCapS
 namespace detail {
 
 bool overlap_with_stage(const Cylinder& cyl, const Triangle& tri, TriCapStage stage) {
-  if (!is_valid(cyl) || !is_valid(tri)) return false;
-  const SceneScale sc(std::max(largest(cyl), largest(tri)));
-  return decide(TriSpace(sc.in(cyl), sc.in(tri)), stage).hit;
+  return overlap_rescaled(cyl, tri, [&](const Cylinder& c, const Triangle& t) { return decide(TriSpace(c, t), stage).hit; });
 }
 
 bool overlap_with_depth_bound(const Cylinder& cyl, const Triangle& tri, double* bound) {
@@ -570,12 +558,7 @@ bool overlap_with_depth_bound(const Cylinder& cyl, const Triangle& tri, double* 
 }
 
 Contact collide_with_stage(const Cylinder& cyl, const Triangle& tri, TriCapStage stage) {
-  if (!is_valid(cyl) || !is_valid(tri)) return {};
-  const SceneScale sc(std::max(largest(cyl), largest(tri)));
-  Contact out = collide_scaled(sc.in(cyl), sc.in(tri), stage);
-  out.point = sc.out(out.point);
-  out.depth = std::min(sc.out(out.depth), std::numeric_limits<double>::max());
-  return out;
+  return collide_rescaled(cyl, tri, [&](const Cylinder& c, const Triangle& t) { return collide_scaled(c, t, stage); });
 }
 
 }  // namespace detail

@@ -49,11 +49,8 @@ CastHit talk_rim_point(const Sphere& s, Vec3 m0, Vec3 delta, const Cylinder& cyl
   const Vec3 m = m0 - rim;
   const double qa = dot(delta, delta), qb = dot(m, delta), qc = dot(m, m) - s.r * s.r;
   if (qc <= 0) return contact_at(cyl, a, m0, 0.0, noise);
-  if (qa == 0 || qb >= 0) return out;
-  const double disc = qb * qb - qa * qc;
-  if (disc < 0) return out;
-  const double t = qc / (-qb + std::sqrt(disc));
-  if (t > 1) return out;
+  double t;
+  if (qa == 0 || !entry_root(qa, qb, qc, t)) return out;
   out.hit = true;
   out.t = t;
   out.point = cyl.p + rim;

@@ -99,9 +99,4 @@ std::optional<QCylinder> shrunk(const QCylinder& c, const Q& delta) {
   return QCylinder{c.p + e * d, c.q - e * d, c.r - delta};
 }
 
-double case_scale(const Segment& s, const Cylinder& c) {
-  double m = std::max({max_abs(c.p), max_abs(c.q), c.r, extent(c.p, c.q), max_abs(s.a), max_abs(s.b)});
-  return m > 0 ? m : 1.0;
-}
-
 }  // namespace geomcheck::oracle

@@ -94,9 +94,4 @@ QInterval overlap_along(const QCylinder& a, const QSphere& b, const QVec& n) {
   return (support(a, n) + support(b, neg)) / len;
 }
 
-double case_scale(const Cylinder& c, const Sphere& s) {
-  double m = std::max({max_abs(c.p), max_abs(c.q), c.r, max_abs(s.c), s.r, extent(c.p, c.q)});
-  return m > 0 ? m : 1.0;
-}
-
 }  // namespace geomcheck::oracle

@@ -35,4 +35,15 @@ double extent(Vec3 a, Vec3 b) {
   return std::isfinite(e) ? e : std::numeric_limits<double>::max();
 }
 
+double magnitude(const Cylinder& c) { return std::max({max_abs(c.p), max_abs(c.q), c.r, extent(c.p, c.q)}); }
+double magnitude(const Capsule& c) { return std::max({max_abs(c.p), max_abs(c.q), c.r, extent(c.p, c.q)}); }
+double magnitude(const Sphere& s) { return std::max(max_abs(s.c), s.r); }
+double magnitude(const Segment& s) { return std::max(max_abs(s.a), max_abs(s.b)); }
+double magnitude(const Obb& b) { return std::max(max_abs(b.c), max_abs(b.e)); }
+double magnitude(const Triangle& t) { return std::max({max_abs(t.a), max_abs(t.b), max_abs(t.c)}); }
+double magnitude(const MovingSphere& s) {
+  const Vec3 end = s.c + s.delta;
+  return std::max({max_abs(s.c), is_finite(end) ? max_abs(end) : 0.0, s.r});
+}
+
 }  // namespace geomcheck::oracle

@@ -25,18 +25,11 @@
 namespace geomcheck {
 
 // The spec of cast_segment_cylinder: segment cast against a cylinder: the first hit from the segment start.
-// Claims (exact verdict, depth, point in both, the normal, the truth), the
-// default campaign's cases and the known-wrong variants (teeth.cpp).
-template <>
-const QuerySpec<QueryId::cast_segment_cylinder>& spec_of<QueryId::cast_segment_cylinder>() {
-  static const QuerySpec<QueryId::cast_segment_cylinder> spec{{true, Claims::Depth::None, true, "the cylinder's outward surface normal at the hit (zero when the segment starts inside)", "closed form (oracles/src/cast_segment_cylinder.cpp): exact hit or miss, certified t"}, 100000, {&teeth::kInfiniteCylinder, &teeth::kEricsonPrinted}};
-  return spec;
-}
+GEOMCHECK_SPEC(cast_segment_cylinder, 100000,
+               (Claims{true, Claims::Depth::None, true, "the cylinder's outward surface normal at the hit (zero when the segment starts inside)", "closed form (oracles/src/cast_segment_cylinder.cpp): exact hit or miss, certified t"}),
+               &teeth::kInfiniteCylinder, &teeth::kEricsonPrinted)
 
 namespace {
-
-constexpr QueryId kId = QueryId::cast_segment_cylinder;
-
 
 // Does the segment meet the cylinder grown (sign > 0) or shrunk (sign < 0) by delta?
 bool meets_adjusted(const oracle::QSegment& s, const oracle::QCylinder& c, const Q& delta, int sign) {
@@ -66,19 +59,8 @@ double disagreement_margin(const oracle::QSegment& s, const oracle::QCylinder& c
 
 }  // namespace
 
-Evaluation evaluate(const SegmentCylinderCase& c, const CastSegmentCylinderImpl& impl, const double* peer_t) {
-  Evaluation e;
-  const CastHit h = impl.cast(c.a, c.b);
-  e.prod_hit = h.hit;
-  e.prod_text = describe(h);
-  e.valid = valid_case(c);
-  if (!e.valid) {
-    e.truth_text = "invalid input: no hit";
-    e.disagree = h.hit;
-    return e;
-  }
+void hold_to_truth(Evaluation& e, const SegmentCylinderCase& c, const CastHit& h, const double* peer_t) {
   const Tolerances tol = tolerances(kId);
-  e.scale = oracle::case_scale(c.a, c.b);
   const oracle::QSegment qs = oracle::to_q(c.a);
   const oracle::QCylinder qc = oracle::to_q(c.b);
   const oracle::CastTruth truth = oracle::solve_cast(qs, qc);
@@ -108,12 +90,12 @@ Evaluation evaluate(const SegmentCylinderCase& c, const CastSegmentCylinderImpl&
   if (e.disagree) {
     e.excused = e.near_boundary;
     e.margin = disagreement_margin(qs, qc, h.hit, e.scale);
-    return e;
+    return;
   }
-  if (!h.hit || !truth.hit) return e;
+  if (!h.hit || !truth.hit) return;
   if (!finite_hit(h) || !(h.t >= 0 && h.t <= 1)) {
     e.extra_failure = "t outside [0, 1] or non-finite output";
-    return e;
+    return;
   }
   // Production's hit point, exactly: S(t) for its own t.
   const QVec x = qs.a + oracle::to_q(h.t) * (qs.b - qs.a);
@@ -136,23 +118,12 @@ Evaluation evaluate(const SegmentCylinderCase& c, const CastSegmentCylinderImpl&
   // point must be S(t).
   const QVec dp = oracle::to_q(h.point) - x;
   e.point_err = rel_up(oracle::sqrt_interval(oracle::dot(dp, dp)).hi, e.scale);
-  return e;
-}
-
-CheckResult check_oracle(const SegmentCylinderCase& c, const CastSegmentCylinderImpl& impl) {
-  return judge(kId, evaluate(c, impl));
 }
 
 CheckResult check_consistency(const SegmentCylinderCase& c, const CastSegmentCylinderImpl& impl) {
   const CastHit h = impl.cast(c.a, c.b);
-  if (!h.hit) return std::nullopt;
-  if (!finite_hit(h)) return Failure{"consistency-finite", describe(h)};
-  if (!(h.t >= 0 && h.t <= 1)) return Failure{"consistency-t-range", describe(h)};
-  if (h.starts_inside && (h.t != 0 || !(h.normal == Vec3{})))
-    return Failure{"consistency-starts-inside", "starts_inside needs t == 0 and a zero normal: " + describe(h)};
-  if (!h.starts_inside && std::fabs(length(h.normal) - 1) > tolerances(kId).unit)
-    return Failure{"consistency-unit-normal", describe(h)};
-  if (!valid_case(c)) return std::nullopt;
+  if (auto f = consistent_hit(kId, h)) return f;
+  if (!h.hit || !valid_case(c)) return std::nullopt;
   const double scale = oracle::case_scale(c.a, c.b);
   const Vec3 s = c.a.a + h.t * (c.a.b - c.a.a);
   if (length(h.point - s) > tolerances(kId).point * scale)
@@ -167,47 +138,32 @@ CheckResult check_symmetry(const SegmentCylinderCase& c, const CastSegmentCylind
 }
 
 CheckResult check_metamorphic(const SegmentCylinderCase& c, int move, const CastSegmentCylinderImpl& impl) {
-  if (!valid_case(c)) return std::nullopt;
-  const moves::Move m{move};
-  if (!moves::applicable(c, move)) return std::nullopt;
-  const SegmentCylinderCase t{moves::apply(m, c.a), moves::apply(m, c.b)};
-  // A rounded move can destroy a degenerate shape (an axis one ulp long
-  // collapses to p == q): the moved case is then no longer the same solid.
-  if (!valid_case(t)) return std::nullopt;
-  const std::string what = std::string("metamorphic-") + move_name(move);
-  // On a cylinder thinner than the scene's rounding level (r = 0: a
-  // segment) the side normal is any perpendicular: a free choice.
-  if (m.exact()) return exact_move_kept(what, m, c, t, impl, !(c.b.r > 64 * 0x1p-52 * oracle::case_scale(c.a, c.b)));
-  if (move != 5) return same_verdict(what.c_str(), c, t, impl);
   // The rigid motion moves the solid by rigid_slack: a change of verdict is a
-  // failure only when the original case is certain beyond band + slack.
-  const CastHit h0 = impl.cast(c.a, c.b), h1 = impl.cast(t.a, t.b);
-  if (h0.hit == h1.hit) return std::nullopt;
-  // The moved coordinates round at the moved scene's magnitude (the motion
+  // failure only when the original case is certain beyond band + slack. The
+  // moved coordinates round at the moved scene's magnitude (the motion
   // translates), so the slack is taken at the larger of the two scales.
-  const double scale = oracle::case_scale(c.a, c.b);
-  const double moved_scale = std::max(scale, oracle::case_scale(t.a, t.b));
-  const Q delta = times_scale(tolerances(kId).verdict, scale) + times_scale(moves::rigid_slack(c.b), moved_scale);
-  const oracle::QSegment qs = oracle::to_q(c.a);
-  const oracle::QCylinder qc = oracle::to_q(c.b);
-  const bool truth = oracle::solve_cast(qs, qc).hit;
-  const bool certain = truth ? meets_adjusted(qs, qc, delta, -1) : !meets_adjusted(qs, qc, delta, +1);
-  if (!certain) return std::nullopt;
-  return Failure{what, "verdict changed beyond the band and the motion's rounding: " + describe(h0) + " vs " + describe(h1)};
+  auto rigid_certain = [&](const SegmentCylinderCase& t, const std::string& what, const CastHit& h0,
+                           const CastHit& h1) -> CheckResult {
+    const double scale = oracle::case_scale(c.a, c.b);
+    const double moved_scale = std::max(scale, oracle::case_scale(t.a, t.b));
+    const Q delta = times_scale(tolerances(kId).verdict, scale) + times_scale(moves::rigid_slack(c.b), moved_scale);
+    const oracle::QSegment qs = oracle::to_q(c.a);
+    const oracle::QCylinder qc = oracle::to_q(c.b);
+    const bool truth = oracle::solve_cast(qs, qc).hit;
+    const bool certain = truth ? meets_adjusted(qs, qc, delta, -1) : !meets_adjusted(qs, qc, delta, +1);
+    if (!certain) return std::nullopt;
+    return Failure{what, "verdict changed beyond the band and the motion's rounding: " + describe(h0) + " vs " + describe(h1)};
+  };
+  return moving_metamorphic(c, move, impl, rigid_certain);
 }
 
 CheckResult check_monotone(const SegmentCylinderCase& c, const CastSegmentCylinderImpl& impl) {
   if (!valid_case(c) || !impl.cast(c.a, c.b).hit) return std::nullopt;
   // A hit that becomes a miss in a larger problem is a failure unless one of
   // the two cases is within the band of touching.
-  auto lost = [&](const SegmentCylinderCase& bigger) {
-    return !impl.cast(bigger.a, bigger.b).hit && !evaluate(c, impl).near_boundary && !evaluate(bigger, impl).near_boundary;
-  };
-  const double wider = c.b.r * 2 + 0x1p-20 * length(c.b.q - c.b.p);
-  if (std::isfinite(wider) && lost({c.a, {c.b.p, c.b.q, wider}}))
-    return Failure{"monotone-cylinder-radius", "hit with radius " + fmt("%.17g", c.b.r) + " but not with " + fmt("%.17g", wider)};
+  if (auto f = cylinder_b_radius_kept(c, impl)) return f;
   const Vec3 far = c.a.a + 2.0 * (c.a.b - c.a.a);
-  if (is_finite(far) && lost({{c.a.a, far}, c.b}))
+  if (is_finite(far) && hit_lost(c, {{c.a.a, far}, c.b}, impl))
     return Failure{"monotone-segment-length", "hit, but the segment extended to twice its length misses"};
   return std::nullopt;
 }

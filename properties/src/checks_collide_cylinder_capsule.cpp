@@ -25,33 +25,12 @@
 namespace geomcheck {
 
 // The spec of collide_cylinder_capsule: cylinder/capsule: exact verdict; the true depth while the capsule's segment stays outside the cylinder.
-// Claims (exact verdict, depth, point in both, the normal, the truth), the
-// default campaign's cases and the known-wrong variants (teeth.cpp).
-template <>
-const QuerySpec<QueryId::collide_cylinder_capsule>& spec_of<QueryId::collide_cylinder_capsule>() {
-  static const QuerySpec<QueryId::collide_cylinder_capsule> spec{{true, Claims::Depth::Shallow, true, "unit, from the cylinder towards the capsule", "certified engine (capsule = segment + ball): exact verdict, certified signed distance and penetration depth"}, 10000, {&teeth::kCapsuleCapsule}};
-  return spec;
-}
+GEOMCHECK_SPEC(collide_cylinder_capsule, 10000,
+               (Claims{true, Claims::Depth::Shallow, true, "unit, from the cylinder towards the capsule", "certified engine (capsule = segment + ball): exact verdict, certified signed distance and penetration depth"}),
+               &teeth::kCapsuleCapsule)
 
-namespace {
-
-constexpr QueryId kId = QueryId::collide_cylinder_capsule;
-
-
-double scale_of(const CylinderCapsuleCase& c) {
-  const double m = std::max({max_abs(c.a.p), max_abs(c.a.q), c.a.r, oracle::extent(c.a.p, c.a.q), max_abs(c.b.p),
-                             max_abs(c.b.q), c.b.r, oracle::extent(c.b.p, c.b.q)});
-  return m > 0 ? m : 1.0;
-}
-
-}  // namespace
-
-Evaluation evaluate(const CylinderCapsuleCase& c, const CylinderCapsuleImpl& impl, const Contact* peer) {
-  Evaluation e;
-  Contact ct;
-  if (!start_evaluation(e, c, impl, ct)) return e;
+void hold_to_truth(Evaluation& e, const CylinderCapsuleCase& c, const Contact& ct, const Contact* peer) {
   const Tolerances tol = tolerances(kId);
-  e.scale = scale_of(c);
   const oracle::ConvexShape cyl = oracle::make_shape(c.a);
   const QVec p = oracle::to_q(c.b.p), q = oracle::to_q(c.b.q);
   const Q r = oracle::to_q(c.b.r);
@@ -86,11 +65,6 @@ Evaluation evaluate(const CylinderCapsuleCase& c, const CylinderCapsuleImpl& imp
   };
   score(ct, e.unit_err, e.depth_err, e.normal_err, e.point_err);
   if (peer) score(*peer, e.peer.unit_err, e.peer.depth_err, e.peer.normal_err, e.peer.point_err);
-  return e;
-}
-
-CheckResult check_oracle(const CylinderCapsuleCase& c, const CylinderCapsuleImpl& impl) {
-  return judge(kId, evaluate(c, impl));
 }
 
 CheckResult check_consistency(const CylinderCapsuleCase& c, const CylinderCapsuleImpl& impl) {
@@ -98,8 +72,7 @@ CheckResult check_consistency(const CylinderCapsuleCase& c, const CylinderCapsul
   // (first order in its angle for a capsule), in the shallow and the deep
   // branch alike: both bounds together.
   const bool exact = valid_case(c);
-  return consistent_contact(kId, c, impl, exact, exact ? scale_of(c) : 1.0,
-                            tolerances(kId).depth + tolerances(kId).normal);
+  return consistent_contact(kId, c, impl, exact, tolerances(kId).depth + tolerances(kId).normal);
 }
 
 namespace {
@@ -109,7 +82,7 @@ namespace {
 CheckResult same_answer(const char* what, const CylinderCapsuleCase& c0, const CylinderCapsuleCase& c1,
                         const CylinderCapsuleImpl& impl) {
   auto claimed = [&](const CylinderCapsuleCase& k) { return !std::isnan(evaluate(k, impl).depth_err); };
-  return geomcheck::same_answer(what, c0, c1, impl, scale_of(c0), 2 * tolerances(kId).depth, claimed);
+  return geomcheck::same_answer(what, c0, c1, impl, 2 * tolerances(kId).depth, claimed);
 }
 }  // namespace
 
@@ -127,7 +100,7 @@ CheckResult check_metamorphic(const CylinderCapsuleCase& c, int move, const Cyli
     // contact point on the axis line.
     const Vec3 d = c.a.q - c.a.p;
     const double rho = length(cross(a.ct.point - c.a.p, d)) / length(d);
-    const bool free_normal = !(rho > 64 * 0x1p-52 * scale_of(c));
+    const bool free_normal = !(rho > 64 * 0x1p-52 * oracle::case_scale(c.a, c.b));
     const bool same_but_normal = a.m.pt(a.ct.point) == a.ct2.point && a.m.len(a.ct.depth) == a.ct2.depth;
     if (same_but_normal && (free_normal || a.m.vec(a.ct.normal) == a.ct2.normal)) return std::nullopt;
     // A deep contact's normal is the best of a few candidate directions:
@@ -146,9 +119,7 @@ CheckResult check_monotone(const CylinderCapsuleCase& c, const CylinderCapsuleIm
   // move with the radii, so production is monotone only outside the band:
   // an overlap lost by a bigger radius is a failure unless one of the two
   // cases is within the band of touching.
-  auto lost = [&](const CylinderCapsuleCase& bigger) {
-    return !impl.overlap(bigger.a, bigger.b) && !evaluate(c, impl).near_boundary && !evaluate(bigger, impl).near_boundary;
-  };
+  auto lost = [&](const CylinderCapsuleCase& bigger) { return overlap_lost(c, bigger, impl); };
   const double grow[] = {std::nextafter(c.b.r, INFINITY), c.b.r * 2 + 1e-300, c.b.r + 0.5 * c.a.r};
   for (double r : grow) {
     if (std::isfinite(r) && lost({c.a, Capsule{c.b.p, c.b.q, r}}))

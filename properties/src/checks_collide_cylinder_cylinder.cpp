@@ -35,24 +35,11 @@
 namespace geomcheck {
 
 // The spec of collide_cylinder_cylinder: cylinder/cylinder: exact verdict; a consistent contact (depth = overlap along the normal).
-// Claims (exact verdict, depth, point in both, the normal, the truth), the
-// default campaign's cases and the known-wrong variants (teeth.cpp).
-template <>
-const QuerySpec<QueryId::collide_cylinder_cylinder>& spec_of<QueryId::collide_cylinder_cylinder>() {
-  static const QuerySpec<QueryId::collide_cylinder_cylinder> spec{{true, Claims::Depth::UpperBound, true, "unit, from the first cylinder towards the second: a consistent contact, not the minimal translation", "certified engine: exact verdict, certified signed distance, EPA penetration depth as a lower bound of the depth"}, 10000, {&teeth::kCylinderNoPlanes, &teeth::kCylinderNoParallelBranch, &teeth::kCylinderPlainFrame}};
-  return spec;
-}
+GEOMCHECK_SPEC(collide_cylinder_cylinder, 10000,
+               (Claims{true, Claims::Depth::UpperBound, true, "unit, from the first cylinder towards the second: a consistent contact, not the minimal translation", "certified engine: exact verdict, certified signed distance, EPA penetration depth as a lower bound of the depth"}),
+               &teeth::kCylinderNoPlanes, &teeth::kCylinderNoParallelBranch, &teeth::kCylinderPlainFrame)
 
 namespace {
-
-constexpr QueryId kId = QueryId::collide_cylinder_cylinder;
-
-
-double scale_of(const CylinderCylinderCase& c) {
-  const double m = std::max({max_abs(c.a.p), max_abs(c.a.q), c.a.r, oracle::extent(c.a.p, c.a.q), max_abs(c.b.p),
-                             max_abs(c.b.q), c.b.r, oracle::extent(c.b.p, c.b.q)});
-  return m > 0 ? m : 1.0;
-}
 
 // The two axes in one plane, decided exactly: orient3d(p_A, q_A, p_B, q_B)
 // is zero (parallel axes always are). The reflection in that plane maps
@@ -118,11 +105,7 @@ Score score_contact(const Contact& k, bool truth_hit, Verdict verdict, const ora
 
 }  // namespace
 
-Evaluation evaluate(const CylinderCylinderCase& c, const CylinderCylinderImpl& impl, const Contact* peer) {
-  Evaluation e;
-  Contact ct;
-  if (!start_evaluation(e, c, impl, ct)) return e;
-  e.scale = scale_of(c);
+void hold_to_truth(Evaluation& e, const CylinderCylinderCase& c, const Contact& ct, const Contact* peer) {
   const Tolerances tol = tolerances(kId);
   const oracle::ConvexShape sa = oracle::make_shape(c.a), sb = oracle::make_shape(c.b);
   const Q band = times_scale(tol.verdict, e.scale);
@@ -144,28 +127,16 @@ Evaluation evaluate(const CylinderCylinderCase& c, const CylinderCylinderImpl& i
     e.peer.unit_err = p.unit, e.peer.depth_err = p.depth, e.peer.point_err = p.point;
   }
   if (pd && pd->overlapping) e.truth_text += "; penetration depth " + oracle::to_string(pd->depth);
-  return e;
 }
 
 double depth_ratio(const CylinderCylinderCase& c, const CylinderCylinderImpl& impl) {
   return evaluate(c, impl).depth_ratio;
 }
 
-CheckResult check_oracle(const CylinderCylinderCase& c, const CylinderCylinderImpl& impl) { return judge(kId, evaluate(c, impl)); }
-
 CheckResult check_consistency(const CylinderCylinderCase& c, const CylinderCylinderImpl& impl) {
   const bool exact = valid_case(c);
-  return consistent_contact(kId, c, impl, exact, exact ? scale_of(c) : 1.0, tolerances(kId).depth);
+  return consistent_contact(kId, c, impl, exact, tolerances(kId).depth);
 }
-
-namespace {
-// Same solid, other representation (contact_checks.hpp).
-CheckResult same_answer(const char* what, const CylinderCylinderCase& c0, const CylinderCylinderCase& c1,
-                        const CylinderCylinderImpl& impl) {
-  return geomcheck::same_answer(what, c0, c1, impl, scale_of(c0), 2 * tolerances(kId).depth,
-                                [](const CylinderCylinderCase&) { return true; });
-}
-}  // namespace
 
 CheckResult check_symmetry(const CylinderCylinderCase& c, const CylinderCylinderImpl& impl) {
   const Tolerances tol = tolerances(kId);
@@ -181,7 +152,7 @@ CheckResult check_symmetry(const CylinderCylinderCase& c, const CylinderCylinder
       return Failure{"symmetry-argument-order",
                      "verdict changed outside the band: " + describe(ct, ov) + " vs swapped " + describe(sw, sov)};
   } else if (ov && ct.hit && sw.hit && valid_case(c)) {
-    const double scale = scale_of(c);
+    const double scale = oracle::case_scale(c.a, c.b);
     const double d = std::fabs(ct.depth - sw.depth) / scale;
     if (!(d <= 2 * tol.depth))
       return Failure{"symmetry-argument-order-depth",
@@ -196,9 +167,11 @@ CheckResult check_symmetry(const CylinderCylinderCase& c, const CylinderCylinder
     }
   }
   if (!valid_case(c)) return std::nullopt;
-  if (auto f = same_answer("symmetry-caps-swapped-a", c, {{c.a.q, c.a.p, c.a.r}, c.b}, impl)) return f;
-  if (auto f = same_answer("symmetry-caps-swapped-b", c, {c.a, {c.b.q, c.b.p, c.b.r}}, impl)) return f;
-  return same_answer("symmetry-caps-swapped-both", c, {{c.a.q, c.a.p, c.a.r}, {c.b.q, c.b.p, c.b.r}}, impl);
+  // Same solid, other representation (contact_checks.hpp).
+  const double bound = 2 * tol.depth;
+  if (auto f = same_answer("symmetry-caps-swapped-a", c, {{c.a.q, c.a.p, c.a.r}, c.b}, impl, bound)) return f;
+  if (auto f = same_answer("symmetry-caps-swapped-b", c, {c.a, {c.b.q, c.b.p, c.b.r}}, impl, bound)) return f;
+  return same_answer("symmetry-caps-swapped-both", c, {{c.a.q, c.a.p, c.a.r}, {c.b.q, c.b.p, c.b.r}}, impl, bound);
 }
 
 CheckResult check_metamorphic(const CylinderCylinderCase& c, int move, const CylinderCylinderImpl& impl) {
@@ -211,7 +184,7 @@ CheckResult check_metamorphic(const CylinderCylinderCase& c, int move, const Cyl
       const QInterval along =
           overlap_along(oracle::make_shape(t.a), oracle::make_shape(t.b), oracle::to_q(a.m.vec(a.ct.normal)));
       return std::isfinite(oracle::to_double(along.hi)) &&
-             rel_error(along, a.ct2.depth, scale_of(t)) <= 2 * tolerances(kId).depth;
+             rel_error(along, a.ct2.depth, oracle::case_scale(t.a, t.b)) <= 2 * tolerances(kId).depth;
     };
     if ((move == 0 || move == 1) && axes_coplanar(c) && !(a.m.vec(a.ct.normal) == a.ct2.normal)) {
       // A reflection of a scene symmetric in the plane of the two axes: the
@@ -221,7 +194,7 @@ CheckResult check_metamorphic(const CylinderCylinderCase& c, int move, const Cyl
       if (!(a.m.pt(a.ct.point) == a.ct2.point))
         return Failure{a.what, "point not bit-identical (axes in one plane): " + describe(a.ct, a.ov) + " vs " +
                                  describe(a.ct2, a.ov2)};
-      const double d = std::fabs(a.m.len(a.ct.depth) - a.ct2.depth) / scale_of(c);
+      const double d = std::fabs(a.m.len(a.ct.depth) - a.ct2.depth) / oracle::case_scale(c.a, c.b);
       if (!(d <= 2 * tolerances(kId).depth))
         return Failure{a.what + "-depth", fmt("depth differs by %.3g * scale (axes in one plane); ", d) +
                                             describe(a.ct, a.ov) + " vs " + describe(a.ct2, a.ov2)};
@@ -263,10 +236,7 @@ CheckResult check_metamorphic(const CylinderCylinderCase& c, int move, const Cyl
 CheckResult check_monotone(const CylinderCylinderCase& c, const CylinderCylinderImpl& impl) {
   if (!valid_case(c) || !impl.overlap(c.a, c.b)) return std::nullopt;
   // A superset never loses the overlap, except within the band of touching.
-  auto lost = [&](const CylinderCylinderCase& bigger) {
-    return !impl.overlap(bigger.a, bigger.b) && !evaluate(c, impl).near_boundary &&
-           !evaluate(bigger, impl).near_boundary;
-  };
+  auto lost = [&](const CylinderCylinderCase& bigger) { return overlap_lost(c, bigger, impl); };
   for (int which = 0; which < 2; ++which) {
     const Cylinder& k = which == 0 ? c.a : c.b;
     auto with = [&](const Cylinder& g) { return which == 0 ? CylinderCylinderCase{g, c.b} : CylinderCylinderCase{c.a, g}; };

@@ -26,24 +26,11 @@
 namespace geomcheck {
 
 // The spec of collide_cylinder_obb: cylinder/oriented box: exact verdict; the penetration depth over the Minkowski patches.
-// Claims (exact verdict, depth, point in both, the normal, the truth), the
-// default campaign's cases and the known-wrong variants (teeth.cpp).
-template <>
-const QuerySpec<QueryId::collide_cylinder_obb>& spec_of<QueryId::collide_cylinder_obb>() {
-  static const QuerySpec<QueryId::collide_cylinder_obb> spec{{true, Claims::Depth::Penetration, true, "unit, from the cylinder towards the box: the minimal translation", "certified engine: exact verdict, certified signed distance, EPA penetration depth enclosure"}, 10000, {&teeth::kBoxAsCapsule, &teeth::kBoxTalkRays}};
-  return spec;
-}
+GEOMCHECK_SPEC(collide_cylinder_obb, 10000,
+               (Claims{true, Claims::Depth::Penetration, true, "unit, from the cylinder towards the box: the minimal translation", "certified engine: exact verdict, certified signed distance, EPA penetration depth enclosure"}),
+               &teeth::kBoxAsCapsule, &teeth::kBoxTalkRays)
 
 namespace {
-
-constexpr QueryId kId = QueryId::collide_cylinder_obb;
-
-
-double scale_of(const CylinderObbCase& c) {
-  const double m = std::max({max_abs(c.a.p), max_abs(c.a.q), c.a.r, oracle::extent(c.a.p, c.a.q), max_abs(c.b.c),
-                             max_abs(c.b.e)});
-  return m > 0 ? m : 1.0;
-}
 
 // An upper bound of the distance from x to the box, exactly: x's
 // coordinates along the stored axes (Cramer's rule in rationals; the axes
@@ -75,56 +62,36 @@ bool obb_in_contract(const Obb& b) {
   return true;
 }
 
-Evaluation evaluate(const CylinderObbCase& c, const CylinderObbImpl& impl, const Contact* peer) {
-  Evaluation e;
-  Contact ct;
-  if (!start_evaluation(e, c, impl, ct)) return e;
-  e.scale = scale_of(c);
+void hold_to_truth(Evaluation& e, const CylinderObbCase& c, const Contact& ct, const Contact* peer) {
   if (!obb_in_contract(c.b)) {
     // Outside production's contract: no verdict is owed (robust checks only).
     e.truth_text = "box axes not orthonormal: outside the contract";
     e.near_boundary = true;
-    return e;
+    return;
   }
-  const Tolerances tol = tolerances(kId);
-  const oracle::ConvexShape cyl = oracle::make_shape(c.a), box = oracle::make_shape(c.b);
-  const Q band = times_scale(tol.verdict, e.scale);
-  const PolytopeTruth truth = polytope_truth(cyl, box, band);
-  settle_verdict(e, truth, band);
-  // Production's contact and the peer's against the same truth (EPA once).
-  const oracle::QCylinder qcyl = oracle::to_q(c.a);
-  const std::function<Q(Vec3)> outside_b = [&](Vec3 x) { return oracle::contains(box, oracle::to_q(x)) ? Q(0) : box_distance_up(c.b, x); };
-  score_polytope_contacts(e, ct, peer, truth, qcyl, cyl, box, tol.depth, outside_b);
-  return e;
+  hold_to_polytope_truth(e, c, ct, peer, [&](const oracle::ConvexShape& box, Vec3 x) {
+    return oracle::contains(box, oracle::to_q(x)) ? Q(0) : box_distance_up(c.b, x);
+  });
 }
-
-CheckResult check_oracle(const CylinderObbCase& c, const CylinderObbImpl& impl) { return judge(kId, evaluate(c, impl)); }
 
 CheckResult check_consistency(const CylinderObbCase& c, const CylinderObbImpl& impl) {
   const bool exact = valid_case(c) && obb_in_contract(c.b);
-  return consistent_contact(kId, c, impl, exact, exact ? scale_of(c) : 1.0, tolerances(kId).depth);
+  return consistent_contact(kId, c, impl, exact, tolerances(kId).depth);
 }
-
-namespace {
-// Same solid, other representation (contact_checks.hpp).
-CheckResult same_answer(const char* what, const CylinderObbCase& c0, const CylinderObbCase& c1,
-                        const CylinderObbImpl& impl) {
-  return geomcheck::same_answer(what, c0, c1, impl, scale_of(c0), 2 * tolerances(kId).depth + tolerances(kId).normal,
-                                [](const CylinderObbCase&) { return true; });
-}
-}  // namespace
 
 CheckResult check_symmetry(const CylinderObbCase& c, const CylinderObbImpl& impl) {
   if (auto f = argument_order(c, impl)) return f;
+  // Same solid, other representation (contact_checks.hpp).
+  const double bound = 2 * tolerances(kId).depth + tolerances(kId).normal;
   if (!valid_case(c) || !obb_in_contract(c.b)) return std::nullopt;
-  if (auto f = same_answer("symmetry-caps-swapped", c, {{c.a.q, c.a.p, c.a.r}, c.b}, impl)) return f;
+  if (auto f = same_answer("symmetry-caps-swapped", c, {{c.a.q, c.a.p, c.a.r}, c.b}, impl, bound)) return f;
   // The same box with its axes cycled (extents with them), and with one
   // axis negated: exactly the same set.
   const Obb& b = c.b;
   const Obb cycled{b.c, {{b.axes[1], b.axes[2], b.axes[0]}}, Vec3{b.e.y, b.e.z, b.e.x}};
-  if (auto f = same_answer("symmetry-box-axes-cycled", c, {c.a, cycled}, impl)) return f;
+  if (auto f = same_answer("symmetry-box-axes-cycled", c, {c.a, cycled}, impl, bound)) return f;
   const Obb negated{b.c, {{-b.axes[0], b.axes[1], b.axes[2]}}, b.e};
-  return same_answer("symmetry-box-axis-negated", c, {c.a, negated}, impl);
+  return same_answer("symmetry-box-axis-negated", c, {c.a, negated}, impl, bound);
 }
 
 CheckResult check_metamorphic(const CylinderObbCase& c, int move, const CylinderObbImpl& impl) {
@@ -136,14 +103,8 @@ CheckResult check_metamorphic(const CylinderObbCase& c, int move, const Cylinder
 CheckResult check_monotone(const CylinderObbCase& c, const CylinderObbImpl& impl) {
   if (!valid_case(c) || !obb_in_contract(c.b) || !impl.overlap(c.a, c.b)) return std::nullopt;
   // A superset never loses the overlap, except within the band of touching.
-  auto lost = [&](const CylinderObbCase& bigger) {
-    return !impl.overlap(bigger.a, bigger.b) && !evaluate(c, impl).near_boundary &&
-           !evaluate(bigger, impl).near_boundary;
-  };
-  const double rc[] = {std::nextafter(c.a.r, INFINITY), c.a.r * 2 + 1e-300};
-  for (double r : rc)
-    if (std::isfinite(r) && lost({Cylinder{c.a.p, c.a.q, r}, c.b}))
-      return Failure{"monotone-cylinder-radius", fmt("overlap with cylinder radius %.17g but not with %.17g", c.a.r, r)};
+  if (auto f = cylinder_a_radius_kept(c, impl)) return f;
+  auto lost = [&](const CylinderObbCase& bigger) { return overlap_lost(c, bigger, impl); };
   for (int i = 0; i < 3; ++i) {
     Obb b = c.b;
     b.e[i] = std::nextafter(b.e[i], INFINITY);

@@ -31,24 +31,11 @@
 namespace geomcheck {
 
 // The spec of collide_cylinder_triangle: cylinder/triangle: exact verdict; the penetration depth over the Minkowski patches.
-// Claims (exact verdict, depth, point in both, the normal, the truth), the
-// default campaign's cases and the known-wrong variants (teeth.cpp).
-template <>
-const QuerySpec<QueryId::collide_cylinder_triangle>& spec_of<QueryId::collide_cylinder_triangle>() {
-  static const QuerySpec<QueryId::collide_cylinder_triangle> spec{{true, Claims::Depth::Penetration, true, "unit, from the cylinder towards the triangle: the minimal translation", "certified engine: exact verdict, certified signed distance, EPA penetration depth enclosure"}, 10000, {&teeth::kTriangleNoCapStage}};
-  return spec;
-}
+GEOMCHECK_SPEC(collide_cylinder_triangle, 10000,
+               (Claims{true, Claims::Depth::Penetration, true, "unit, from the cylinder towards the triangle: the minimal translation", "certified engine: exact verdict, certified signed distance, EPA penetration depth enclosure"}),
+               &teeth::kTriangleNoCapStage)
 
 namespace {
-
-constexpr QueryId kId = QueryId::collide_cylinder_triangle;
-
-
-double scale_of(const CylinderTriangleCase& c) {
-  const double m = std::max({max_abs(c.a.p), max_abs(c.a.q), c.a.r, oracle::extent(c.a.p, c.a.q), max_abs(c.b.a),
-                             max_abs(c.b.b), max_abs(c.b.c)});
-  return m > 0 ? m : 1.0;
-}
 
 bool same_point(const QVec& u, const QVec& v) { return u.x == v.x && u.y == v.y && u.z == v.z; }
 
@@ -110,49 +97,28 @@ bool scene_coplanar(const CylinderTriangleCase& c) {
 
 }  // namespace
 
-Evaluation evaluate(const CylinderTriangleCase& c, const CylinderTriangleImpl& impl, const Contact* peer) {
-  Evaluation e;
-  Contact ct;
-  if (!start_evaluation(e, c, impl, ct)) return e;
-  e.scale = scale_of(c);
+void hold_to_truth(Evaluation& e, const CylinderTriangleCase& c, const Contact& ct, const Contact* peer) {
   // Every finite triangle is in the contract (degenerate ones included).
-  const Tolerances tol = tolerances(kId);
-  const oracle::ConvexShape cyl = oracle::make_shape(c.a), tri = oracle::make_shape(c.b);
-  const Q band = times_scale(tol.verdict, e.scale);
-  const PolytopeTruth truth = polytope_truth(cyl, tri, band);
-  settle_verdict(e, truth, band);
-  // Production's contact and the peer's against the same truth (EPA once).
-  const oracle::QCylinder qcyl = oracle::to_q(c.a);
-  const std::function<Q(Vec3)> outside_b = [&](Vec3 x) { return triangle_distance_up(c.b, x); };
-  score_polytope_contacts(e, ct, peer, truth, qcyl, cyl, tri, tol.depth, outside_b);
-  return e;
+  hold_to_polytope_truth(e, c, ct, peer,
+                         [&](const oracle::ConvexShape&, Vec3 x) { return triangle_distance_up(c.b, x); });
 }
-
-CheckResult check_oracle(const CylinderTriangleCase& c, const CylinderTriangleImpl& impl) { return judge(kId, evaluate(c, impl)); }
 
 CheckResult check_consistency(const CylinderTriangleCase& c, const CylinderTriangleImpl& impl) {
   const bool exact = valid_case(c);
-  return consistent_contact(kId, c, impl, exact, exact ? scale_of(c) : 1.0, tolerances(kId).depth);
+  return consistent_contact(kId, c, impl, exact, tolerances(kId).depth);
 }
-
-namespace {
-// Same solid, other representation (contact_checks.hpp).
-CheckResult same_answer(const char* what, const CylinderTriangleCase& c0, const CylinderTriangleCase& c1,
-                        const CylinderTriangleImpl& impl) {
-  return geomcheck::same_answer(what, c0, c1, impl, scale_of(c0), 2 * tolerances(kId).depth + tolerances(kId).normal,
-                                [](const CylinderTriangleCase&) { return true; });
-}
-}  // namespace
 
 CheckResult check_symmetry(const CylinderTriangleCase& c, const CylinderTriangleImpl& impl) {
   if (auto f = argument_order(c, impl)) return f;
+  // Same solid, other representation (contact_checks.hpp).
+  const double bound = 2 * tolerances(kId).depth + tolerances(kId).normal;
   if (!valid_case(c)) return std::nullopt;
-  if (auto f = same_answer("symmetry-caps-swapped", c, {{c.a.q, c.a.p, c.a.r}, c.b}, impl)) return f;
+  if (auto f = same_answer("symmetry-caps-swapped", c, {{c.a.q, c.a.p, c.a.r}, c.b}, impl, bound)) return f;
   // The same triangle with its vertices rotated, and reversed (the other
   // orientation): exactly the same set.
   const Triangle& t = c.b;
-  if (auto f = same_answer("symmetry-triangle-rotated", c, {c.a, Triangle{t.b, t.c, t.a}}, impl)) return f;
-  return same_answer("symmetry-triangle-reversed", c, {c.a, Triangle{t.a, t.c, t.b}}, impl);
+  if (auto f = same_answer("symmetry-triangle-rotated", c, {c.a, Triangle{t.b, t.c, t.a}}, impl, bound)) return f;
+  return same_answer("symmetry-triangle-reversed", c, {c.a, Triangle{t.a, t.c, t.b}}, impl, bound);
 }
 
 CheckResult check_metamorphic(const CylinderTriangleCase& c, int move, const CylinderTriangleImpl& impl) {
@@ -165,7 +131,7 @@ CheckResult check_metamorphic(const CylinderTriangleCase& c, int move, const Cyl
     if (!(a.m.pt(a.ct.point) == a.ct2.point))
       return Failure{a.what, "point not bit-identical (axis in the triangle's plane): " + describe(a.ct, a.ov) +
                                  " vs " + describe(a.ct2, a.ov2)};
-    const double d = std::fabs(a.m.len(a.ct.depth) - a.ct2.depth) / scale_of(c);
+    const double d = std::fabs(a.m.len(a.ct.depth) - a.ct2.depth) / oracle::case_scale(c.a, c.b);
     if (!(d <= 2 * tolerances(kId).depth))
       return Failure{a.what + "-depth", fmt("depth differs by %.3g * scale (axis in the triangle's plane); ", d) +
                                             describe(a.ct, a.ov) + " vs " + describe(a.ct2, a.ov2)};
@@ -178,14 +144,8 @@ CheckResult check_metamorphic(const CylinderTriangleCase& c, int move, const Cyl
 CheckResult check_monotone(const CylinderTriangleCase& c, const CylinderTriangleImpl& impl) {
   if (!valid_case(c) || !impl.overlap(c.a, c.b)) return std::nullopt;
   // A superset never loses the overlap, except within the band of touching.
-  auto lost = [&](const CylinderTriangleCase& bigger) {
-    return !impl.overlap(bigger.a, bigger.b) && !evaluate(c, impl).near_boundary &&
-           !evaluate(bigger, impl).near_boundary;
-  };
-  const double rc[] = {std::nextafter(c.a.r, INFINITY), c.a.r * 2 + 1e-300};
-  for (double r : rc)
-    if (std::isfinite(r) && lost({Cylinder{c.a.p, c.a.q, r}, c.b}))
-      return Failure{"monotone-cylinder-radius", fmt("overlap with cylinder radius %.17g but not with %.17g", c.a.r, r)};
+  if (auto f = cylinder_a_radius_kept(c, impl)) return f;
+  auto lost = [&](const CylinderTriangleCase& bigger) { return overlap_lost(c, bigger, impl); };
   // A bigger triangle: scaled by 2 about a vertex (which it keeps; the
   // triangle is star-shaped from it, so the original lies inside), each
   // vertex in turn, only where the doubled edges are exact (checked in

@@ -32,25 +32,11 @@
 namespace geomcheck {
 
 // The spec of sweep_sphere_cylinder: a moving sphere swept against a cylinder: the first time of contact.
-// Claims (exact verdict, depth, point in both, the normal, the truth), the
-// default campaign's cases and the known-wrong variants (teeth.cpp).
-template <>
-const QuerySpec<QueryId::sweep_sphere_cylinder>& spec_of<QueryId::sweep_sphere_cylinder>() {
-  static const QuerySpec<QueryId::sweep_sphere_cylinder> spec{{true, Claims::Depth::None, true, "the cylinder's outward surface normal at the contact (zero when the ball starts inside)", "certified engine: the swept ball (a capsule) against the cylinder; t bracketed"}, 10000, {&teeth::kSweepNoCornerStage, &teeth::kSweepTalkRimPoint}};
-  return spec;
-}
+GEOMCHECK_SPEC(sweep_sphere_cylinder, 10000,
+               (Claims{true, Claims::Depth::None, true, "the cylinder's outward surface normal at the contact (zero when the ball starts inside)", "certified engine: the swept ball (a capsule) against the cylinder; t bracketed"}),
+               &teeth::kSweepNoCornerStage, &teeth::kSweepTalkRimPoint)
 
 namespace {
-
-constexpr QueryId kId = QueryId::sweep_sphere_cylinder;
-
-
-double scale_of(const SweepCylinderCase& c) {
-  const Vec3 end = c.a.c + c.a.delta;
-  const double m = std::max({max_abs(c.a.c), is_finite(end) ? max_abs(end) : 0.0, c.a.r, max_abs(c.b.p),
-                             max_abs(c.b.q), c.b.r, oracle::extent(c.b.p, c.b.q)});
-  return m > 0 ? m : 1.0;
-}
 
 // The ball's centre at parameter t, exactly.
 QVec centre_at(const SweepCylinderCase& c, double t) {
@@ -73,19 +59,8 @@ bool path_meets(const SweepCylinderCase& c, double t, const Q& dr) {
 
 }  // namespace
 
-Evaluation evaluate(const SweepCylinderCase& c, const SweepSphereCylinderImpl& impl, const double* peer_t) {
-  Evaluation e;
-  const CastHit h = impl.sweep(c.a, c.b);
-  e.prod_hit = h.hit;
-  e.prod_text = describe(h);
-  e.valid = valid_case(c);
-  if (!e.valid) {
-    e.truth_text = "invalid input: no hit";
-    e.disagree = h.hit;
-    return e;
-  }
+void hold_to_truth(Evaluation& e, const SweepCylinderCase& c, const CastHit& h, const double* peer_t) {
   const Tolerances tol = tolerances(kId);
-  e.scale = scale_of(c);
   const oracle::ConvexShape cyl = oracle::make_shape(c.b);
   const QVec a = oracle::to_q(c.a.c), b = centre_at(c, 1.0);
   const Q r = oracle::to_q(c.a.r);
@@ -121,12 +96,12 @@ Evaluation evaluate(const SweepCylinderCase& c, const SweepSphereCylinderImpl& i
   if (e.disagree) {
     e.margin = std::fabs(e.signed_distance) / e.scale;
     e.excused = e.near_boundary;
-    return e;
+    return;
   }
-  if (!h.hit || !e.truth_hit) return e;
+  if (!h.hit || !e.truth_hit) return;
   if (!finite_hit(h) || !(h.t >= 0 && h.t <= 1)) {
     e.extra_failure = "t outside [0, 1] or non-finite output";
-    return e;
+    return;
   }
   const oracle::QCylinder qc = oracle::to_q(c.b);
   const QVec x = centre_at(c, h.t);
@@ -161,24 +136,14 @@ Evaluation evaluate(const SweepCylinderCase& c, const SweepSphereCylinderImpl& i
   auto abs_hi = [](const QInterval& v) { const Q a = v.lo < 0 ? -v.lo : v.lo, b = v.hi < 0 ? -v.hi : v.hi; return a > b ? a : b; };
   const Q pe = h.starts_inside ? std::max(on_cyl.hi, on_ball.hi) : std::max(abs_hi(on_cyl), abs_hi(on_ball));
   e.point_err = pe > 0 ? rel_up(pe, e.scale) : 0.0;
-  return e;
 }
-
-CheckResult check_oracle(const SweepCylinderCase& c, const SweepSphereCylinderImpl& impl) { return judge(kId, evaluate(c, impl)); }
 
 CheckResult check_consistency(const SweepCylinderCase& c, const SweepSphereCylinderImpl& impl) {
   const CastHit h = impl.sweep(c.a, c.b);
-  if (h.hit) {
-    if (!finite_hit(h)) return Failure{"consistency-finite", describe(h)};
-    if (!(h.t >= 0 && h.t <= 1)) return Failure{"consistency-t-range", describe(h)};
-    if (h.starts_inside && (h.t != 0 || !(h.normal == Vec3{})))
-      return Failure{"consistency-starts-inside", "starts_inside needs t == 0 and a zero normal: " + describe(h)};
-    if (!h.starts_inside && std::fabs(length(h.normal) - 1) > tolerances(kId).unit)
-      return Failure{"consistency-unit-normal", describe(h)};
-  }
+  if (auto f = consistent_hit(kId, h)) return f;
   if (!valid_case(c)) return std::nullopt;
   const Tolerances tol = tolerances(kId);
-  const double scale = scale_of(c);
+  const double scale = oracle::case_scale(c.a, c.b);
   // starts_inside is the sphere query's verdict at t = 0.
   const bool at0 = overlap(c.b, Sphere{c.a.c, c.a.r});
   if (at0 != (h.hit && h.starts_inside))
@@ -211,36 +176,27 @@ CheckResult check_symmetry(const SweepCylinderCase& c, const SweepSphereCylinder
 }
 
 CheckResult check_metamorphic(const SweepCylinderCase& c, int move, const SweepSphereCylinderImpl& impl) {
-  if (!valid_case(c)) return std::nullopt;
-  const moves::Move m{move};
-  if (!moves::applicable(c, move)) return std::nullopt;
-  const SweepCylinderCase t{moves::apply(m, c.a), moves::apply(m, c.b)};
-  if (!valid_case(t)) return std::nullopt;
-  const std::string what = std::string("metamorphic-") + move_name(move);
-  if (m.exact()) return exact_move_kept(what, m, c, t, impl, !(c.b.r > 64 * 0x1p-52 * scale_of(c)));
-  if (move != 5) return same_verdict(what.c_str(), c, t, impl);
-  const CastHit h0 = impl.sweep(c.a, c.b), h1 = impl.sweep(t.a, t.b);
-  if (h0.hit == h1.hit) return std::nullopt;
-  const Evaluation e0 = evaluate(c, impl);
-  const double moved_scale = std::max(e0.scale, scale_of(t));
-  const double slack = tolerances(kId).verdict * e0.scale + moves::rigid_slack(c.b) * moved_scale;
-  if (std::fabs(e0.signed_distance) <= slack || e0.near_boundary) return std::nullopt;
-  return Failure{what, "verdict changed beyond the band and the motion's rounding: " + describe(h0) + " vs " + describe(h1)};
+  // The rigid motion: a change of verdict is a failure beyond the band plus
+  // the motion's rounding (at the larger of the two scales).
+  auto rigid_certain = [&](const SweepCylinderCase& t, const std::string& what, const CastHit& h0,
+                           const CastHit& h1) -> CheckResult {
+    const Evaluation e0 = evaluate(c, impl);
+    const double moved_scale = std::max(e0.scale, oracle::case_scale(t.a, t.b));
+    const double slack = tolerances(kId).verdict * e0.scale + moves::rigid_slack(c.b) * moved_scale;
+    if (std::fabs(e0.signed_distance) <= slack || e0.near_boundary) return std::nullopt;
+    return Failure{what, "verdict changed beyond the band and the motion's rounding: " + describe(h0) + " vs " + describe(h1)};
+  };
+  return moving_metamorphic(c, move, impl, rigid_certain);
 }
 
 CheckResult check_monotone(const SweepCylinderCase& c, const SweepSphereCylinderImpl& impl) {
   if (!valid_case(c) || !impl.sweep(c.a, c.b).hit) return std::nullopt;
-  auto lost = [&](const SweepCylinderCase& bigger) {
-    return !impl.sweep(bigger.a, bigger.b).hit && !evaluate(c, impl).near_boundary && !evaluate(bigger, impl).near_boundary;
-  };
-  const double big = c.a.r * 2 + 0x1p-20 * scale_of(c);
-  if (std::isfinite(big) && lost({{c.a.c, big, c.a.delta}, c.b}))
+  const double big = c.a.r * 2 + 0x1p-20 * oracle::case_scale(c.a, c.b);
+  if (std::isfinite(big) && hit_lost(c, {{c.a.c, big, c.a.delta}, c.b}, impl))
     return Failure{"monotone-ball-radius", "hit with radius " + fmt("%.17g", c.a.r) + " but not with " + fmt("%.17g", big)};
-  const double wider = c.b.r * 2 + 0x1p-20 * length(c.b.q - c.b.p);
-  if (std::isfinite(wider) && lost({c.a, {c.b.p, c.b.q, wider}}))
-    return Failure{"monotone-cylinder-radius", "hit with radius " + fmt("%.17g", c.b.r) + " but not with " + fmt("%.17g", wider)};
+  if (auto f = cylinder_b_radius_kept(c, impl)) return f;
   const MovingSphere longer{c.a.c, c.a.r, 2.0 * c.a.delta};
-  if (is_valid(longer) && lost({longer, c.b}))
+  if (is_valid(longer) && hit_lost(c, {longer, c.b}, impl))
     return Failure{"monotone-sweep-length", "hit, but the sweep extended to twice its length misses"};
   return std::nullopt;
 }

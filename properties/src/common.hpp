@@ -3,6 +3,7 @@
 
 #include <string>
 
+#include "geomcheck/oracles/solids.hpp"
 #include "geomcheck/properties/checks.hpp"
 
 namespace geomcheck {
@@ -46,5 +47,39 @@ double rel_error(const oracle::QInterval& x, double v, double scale);
 /// surface: its distance from the normal cone of the features (caps, side,
 /// rims) within qnear of x; INFINITY when x is near no feature.
 double cylinder_normal_error(const oracle::QCylinder& c, const oracle::QVec& x, Vec3 n, const oracle::Q& qnear);
+
+/// The margin a subject claims (Claims::margin, a multiple of scale); 0 for
+/// production and every subject without claims of its own.
+template <class Impl>
+double claimed_margin(const Impl& impl) {
+  return impl.claims ? impl.claims->margin : 0.0;
+}
+
+/// A subject's claimed margin widens the band of touching on a valid case's
+/// evaluation: within margin * scale of touching the case counts as near
+/// it (the checks that spare the band spare it), and a disagreement there
+/// is excused.
+void widen_band(Evaluation& e, double margin);
+
+/// The subject's answer of a query kind: a contact, or a cast's or sweep's hit.
+template <QueryKind K>
+struct SubjectAnswerOf {
+  using type = CastHit;
+};
+template <>
+struct SubjectAnswerOf<QueryKind::Collide> {
+  using type = Contact;
+};
+
+/// The part of each query's evaluate that is its own (defined in
+/// properties/src/checks_<id>.cpp): after start_evaluation (the subject's
+/// answer, validity, scale; kind_checks.cpp) on a valid case, the truth
+/// computed, the verdict settled and the subject's and the peer's errors
+/// measured into `e`.
+#define GEOMCHECK_X(id, kind, A, B, summary)                                                          \
+  void hold_to_truth(Evaluation& e, const PairCase<A, B>& c, const SubjectAnswerOf<QueryKind::kind>::type& answer, \
+                     const PeerAnswerOf<QueryKind::kind>::type* peer);
+GEOMCHECK_QUERY_LIST(GEOMCHECK_X)
+#undef GEOMCHECK_X
 
 }  // namespace geomcheck

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <optional>
 #include <string>
 
@@ -17,8 +18,8 @@
 namespace geomcheck {
 
 /// The start of a collide query's evaluate: the subject's overlap and
-/// contact into `e` and `ct`; false, with `e` complete, on invalid input
-/// (where the only truth is "no overlap").
+/// contact into `e` and `ct`, and the case's scale into `e`; false, with `e`
+/// complete, on invalid input (where the only truth is "no overlap").
 template <class Case, class Impl>
 bool start_evaluation(Evaluation& e, const Case& c, const Impl& impl, Contact& ct) {
   const bool ov = impl.overlap(c.a, c.b);
@@ -29,6 +30,8 @@ bool start_evaluation(Evaluation& e, const Case& c, const Impl& impl, Contact& c
   if (!e.valid) {
     e.truth_text = "invalid input: no overlap";
     e.disagree = ov || ct.hit;
+  } else {
+    e.scale = oracle::case_scale(c.a, c.b);
   }
   return e.valid;
 }
@@ -68,8 +71,7 @@ void settle_verdict(Evaluation& e, const Truth& truth, const oracle::Q& band, bo
 /// `depth_bound` * scale of the certified overlap of the shapes along the
 /// returned normal.
 template <class Case, class Impl>
-CheckResult consistent_contact(QueryId id, const Case& c, const Impl& impl, bool exact, double scale,
-                               double depth_bound) {
+CheckResult consistent_contact(QueryId id, const Case& c, const Impl& impl, bool exact, double depth_bound) {
   const bool ov = impl.overlap(c.a, c.b);
   const Contact ct = impl.collide(c.a, c.b);
   if (ov != ct.hit) return Failure{"consistency-overlap-vs-collide", describe(ct, ov)};
@@ -81,7 +83,8 @@ CheckResult consistent_contact(QueryId id, const Case& c, const Impl& impl, bool
   const oracle::QInterval along =
       overlap_along(oracle::make_shape(c.a), oracle::make_shape(c.b), oracle::to_q(ct.normal));
   if (!std::isfinite(oracle::to_double(along.hi))) return std::nullopt;  // beyond the doubles: saturated depth
-  const double err = rel_error(along, ct.depth, scale);
+  const double err = rel_error(along, ct.depth, oracle::case_scale(c.a, c.b));
+  depth_bound += claimed_margin(impl);
   if (err > depth_bound)
     return Failure{"consistency-depth-along-normal",
                    fmt("|depth - overlap along normal| = %.3g * scale > %.3g; ", err, depth_bound) + describe(ct, ov)};
@@ -94,8 +97,8 @@ CheckResult consistent_contact(QueryId id, const Case& c, const Impl& impl, bool
 /// scale (c0's scale) wherever `held(c0)` says c0's depth is held to a bound
 /// at all (asked only when they differ).
 template <class Case, class Impl, class Held>
-CheckResult same_answer(const char* what, const Case& c0, const Case& c1, const Impl& impl, double scale,
-                        double depth_bound, Held&& held) {
+CheckResult same_answer(const char* what, const Case& c0, const Case& c1, const Impl& impl, double depth_bound,
+                        Held&& held) {
   const bool o0 = impl.overlap(c0.a, c0.b), o1 = impl.overlap(c1.a, c1.b);
   if (o0 != o1) {
     const Evaluation e0 = evaluate(c0, impl), e1 = evaluate(c1, impl);
@@ -105,10 +108,52 @@ CheckResult same_answer(const char* what, const Case& c0, const Case& c1, const 
   }
   if (!o0) return std::nullopt;
   const Contact k0 = impl.collide(c0.a, c0.b), k1 = impl.collide(c1.a, c1.b);
-  const double d = std::fabs(k0.depth - k1.depth) / scale;
-  if (d > depth_bound && held(c0))
+  const double d = std::fabs(k0.depth - k1.depth) / oracle::case_scale(c0.a, c0.b);
+  if (d > depth_bound + claimed_margin(impl) && held(c0))
     return Failure{std::string(what) + "-depth",
                    fmt("depth differs by %.3g * scale; ", d) + describe(k0, o0) + " vs " + describe(k1, o1)};
+  return std::nullopt;
+}
+
+/// same_answer with every depth held to the bound.
+template <class Case, class Impl>
+CheckResult same_answer(const char* what, const Case& c0, const Case& c1, const Impl& impl, double depth_bound) {
+  return same_answer(what, c0, c1, impl, depth_bound, [](const Case&) { return true; });
+}
+
+/// The body of hold_to_truth for a cylinder A against a polytope-like convex
+/// B judged by the engine: the truth at the query's verdict band, the verdict
+/// settled, and the subject's and the peer's contacts scored against that
+/// one truth (score_polytope_contacts: EPA at most once). `outside_b(shape,
+/// x)` bounds from above how far x lies outside B (`shape` is B's).
+template <class Case, class OutsideB>
+void hold_to_polytope_truth(Evaluation& e, const Case& c, const Contact& ct, const Contact* peer,
+                            OutsideB&& outside_b) {
+  const Tolerances tol = tolerances(query_of_case<Case>);
+  const oracle::ConvexShape cyl = oracle::make_shape(c.a), shape = oracle::make_shape(c.b);
+  const oracle::Q band = times_scale(tol.verdict, e.scale);
+  const PolytopeTruth truth = polytope_truth(cyl, shape, band);
+  settle_verdict(e, truth, band);
+  const std::function<oracle::Q(Vec3)> outside = [&](Vec3 x) { return outside_b(shape, x); };
+  score_polytope_contacts(e, ct, peer, truth, oracle::to_q(c.a), cyl, shape, tol.depth, outside);
+}
+
+/// check_monotone's test: `bigger`, a superset of c, lost c's overlap, with
+/// neither case within the band of touching.
+template <class Case, class Impl>
+bool overlap_lost(const Case& c, const Case& bigger, const Impl& impl) {
+  return !impl.overlap(bigger.a, bigger.b) && !evaluate(c, impl).near_boundary &&
+         !evaluate(bigger, impl).near_boundary;
+}
+
+/// check_monotone for the cylinder A of an overlapping case: its radius one
+/// ulp larger, and doubled, never loses the overlap (overlap_lost).
+template <class Case, class Impl>
+CheckResult cylinder_a_radius_kept(const Case& c, const Impl& impl) {
+  const double rc[] = {std::nextafter(c.a.r, INFINITY), c.a.r * 2 + 1e-300};
+  for (double r : rc)
+    if (std::isfinite(r) && overlap_lost(c, Case{Cylinder{c.a.p, c.a.q, r}, c.b}, impl))
+      return Failure{"monotone-cylinder-radius", fmt("overlap with cylinder radius %.17g but not with %.17g", c.a.r, r)};
   return std::nullopt;
 }
 
@@ -139,7 +184,7 @@ CheckResult verdict_kept(QueryId id, const std::string& what, const Case& c, con
 /// other than production has no swapped entry point and is not checked).
 template <class Case, class Impl>
 CheckResult argument_order(const Case& c, const Impl& impl) {
-  if (impl.overlap != production_of<query_of_case<Case>>().overlap) return std::nullopt;
+  if (&impl != &production_of<query_of_case<Case>>()) return std::nullopt;
   const bool ov = impl.overlap(c.a, c.b);
   const Contact ct = impl.collide(c.a, c.b);
   const Contact sw = collide(c.b, c.a);

@@ -1,10 +1,13 @@
 // geomcheck — the checks every query of a kind shares, written once:
-// check_robust (by kind) and check_all (the order of the checks), explicitly
-// instantiated for every registered query.
+// evaluate (the common start, then the query's own hold_to_truth),
+// check_oracle, check_robust (by kind) and check_all (the order of the
+// checks), defined or explicitly instantiated for every registered query.
 #include <cmath>
 #include <type_traits>
 
 #include "common.hpp"
+#include "contact_checks.hpp"
+#include "moving_checks.hpp"
 #include "geomcheck/properties/checks.hpp"
 
 namespace geomcheck {
@@ -55,6 +58,23 @@ CheckResult check_all(const Case& c, const ImplOfCase<Case>& impl) {
     if (auto f = check_metamorphic(c, m, impl)) return f;
   return check_monotone(c, impl);
 }
+
+#define GEOMCHECK_X(id, kind, A, B, summary)                                                                   \
+  Evaluation evaluate(const PairCase<A, B>& c, const ImplOf<QueryId::id>& impl,                                \
+                      const PeerAnswerOf<QueryKind::kind>::type* peer) {                                       \
+    Evaluation e;                                                                                              \
+    SubjectAnswerOf<QueryKind::kind>::type answer;                                                             \
+    if (start_evaluation(e, c, impl, answer)) {                                                                \
+      hold_to_truth(e, c, answer, peer);                                                                       \
+      widen_band(e, claimed_margin(impl));                                                                     \
+    }                                                                                                          \
+    return e;                                                                                                  \
+  }                                                                                                            \
+  CheckResult check_oracle(const PairCase<A, B>& c, const ImplOf<QueryId::id>& impl) {                         \
+    return judge(QueryId::id, evaluate(c, impl), impl.claims);                                                 \
+  }
+GEOMCHECK_QUERY_LIST(GEOMCHECK_X)
+#undef GEOMCHECK_X
 
 #define GEOMCHECK_X(id, kind, A, B, summary)                                                          \
   template CheckResult check_robust<PairCase<A, B>>(const PairCase<A, B>&, const ImplOf<QueryId::id>&); \

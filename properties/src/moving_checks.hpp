@@ -2,6 +2,7 @@
 // ball against a shape B), written once for both kinds (internal to properties/).
 #pragma once
 
+#include <cmath>
 #include <optional>
 #include <string>
 
@@ -17,6 +18,38 @@ template <class Case, class Impl>
 CastHit moving_answer(const Case& c, const Impl& impl) {
   if constexpr (QueryTraits<query_of_case<Case>>::kind == QueryKind::Cast) return impl.cast(c.a, c.b);
   else return impl.sweep(c.a, c.b);
+}
+
+/// The start of a moving query's evaluate: the subject's hit into `e` and
+/// `h`, and the case's scale into `e`; false, with `e` complete, on invalid
+/// input (where the only truth is "no hit").
+template <class Case, class Impl>
+bool start_evaluation(Evaluation& e, const Case& c, const Impl& impl, CastHit& h) {
+  h = moving_answer(c, impl);
+  e.prod_hit = h.hit;
+  e.prod_text = describe(h);
+  e.valid = valid_case(c);
+  if (!e.valid) {
+    e.truth_text = "invalid input: no hit";
+    e.disagree = h.hit;
+  } else {
+    e.scale = oracle::case_scale(c.a, c.b);
+  }
+  return e.valid;
+}
+
+/// check_consistency's test of a hit on its own (none on a miss): finite, t
+/// in [0, 1], starting inside only with t == 0 and a zero normal, otherwise a
+/// unit normal (query id's `unit` bound).
+inline CheckResult consistent_hit(QueryId id, const CastHit& h) {
+  if (!h.hit) return std::nullopt;
+  if (!finite_hit(h)) return Failure{"consistency-finite", describe(h)};
+  if (!(h.t >= 0 && h.t <= 1)) return Failure{"consistency-t-range", describe(h)};
+  if (h.starts_inside && (h.t != 0 || !(h.normal == Vec3{})))
+    return Failure{"consistency-starts-inside", "starts_inside needs t == 0 and a zero normal: " + describe(h)};
+  if (!h.starts_inside && std::fabs(length(h.normal) - 1) > tolerances(id).unit)
+    return Failure{"consistency-unit-normal", describe(h)};
+  return std::nullopt;
 }
 
 /// Same path, other representation: hit or miss agree unless either case is
@@ -59,6 +92,47 @@ CheckResult exact_move_kept(const std::string& what, const moves::Move& m, const
                   (free_normal || m.vec(h0.normal) == h1.normal)))
     return Failure{what, "answer not bit-identical: " + describe(h0) + " vs " + describe(h1)};
   return std::nullopt;
+}
+
+/// check_monotone's test: `bigger`, a superset of c's moving shape or of B,
+/// lost c's hit, with neither case within the band of touching.
+template <class Case, class Impl>
+bool hit_lost(const Case& c, const Case& bigger, const Impl& impl) {
+  return !moving_answer(bigger, impl).hit && !evaluate(c, impl).near_boundary &&
+         !evaluate(bigger, impl).near_boundary;
+}
+
+/// check_monotone for the cylinder B of a hitting case: its radius doubled
+/// (plus 2^-20 of its length) never loses the hit (hit_lost).
+template <class Case, class Impl>
+CheckResult cylinder_b_radius_kept(const Case& c, const Impl& impl) {
+  const double wider = c.b.r * 2 + 0x1p-20 * length(c.b.q - c.b.p);
+  if (std::isfinite(wider) && hit_lost(c, Case{c.a, {c.b.p, c.b.q, wider}}, impl))
+    return Failure{"monotone-cylinder-radius", "hit with radius " + fmt("%.17g", c.b.r) + " but not with " + fmt("%.17g", wider)};
+  return std::nullopt;
+}
+
+/// The body of a moving query's check_metamorphic: the move applied to both
+/// shapes (skipped where it is not applicable or leaves the case invalid: a
+/// rounded move can collapse an axis one ulp long); an exact move keeps the
+/// answer bit for bit (exact_move_kept; the side normal is free on a
+/// cylinder B thinner than the rounding level), a rounded one keeps the
+/// verdict outside the band (same_verdict), and the rigid motion (move 5),
+/// which also moves the solids by rigid_slack, changes the verdict only where
+/// `rigid_certain(t, what, h0, h1)` says that change is a failure.
+template <class Case, class Impl, class RigidCertain>
+CheckResult moving_metamorphic(const Case& c, int move, const Impl& impl, RigidCertain&& rigid_certain) {
+  if (!valid_case(c)) return std::nullopt;
+  const moves::Move m{move};
+  if (!moves::applicable(c, move)) return std::nullopt;
+  const Case t{moves::apply(m, c.a), moves::apply(m, c.b)};
+  if (!valid_case(t)) return std::nullopt;
+  const std::string what = std::string("metamorphic-") + move_name(move);
+  if (m.exact()) return exact_move_kept(what, m, c, t, impl, !(c.b.r > 64 * 0x1p-52 * oracle::case_scale(c.a, c.b)));
+  if (move != 5) return same_verdict(what.c_str(), c, t, impl);
+  const CastHit h0 = moving_answer(c, impl), h1 = moving_answer(t, impl);
+  if (h0.hit == h1.hit) return std::nullopt;
+  return rigid_certain(t, what, h0, h1);
 }
 
 }  // namespace geomcheck

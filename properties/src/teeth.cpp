@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "geomcheck/detail/cylinder_pair.hpp"
+#include "geomcheck/detail/frame.hpp"
 #include "geomcheck/detail/obb_stages.hpp"
 #include "geomcheck/detail/sweep_stages.hpp"
 #include "geomcheck/detail/triangle_stages.hpp"
@@ -19,6 +20,21 @@ Vec3 closest_on_segment(Vec3 x, Vec3 p, Vec3 q) {
   const double t = std::clamp(dot(x - p, d) / dot(d, d), 0.0, 1.0);
   return p + t * d;
 }
+
+// The contact of two rounded shapes whose cores are closest at a (on the
+// cylinder's axis, radius ra) and b (radius rb): the normal from a to b (any
+// perpendicular of the axis when they coincide), the depth ra + rb - |b - a|,
+// the point on a's rounded surface.
+Contact rounded_contact(Vec3 a, Vec3 b, double ra, double rb, Vec3 axis) {
+  Contact out;
+  const Vec3 v = b - a;
+  const double l = length(v);
+  out.hit = true;
+  out.normal = l > 0 ? (1.0 / l) * v : any_perpendicular(axis);
+  out.depth = ra + rb - l;
+  out.point = a + ra * out.normal;
+  return out;
+}
 }  // namespace
 
 // Sphere against the cylinder's capsule: the end-cap discontinuity ignored
@@ -29,17 +45,10 @@ bool capsule_overlap(const Cylinder& c, const Sphere& s) {
   const double r = c.r + s.r;
   return length2(s.c - x) <= r * r;
 }
+
 Contact capsule_collide(const Cylinder& c, const Sphere& s) {
-  Contact out;
-  if (!capsule_overlap(c, s)) return out;
-  const Vec3 x = closest_on_segment(s.c, c.p, c.q);
-  const Vec3 v = s.c - x;
-  const double l = length(v);
-  out.hit = true;
-  out.normal = l > 0 ? (1.0 / l) * v : any_perpendicular(c.q - c.p);
-  out.depth = c.r + s.r - l;
-  out.point = x + c.r * out.normal;
-  return out;
+  if (!capsule_overlap(c, s)) return {};
+  return rounded_contact(closest_on_segment(s.c, c.p, c.q), s.c, c.r, s.r, c.q - c.p);
 }
 
 // The segment cast against the infinite cylinder: no cap test at all.
@@ -55,11 +64,8 @@ CastHit infinite_cylinder_cast(const Segment& seg, const Cylinder& cyl) {
     out.point = seg.a;
     return out;
   }
-  if (qb >= 0) return out;
-  const double disc = qb * qb - qa * qc;
-  if (disc < 0) return out;
-  const double t = qc / (-qb + std::sqrt(disc));
-  if (t > 1) return out;
+  double t;
+  if (!detail::entry_root(qa, qb, qc, t)) return out;
   out.hit = true;
   out.t = t;
   out.point = seg.a + t * n;
@@ -166,17 +172,10 @@ bool capsule_capsule_overlap(const Cylinder& c, const Capsule& k) {
   return length2(b - a) <= r * r;
 }
 Contact capsule_capsule_collide(const Cylinder& c, const Capsule& k) {
-  Contact out;
-  if (!capsule_capsule_overlap(c, k)) return out;
+  if (!capsule_capsule_overlap(c, k)) return {};
   Vec3 a, b;
   closest_segments(c.p, c.q, k.p, k.q, a, b);
-  const Vec3 v = b - a;
-  const double l = length(v);
-  out.hit = true;
-  out.normal = l > 0 ? (1.0 / l) * v : any_perpendicular(c.q - c.p);
-  out.depth = c.r + k.r - l;
-  out.point = a + c.r * out.normal;
-  return out;
+  return rounded_contact(a, b, c.r, k.r, c.q - c.p);
 }
 }  // namespace
 

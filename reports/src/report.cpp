@@ -447,15 +447,13 @@ void write_junit(const std::filesystem::path& file, const RunInfo& run, const st
 }
 
 void write_counterexample_page(const std::filesystem::path& file, const std::string& name, const std::string& drawing,
-                               const std::string& subject, const std::string& case_path) {
+                               const std::string& subject, const std::string& replay_command) {
   std::ofstream page(file);
   page << "<!doctype html><html lang='en'><head><meta charset='utf-8'><title>" << html(name)
        << "</title><style>body{font-family:sans-serif;margin:2em}figcaption{font-size:12px;margin:4px 0}"
           ".legend{font-size:12px}</style></head><body>"
-       << drawing << "<p>" << html(subject) << " fails this case; <code>geomcheck replay "
-       << (subject == "production" ? std::string() : "--subject " + html(subject) + " ") << html(case_path)
-       << "</code> replays it" << (subject == "production" ? "" : " (and without --subject, against production)")
-       << ".</p></body></html>\n";
+       << drawing << "<p>" << html(subject) << " fails this case; <code>" << html(replay_command)
+       << "</code> replays it.</p></body></html>\n";
 }
 
 }  // namespace geomcheck::report

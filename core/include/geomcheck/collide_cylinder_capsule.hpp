@@ -40,6 +40,7 @@
 // Invalid input (is_valid) gives "no overlap".
 #pragma once
 
+#include "geomcheck/argument_order.hpp"
 #include "geomcheck/results.hpp"
 #include "geomcheck/shapes.hpp"
 
@@ -50,10 +51,5 @@ bool overlap(const Cylinder& a, const Capsule& b);
 /// Contact (see the header comment for what depth claims); normal from the
 /// cylinder towards the capsule.
 Contact collide(const Cylinder& a, const Capsule& b);
-
-/// Argument-order wrapper: same verdict.
-inline bool overlap(const Capsule& a, const Cylinder& b) { return overlap(b, a); }
-/// Argument-order wrapper: normal flipped (from the capsule to the cylinder).
-inline Contact collide(const Capsule& a, const Cylinder& b) { return flipped(collide(b, a)); }
 
 }  // namespace geomcheck

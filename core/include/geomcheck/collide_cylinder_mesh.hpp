@@ -30,6 +30,7 @@
 
 #include <cstdint>
 
+#include "geomcheck/argument_order.hpp"
 #include "geomcheck/results.hpp"
 #include "geomcheck/shapes.hpp"
 #include "geomcheck/triangle_mesh.hpp"
@@ -41,12 +42,6 @@ bool overlap(const Cylinder& a, const TriangleMesh& b);
 /// The deepest triangle's contact (normal from the cylinder towards the
 /// mesh); its face index in *triangle when given (left alone on no hit).
 Contact collide(const Cylinder& a, const TriangleMesh& b, std::uint32_t* triangle = nullptr);
-
-/// Argument-order wrappers.
-inline bool overlap(const TriangleMesh& a, const Cylinder& b) { return overlap(b, a); }
-inline Contact collide(const TriangleMesh& a, const Cylinder& b, std::uint32_t* triangle = nullptr) {
-  return flipped(collide(b, a, triangle));
-}
 
 namespace detail {
 /// The same answers without the hierarchy: every face, in index order.

@@ -56,6 +56,7 @@
 // Invalid input (is_valid) gives "no overlap".
 #pragma once
 
+#include "geomcheck/argument_order.hpp"
 #include "geomcheck/results.hpp"
 #include "geomcheck/shapes.hpp"
 
@@ -65,10 +66,5 @@ namespace geomcheck {
 bool overlap(const Cylinder& a, const Obb& b);
 /// Contact; normal from the cylinder towards the box (see the header comment).
 Contact collide(const Cylinder& a, const Obb& b);
-
-/// Argument-order wrapper: same verdict.
-inline bool overlap(const Obb& a, const Cylinder& b) { return overlap(b, a); }
-/// Argument-order wrapper: normal flipped (from the box to the cylinder).
-inline Contact collide(const Obb& a, const Cylinder& b) { return flipped(collide(b, a)); }
 
 }  // namespace geomcheck

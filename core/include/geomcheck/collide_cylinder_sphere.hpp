@@ -20,6 +20,7 @@
 // Invalid input (is_valid) gives "no overlap".
 #pragma once
 
+#include "geomcheck/argument_order.hpp"
 #include "geomcheck/results.hpp"
 #include "geomcheck/shapes.hpp"
 
@@ -29,10 +30,5 @@ namespace geomcheck {
 bool overlap(const Cylinder& a, const Sphere& b);
 /// Contact with true penetration depth; normal from the cylinder to the sphere.
 Contact collide(const Cylinder& a, const Sphere& b);
-
-/// Argument-order wrapper: same verdict.
-inline bool overlap(const Sphere& a, const Cylinder& b) { return overlap(b, a); }
-/// Argument-order wrapper: normal flipped (from the sphere to the cylinder).
-inline Contact collide(const Sphere& a, const Cylinder& b) { return flipped(collide(b, a)); }
 
 }  // namespace geomcheck

@@ -59,6 +59,7 @@
 // Invalid input (is_valid) gives "no overlap".
 #pragma once
 
+#include "geomcheck/argument_order.hpp"
 #include "geomcheck/results.hpp"
 #include "geomcheck/shapes.hpp"
 
@@ -68,10 +69,5 @@ namespace geomcheck {
 bool overlap(const Cylinder& a, const Triangle& b);
 /// Contact; normal from the cylinder towards the triangle (see the header comment).
 Contact collide(const Cylinder& a, const Triangle& b);
-
-/// Argument-order wrapper: same verdict.
-inline bool overlap(const Triangle& a, const Cylinder& b) { return overlap(b, a); }
-/// Argument-order wrapper: normal flipped (from the triangle to the cylinder).
-inline Contact collide(const Triangle& a, const Cylinder& b) { return flipped(collide(b, a)); }
 
 }  // namespace geomcheck

@@ -15,39 +15,16 @@ rc::Gen<Tagged<QueryTraits<QueryId::cast_segment_cylinder>::Case>> targeted<Quer
   return rc::gen::resize(100, rc::gen::exec([]() -> std::pair<SegmentCylinderCase, std::string> {
     const int mode = pick_int(0, 8);
     if (mode == 8) {  // exact: tangent lines, rim touches, endpoint on the surface
-      const auto& t1 = kTriples[pick_int(0, kNumTriples - 1)];
-      const int k = pick_int(1, 4), h = pick_int(1, 20), len = pick_int(1, 40);
-      const Exact ex = pick_exact();
-      const int r = t1[2] * k;
-      Cylinder cyl{ex.apply({0, 0, 0}), ex.apply({0, 0, double(h)}), ex.len(r)};
-      Vec3 a, b;
-      std::string tag;
+      static const char* const kTags[] = {"exact-side-tangent", "exact-rim-tangent", "exact-end-on-rim",
+                                          "exact-axis-parallel-on-side"};
+      const ExactTripleCylinder x = pick_exact_triple_cylinder();
       const int ulps = pick_int(-2, 2);
-      switch (pick_int(0, 3)) {
-        case 0:  // tangent to the side: x = r, along y, at a height within [0, h]
-          a = {double(r), double(-len), double(pick_int(0, h))};
-          b = {double(r), double(len), a.z};
-          tag = "exact-side-tangent";
-          break;
-        case 1:  // tangent to the rim circle in the cap plane
-          a = {double(r), double(-len), double(h)};
-          b = {double(r), double(len), double(h)};
-          tag = "exact-rim-tangent";
-          break;
-        case 2:  // ends exactly on the rim point (a k, b k, h), from outside along the triple direction
-          b = {double(t1[0] * k), double(t1[1] * k), double(h)};
-          a = {b.x + t1[0] * len, b.y + t1[1] * len, b.z + len};
-          tag = "exact-end-on-rim";
-          break;
-        default:  // parallel to the axis, on the side surface line, from below the p cap
-          a = {double(t1[0] * k), double(t1[1] * k), double(-len)};
-          b = {a.x, a.y, double(h + len)};
-          tag = "exact-axis-parallel-on-side";
-          break;
-      }
+      const int kind = pick_int(0, 3);
+      auto [a, b] = exact_touching_segment(x, kind);
       a.x = nudge(a.x, ulps);
       b.x = nudge(b.x, ulps);
-      return {{{ex.apply(a), ex.apply(b)}, cyl}, tag + (ulps == 0 ? "" : (ulps > 0 ? "-ulps" : "+ulps"))};
+      return {{{x.ex.apply(a), x.ex.apply(b)}, x.cyl},
+              kTags[kind] + std::string(ulps == 0 ? "" : (ulps > 0 ? "-ulps" : "+ulps"))};
     }
     const Scene sc = pick_scene();
     const Frame f = pick_cylinder(sc);

@@ -97,44 +97,26 @@ std::pair<CylinderCapsuleCase, std::string> exact_cylinder_capsule() {
 // Zero capsule radius (the capsule is its segment): exactly on the surface,
 // then moved by k ulps outwards (k > 0) or inwards.
 std::pair<CylinderCapsuleCase, std::string> exact_segment_capsule() {
-  const auto& t1 = kTriples[pick_int(0, kNumTriples - 1)];
-  const int k = pick_int(1, 4), h = pick_int(1, 20), len = pick_int(1, 40);
-  const Exact ex = pick_exact();
-  const int r = t1[2] * k;
-  Cylinder cyl{ex.apply({0, 0, 0}), ex.apply({0, 0, double(h)}), ex.len(r)};
-  Vec3 a, b;
+  static const char* const kTags[] = {"exact-segment-side-tangent", "exact-segment-rim-tangent",
+                                      "exact-segment-end-on-rim", "exact-segment-on-side"};
+  const ExactTripleCylinder x = pick_exact_triple_cylinder();
+  Cylinder cyl = x.cyl;
+  const int kind = pick_int(0, 4);
+  std::pair<Vec3, Vec3> ab;
   std::string tag;
-  switch (pick_int(0, 4)) {
-    case 0:  // tangent to the side
-      a = {double(r), double(-len), double(pick_int(0, h))};
-      b = {double(r), double(len), a.z};
-      tag = "exact-segment-side-tangent";
-      break;
-    case 1:  // tangent to the rim circle in the cap plane
-      a = {double(r), double(-len), double(h)};
-      b = {double(r), double(len), double(h)};
-      tag = "exact-segment-rim-tangent";
-      break;
-    case 2:  // ends on the rim point (a k, b k, h), from outside
-      b = {double(t1[0] * k), double(t1[1] * k), double(h)};
-      a = {b.x + t1[0] * len, b.y + t1[1] * len, b.z + len};
-      tag = "exact-segment-end-on-rim";
-      break;
-    case 3:  // on the side line, parallel to the axis, past both caps
-      a = {double(t1[0] * k), double(t1[1] * k), double(-len)};
-      b = {a.x, a.y, double(h + len)};
-      tag = "exact-segment-on-side";
-      break;
-    default:  // zero cylinder radius too: two segments crossing
-      cyl.r = 0;
-      a = {0, double(-len), double(pick_int(0, h))};
-      b = {0, double(len), a.z};
-      tag = "exact-segment-crosses-zero-radius";
-      break;
+  if (kind < 4) {
+    ab = exact_touching_segment(x, kind);
+    tag = kTags[kind];
+  } else {  // zero cylinder radius too: two segments crossing
+    cyl.r = 0;
+    const Vec3 a{0, double(-x.len), double(pick_int(0, x.h))};
+    ab = {a, {0, double(x.len), a.z}};
+    tag = "exact-segment-crosses-zero-radius";
   }
   const int ulps = pick_int(-2, 2);
   const std::string moved = cyl.r == 0 ? "-ulps-off" : (ulps > 0 ? "-ulps-out" : "-ulps-in");
-  return {{cyl, Capsule{ex.nudge_x(ex.apply(a), ulps), ex.nudge_x(ex.apply(b), ulps), 0.0}},
+  const Exact& ex = x.ex;
+  return {{cyl, Capsule{ex.nudge_x(ex.apply(ab.first), ulps), ex.nudge_x(ex.apply(ab.second), ulps), 0.0}},
           tag + (ulps == 0 ? "-touch" : moved)};
 }
 
@@ -146,11 +128,7 @@ rc::Gen<Tagged<QueryTraits<QueryId::collide_cylinder_capsule>::Case>> targeted<Q
     const int mode = pick_int(0, 9);
     if (mode == 8) return exact_cylinder_capsule();
     if (mode == 9) return exact_segment_capsule();
-    const Scene sc = pick_scene();
-    const Frame f = pick_cylinder(sc);
-    const double s = pick_int(0, 10) == 0 ? 0.0 : pick_real(0.01, 3) * sc.size;
-    double gap = pick_gap(sc.size);
-    const double reach = pick_real(0.1, 6) * sc.size;
+    auto [sc, f, s, gap, reach] = pick_approach();
     bool graded = true;  // the closest approach is s + gap: tag the gap, nudge a touch
     Vec3 p, q;
     std::string tag;

@@ -119,6 +119,72 @@ inline Exact pick_exact() {
           {double(pick_int(-1000, 1000)), double(pick_int(-1000, 1000)), double(pick_int(-1000, 1000))}};
 }
 
+// The draws of a targeted mode in which a ball of radius s (zero one time
+// in 11) approaches a random cylinder to within a gap: the scene, the
+// cylinder, s, the gap and the reach (how far from the cylinder a path
+// starts), in that order.
+struct Approach {
+  Scene sc;
+  Frame f;
+  double s, gap, reach;
+};
+inline Approach pick_approach() {
+  Approach a;
+  a.sc = pick_scene();
+  a.f = pick_cylinder(a.sc);
+  a.s = pick_int(0, 10) == 0 ? 0.0 : pick_real(0.01, 3) * a.sc.size;
+  a.gap = pick_gap(a.sc.size);
+  a.reach = pick_real(0.1, 6) * a.sc.size;
+  return a;
+}
+
+// An exact cylinder from a Pythagorean triple t1 scaled by k: axis from the
+// origin to (0, 0, h), radius r = t1[2] k, in the exact frame `ex`; `len`
+// an integer length for segments built against it. Draws t1, k, h, len and
+// ex in that order.
+struct ExactTripleCylinder {
+  const int* t1;
+  int k, h, len, r;
+  Exact ex;
+  Cylinder cyl;
+};
+inline ExactTripleCylinder pick_exact_triple_cylinder() {
+  ExactTripleCylinder x;
+  x.t1 = kTriples[pick_int(0, kNumTriples - 1)];
+  x.k = pick_int(1, 4);
+  x.h = pick_int(1, 20);
+  x.len = pick_int(1, 40);
+  x.ex = pick_exact();
+  x.r = x.t1[2] * x.k;
+  x.cyl = {x.ex.apply({0, 0, 0}), x.ex.apply({0, 0, double(x.h)}), x.ex.len(x.r)};
+  return x;
+}
+
+// A segment touching that cylinder exactly, in construction coordinates:
+// kind 0 tangent to the side (x = r, along y, at a drawn height within
+// [0, h]), 1 tangent to the rim circle in the cap plane, 2 ending on the rim
+// point (t1[0] k, t1[1] k, h) from outside along the triple's direction, 3
+// on the side line, parallel to the axis, past both caps.
+inline std::pair<Vec3, Vec3> exact_touching_segment(const ExactTripleCylinder& x, int kind) {
+  const int* t1 = x.t1;
+  const double k = x.k, h = x.h, len = x.len, r = x.r;
+  switch (kind) {
+    case 0: {
+      const Vec3 a{r, -len, double(pick_int(0, x.h))};
+      return {a, {r, len, a.z}};
+    }
+    case 1: return {{r, -len, h}, {r, len, h}};
+    case 2: {
+      const Vec3 b{t1[0] * k, t1[1] * k, h};
+      return {{b.x + t1[0] * len, b.y + t1[1] * len, b.z + len}, b};
+    }
+    default: {
+      const Vec3 a{t1[0] * k, t1[1] * k, -len};
+      return {a, {a.x, a.y, h + len}};
+    }
+  }
+}
+
 // Directions (radial, axial, length) out of a rim point: the triples, and
 // straight up from the cap and straight out from the side.
 constexpr int kRimDirs[][3] = {{3, 4, 5}, {5, 12, 13}, {8, 15, 17}, {7, 24, 25}, {20, 21, 29}, {9, 40, 41},

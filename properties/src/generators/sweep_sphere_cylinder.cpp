@@ -118,11 +118,7 @@ rc::Gen<Tagged<QueryTraits<QueryId::sweep_sphere_cylinder>::Case>> targeted<Quer
   return rc::gen::resize(100, rc::gen::exec([]() -> std::pair<SweepCylinderCase, std::string> {
     const int mode = pick_int(0, 9);
     if (mode == 9) return exact_sweep_cylinder();
-    const Scene sc = pick_scene();
-    const Frame f = pick_cylinder(sc);
-    const double s = pick_int(0, 10) == 0 ? 0.0 : pick_real(0.01, 3) * sc.size;
-    double gap = pick_gap(sc.size);
-    const double reach = pick_real(0.1, 6) * sc.size;
+    auto [sc, f, s, gap, reach] = pick_approach();
     bool graded = true;  // the closest approach is s + gap: tag the gap, nudge a touch
     Vec3 c, d;
     std::string tag;

@@ -7,7 +7,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
+#include "geomcheck/results.hpp"
 #include "geomcheck/shapes.hpp"
 
 namespace geomcheck::detail {
@@ -127,6 +129,58 @@ inline double largest(const Segment& s) { return std::max(max_abs(s.a), max_abs(
 inline double largest(const Obb& b) { return std::max(max_abs(b.c), max_abs(b.e)); }
 inline double largest(const Triangle& t) { return std::max(std::max(max_abs(t.a), max_abs(t.b)), max_abs(t.c)); }
 inline double largest(const Capsule& s) { return std::max(std::max(max_abs(s.p), max_abs(s.q)), s.r); }
+
+/// The entry root of q(t) = qa t^2 + 2 qb t + qc for a path that starts
+/// outside (qc > 0), into t: qc / (-qb + sqrt(qb^2 - qa qc)), the smaller
+/// root without cancellation; false when the path does not enter within
+/// [0, 1]: it moves away or along (qb >= 0), never reaches (a negative
+/// discriminant), or reaches after t = 1.
+inline bool entry_root(double qa, double qb, double qc, double& t) {
+  if (qb >= 0) return false;
+  const double disc = qb * qb - qa * qc;
+  if (disc < 0) return false;
+  t = qc / (-qb + std::sqrt(disc));
+  return !(t > 1);
+}
+
+/// A pair query's verdict in its rescaled scene (SceneScale of both shapes'
+/// largest magnitude): `scaled(a', b')` decides the scaled shapes. Invalid
+/// input gives "no overlap".
+template <class A, class B, class Scaled>
+bool overlap_rescaled(const A& a, const B& b, Scaled&& scaled) {
+  if (!is_valid(a) || !is_valid(b)) return false;
+  const SceneScale sc(std::max(largest(a), largest(b)));
+  return scaled(sc.in(a), sc.in(b));
+}
+
+/// A pair query's contact in its rescaled scene: `scaled(a', b')` answers
+/// the scaled shapes; its point and depth are scaled back, the depth
+/// saturating to the largest double. Invalid input gives no contact.
+template <class A, class B, class Scaled>
+Contact collide_rescaled(const A& a, const B& b, Scaled&& scaled) {
+  if (!is_valid(a) || !is_valid(b)) return {};
+  const SceneScale sc(std::max(largest(a), largest(b)));
+  Contact out = scaled(sc.in(a), sc.in(b));
+  out.point = sc.out(out.point);
+  out.depth = std::min(sc.out(out.depth), std::numeric_limits<double>::max());
+  return out;
+}
+
+/// The side x vertex patch of a cylinder (axis from its start along unit u,
+/// length len, radius r) against a polytope's vertex at w (relative to the
+/// axis start): a vertex within best.o of the side and inside the slab by as
+/// much offers its radial direction to `best`. A vertex on the axis line (to
+/// rounding) has no radial direction: every one is alike, and a pick would
+/// not reflect with the scene.
+template <class Best>
+inline void consider_side_vertex(Vec3 w, Vec3 u, double len, double r, Best& best) {
+  const double z = dot(w, u);
+  if (z < -best.o || z > len + best.o) return;
+  const double rho = safe_length(w - z * u);
+  if (rho < r - best.o || rho > r + best.o) return;
+  Vec3 n;
+  if (radial_direction(w, u, n)) best.consider(n);
+}
 
 /// A point relative to a cylinder: the closest point of the solid cylinder,
 /// the distance to it, and (when outside) the unit normal from the cylinder

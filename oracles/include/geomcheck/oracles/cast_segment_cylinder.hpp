@@ -15,6 +15,7 @@
 #include <optional>
 
 #include "geomcheck/oracles/exact.hpp"
+#include "geomcheck/oracles/solids.hpp"
 
 namespace geomcheck::oracle {
 
@@ -40,8 +41,5 @@ QCylinder grown(const QCylinder& c, const Q& delta);
 /// The cylinder shrunk by at least `delta`: every point of it is at least
 /// delta inside `c`. Empty (nullopt) when the cylinder is thinner than that.
 std::optional<QCylinder> shrunk(const QCylinder& c, const Q& delta);
-
-/// Scale of a cast case: the largest coordinate magnitude or extent.
-double case_scale(const Segment& s, const Cylinder& c);
 
 }  // namespace geomcheck::oracle

@@ -35,7 +35,4 @@ CylinderSphereTruth solve_cylinder_sphere(const Cylinder& cyl, const Sphere& s);
 /// For overlapping shapes its minimum over n is the penetration depth.
 QInterval overlap_along(const QCylinder& a, const QSphere& b, const QVec& n);
 
-/// Scale of a case: the largest coordinate magnitude or extent.
-double case_scale(const Cylinder& c, const Sphere& s);
-
 }  // namespace geomcheck::oracle

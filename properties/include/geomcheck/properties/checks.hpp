@@ -7,8 +7,11 @@
 #pragma once
 
 #include <cmath>
+#include <functional>
+#include <memory>
 #include <optional>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include "geomcheck/oracles/exact.hpp"
@@ -24,25 +27,80 @@ struct Failure {
 };
 using CheckResult = std::optional<Failure>;
 
+/// What a subject claims about its answers. The checks hold it to these
+/// claims and the report prints them beside the figures.
+struct Claims {
+  /// What a collide query's depth is.
+  enum class Depth {
+    None,         ///< cast and sweep queries: no depth
+    Penetration,  ///< the true penetration depth (minimal translation)
+    Shallow,      ///< the true penetration depth while the contact is shallow (see the query's header)
+    UpperBound,   ///< a consistent contact: the overlap along the normal, an upper bound of the penetration depth
+  };
+  bool exact_verdict = true;  ///< the verdict is exact outside the verdict band
+  Depth depth = Depth::None;
+  bool point_in_both = true;  ///< collide: the point lies in both shapes (cast, sweep: on B)
+  const char* normal = "";    ///< the normal's convention, in words
+  const char* truth = "";     ///< what the truth is computed by
+  bool touching_is_contact = true;  ///< shapes exactly touching count as a contact (closed solids)
+  double margin = 0;                ///< answers claimed to within margin * scale (see judge)
+};
+
+/// A subject's entry point: a callable of signature R(Args...). A plain
+/// function (a function pointer, or a lambda without captures) is held as a
+/// pointer: no allocation, and a subject made only of plain functions is
+/// initialized before any code runs. Any other callable (a lambda with
+/// captures, an object with state, std::ref of one) is held by a shared
+/// std::function: copies of the subject share it.
+template <class Sig>
+class Callable;
+template <class R, class... Args>
+class Callable<R(Args...)> {
+ public:
+  using Pointer = R (*)(Args...);
+  constexpr Callable() = default;
+  /// A plain function.
+  constexpr Callable(Pointer p) : ptr_(p) {}
+  /// A lambda without captures: held as its function pointer.
+  template <class F, std::enable_if_t<std::is_convertible_v<F, Pointer> && !std::is_same_v<F, Pointer>, int> = 0>
+  constexpr Callable(F f) : ptr_(static_cast<Pointer>(f)) {}
+  /// Any other callable with this signature.
+  template <class F, std::enable_if_t<!std::is_convertible_v<F, Pointer> && !std::is_same_v<std::decay_t<F>, Callable> &&
+                                          std::is_invocable_r_v<R, F&, Args...>,
+                                      int> = 0>
+  Callable(F f) : fn_(std::make_shared<const std::function<R(Args...)>>(std::move(f))) {}
+
+  R operator()(Args... args) const { return ptr_ ? ptr_(args...) : (*fn_)(args...); }
+  explicit operator bool() const { return ptr_ || fn_; }
+
+ private:
+  Pointer ptr_ = nullptr;
+  std::shared_ptr<const std::function<R(Args...)>> fn_;
+};
+
 /// A subject of a collide query (production, a known-wrong variant, another
-/// engine): overlap(A, B) and collide(A, B) under a name.
+/// engine, a user's implementation): overlap(A, B) and collide(A, B) under a
+/// name.
 template <class A, class B>
 struct CollideImpl {
   const char* name;
-  bool (*overlap)(const A&, const B&);
-  Contact (*collide)(const A&, const B&);
+  Callable<bool(const A&, const B&)> overlap;
+  Callable<Contact(const A&, const B&)> collide;
+  const Claims* claims = nullptr;  ///< what the subject claims; null: what production claims
 };
 /// A subject of a cast query: cast(A, B), A the moving segment.
 template <class A, class B>
 struct CastImpl {
   const char* name;
-  CastHit (*cast)(const A&, const B&);
+  Callable<CastHit(const A&, const B&)> cast;
+  const Claims* claims = nullptr;  ///< what the subject claims; null: what production claims
 };
 /// A subject of a sweep query: sweep(A, B), A the moving shape.
 template <class A, class B>
 struct SweepImpl {
   const char* name;
-  CastHit (*sweep)(const A&, const B&);
+  Callable<CastHit(const A&, const B&)> sweep;
+  const Claims* claims = nullptr;  ///< what the subject claims; null: what production claims
 };
 
 /// The subject type of a query kind over shapes A and B.
@@ -83,23 +141,6 @@ const ImplOf<Q>& production_of() {
   }
 }
 
-/// What a subject claims about its answers. The checks hold it to these
-/// claims and the report prints them beside the figures.
-struct Claims {
-  /// What a collide query's depth is.
-  enum class Depth {
-    None,         ///< cast and sweep queries: no depth
-    Penetration,  ///< the true penetration depth (minimal translation)
-    Shallow,      ///< the true penetration depth while the contact is shallow (see the query's header)
-    UpperBound,   ///< a consistent contact: the overlap along the normal, an upper bound of the penetration depth
-  };
-  bool exact_verdict = true;  ///< the verdict is exact outside the verdict band
-  Depth depth = Depth::None;
-  bool point_in_both = true;  ///< collide: the point lies in both shapes (cast, sweep: on B)
-  const char* normal = "";    ///< the normal's convention, in words
-  const char* truth = "";     ///< what the truth is computed by
-};
-
 /// Words for a depth claim, for reports.
 inline const char* to_string(Claims::Depth d) {
   switch (d) {
@@ -120,11 +161,27 @@ struct QuerySpec {
   int default_cases = 0;
   std::vector<const ImplOf<Q>*> variants;
 };
-/// Query Q's spec (defined at the end of properties/src/checks_<id>.cpp).
+/// Query Q's spec (defined by GEOMCHECK_SPEC at the head of
+/// properties/src/checks_<id>.cpp).
 template <QueryId Q> const QuerySpec<Q>& spec_of();
 #define GEOMCHECK_X(id, kind, A, B, summary) template <> const QuerySpec<QueryId::id>& spec_of<QueryId::id>();
 GEOMCHECK_QUERY_LIST(GEOMCHECK_X)
 #undef GEOMCHECK_X
+
+/// Defines spec_of<QueryId::id>() from the query's default case count, its
+/// Claims and its known-wrong variants (pointers into teeth.hpp, possibly
+/// none), and names the query `kId` in the file's anonymous namespace. Used
+/// once, at the head of properties/src/checks_<id>.cpp, inside namespace
+/// geomcheck.
+#define GEOMCHECK_SPEC(id, default_cases, claims, ...)                               \
+  template <>                                                                        \
+  const QuerySpec<QueryId::id>& spec_of<QueryId::id>() {                             \
+    static const QuerySpec<QueryId::id> spec{claims, default_cases, {__VA_ARGS__}}; \
+    return spec;                                                                     \
+  }                                                                                  \
+  namespace {                                                                        \
+  [[maybe_unused]] constexpr QueryId kId = QueryId::id;                              \
+  }
 
 /// The subject type of the query whose case type is Case.
 template <class Case>
@@ -188,8 +245,15 @@ inline std::string verdict_word(QueryId id, const Evaluation& e) {
   return info(id).kind == QueryKind::Collide ? oracle::to_string(e.verdict) : (e.truth_hit ? "hit" : "miss");
 }
 
-/// Compares an evaluation with the query's tolerances (tolerances.hpp).
-CheckResult judge(QueryId id, const Evaluation& e);
+/// Compares an evaluation with the query's tolerances (tolerances.hpp) and
+/// what production claims, or, given a subject's `claims`, with what that
+/// subject claims. A subject's claims can only relax production's
+/// yardsticks: an inexact verdict (disagreements reported, not failed),
+/// touching not counted as contact (a miss where the truth is touching
+/// passes), no depth or no point-in-both claim (those errors not judged),
+/// and a margin (a disagreement within margin * scale of touching passes;
+/// every error bound grows by the margin).
+CheckResult judge(QueryId id, const Evaluation& e, const Claims* claims = nullptr);
 
 // --- every query, by kind (properties/src/kind_checks.cpp) ------------------
 /// Any input, valid or not: no crash; invalid input gives no hit; a hit's

@@ -122,9 +122,10 @@ void write_html(const std::filesystem::path& file, const RunInfo& run, std::vect
 /// of a saved counterexample.
 void write_junit(const std::filesystem::path& file, const RunInfo& run, const std::vector<QueryReport>& reps,
                  const std::vector<PointSetReport>& point_sets);
-/// A counterexample's page: its drawing and the command that replays it.
+/// A counterexample's page: its drawing, the subject that fails it and the
+/// command that replays it.
 void write_counterexample_page(const std::filesystem::path& file, const std::string& name, const std::string& drawing,
-                               const std::string& subject, const std::string& case_path);
+                               const std::string& subject, const std::string& replay_command);
 /// s with <, > and & escaped for HTML.
 std::string html(const std::string& s);
 

@@ -1,0 +1,32 @@
+// geomcheck — the argument-order wrappers of the pair queries.
+//
+// Every pair query is written with the cylinder first: overlap(Cylinder, B)
+// and collide(Cylinder, B[, extra]). The templates below answer the other
+// order for every B that has them, once for all pairs:
+//   overlap(B, Cylinder)   the same verdict;
+//   collide(B, Cylinder)   the same contact with its normal flipped (from B
+//                          towards the cylinder); depth and point unchanged.
+// Cylinder/cylinder has no other order, so B = Cylinder is excluded.
+#pragma once
+
+#include <type_traits>
+
+#include "geomcheck/results.hpp"
+#include "geomcheck/shapes.hpp"
+
+namespace geomcheck {
+
+/// overlap(B, Cylinder): the verdict of overlap(Cylinder, B).
+template <class B, std::enable_if_t<!std::is_same_v<B, Cylinder>, int> = 0>
+auto overlap(const B& a, const Cylinder& b) -> decltype(overlap(b, a)) {
+  return overlap(b, a);
+}
+
+/// collide(B, Cylinder, extra...): collide(Cylinder, B, extra...) with the
+/// normal flipped (from B towards the cylinder).
+template <class B, class... Extra, std::enable_if_t<!std::is_same_v<B, Cylinder>, int> = 0>
+auto collide(const B& a, const Cylinder& b, Extra... extra) -> decltype(flipped(collide(b, a, extra...))) {
+  return flipped(collide(b, a, extra...));
+}
+
+}  // namespace geomcheck

@@ -1,0 +1,135 @@
+// geomcheck — the public door: verify anyone's implementation of a
+// registered query with the yardsticks production is held to.
+//
+// A subject is ImplOf<Q> (properties/checks.hpp): a name and the query's
+// entry points as callables: overlap(A, B) and collide(A, B) for a collide
+// query, cast(A, B) or sweep(A, B) for the moving ones. Any callable with
+// that signature serves: a function pointer, a lambda or an object with
+// state, or an adapter that converts geomcheck's shapes into the caller's
+// own vector and shape types (subject() below builds one). A subject is held
+// to what production claims, or to its own Claims (checks.hpp): an inexact
+// verdict, touching not counted as contact, no depth or point claim, a
+// margin; verify() prints them before the figures.
+//
+//   int main(int argc, char** argv) {
+//     auto mine = geomcheck::subject<geomcheck::QueryId::collide_cylinder_sphere>(
+//         "my-collide", my_overlap, my_collide);
+//     return geomcheck::verify(mine, argc, argv);
+//   }
+//
+// verify() draws `cases` targeted cases of the query from a fixed seed
+// (printed; the same seed gives the same cases) and holds the subject to
+// every property (check_all: robustness on any input, agreement with the
+// exact or certified truth outside the verdict band and every error within
+// its bound of tolerances.hpp, consistency, symmetry, the metamorphic moves,
+// monotonicity). A subject that throws fails the case ("subject-threw"), as
+// does a non-finite or non-unit answer. The checks run in a child process:
+// a subject that crashes the process ("subject-crashed") or gives no answer
+// within a minute ("subject-hung") fails that case, and the run goes on
+// after it. So a subject's own state changes (a call counter) stay in that
+// child: verify() reports what the subject did, the subject object in the
+// caller is left as it was.
+//
+// Every failing case is counted by property; the first `max_saved` of each
+// property are saved under `out` as a case file (corpora/README.md's
+// format, replayable) with a page beside it that draws the shapes, the
+// subject's answer and the truth's witness. Each saved failure prints the
+// command that replays it: the same program with `--replay FILE`.
+//
+// Command line (verify(subject, argc, argv)):
+//   --cases N       cases to draw (default 2000)
+//   --seed N        the seed (default 20261121)
+//   --out DIR       where counterexamples go (default geomcheck-out)
+//   --replay FILE   replay saved case files instead (repeatable)
+//   --quiet         no line per saved failure
+// Exit status: 0 every case passed, 1 some case failed, 2 bad usage.
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <map>
+#include <memory>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "geomcheck/properties/checks.hpp"
+#include "geomcheck/properties/spec.hpp"
+
+namespace geomcheck {
+
+/// A subject of query Q: its entry points as callables under a name
+/// (ImplOf<Q>), with the query in its type so that verify() can be called
+/// without naming it, and its own claims when it has any.
+template <QueryId Q>
+struct Subject : ImplOf<Q> {
+  std::shared_ptr<const Claims> own_claims;  ///< what `claims` points to, when the subject has claims
+};
+
+/// What production claims for query Q: the start of a subject's own claims.
+template <QueryId Q>
+Claims production_claims() {
+  return spec_of<Q>().claims;
+}
+
+/// A subject of collide query Q from two callables, overlap(A, B) -> bool
+/// and collide(A, B) -> Contact (copied: pass std::ref(object) to share
+/// one), held to production's claims or to `claims` (judge() in checks.hpp:
+/// claims can only relax production's yardsticks).
+template <QueryId Q, class Overlap, class Collide,
+          std::enable_if_t<QueryTraits<Q>::kind == QueryKind::Collide, int> = 0>
+Subject<Q> subject(const char* name, Overlap overlap, Collide collide, std::optional<Claims> claims = std::nullopt) {
+  Subject<Q> s{{name, std::move(overlap), std::move(collide)}, nullptr};
+  if (claims) s.claims = (s.own_claims = std::make_shared<const Claims>(*claims)).get();
+  return s;
+}
+
+/// A subject of cast or sweep query Q from one callable (A, B) -> CastHit.
+template <QueryId Q, class Answer, std::enable_if_t<QueryTraits<Q>::kind != QueryKind::Collide, int> = 0>
+Subject<Q> subject(const char* name, Answer answer, std::optional<Claims> claims = std::nullopt) {
+  Subject<Q> s{{name, std::move(answer)}, nullptr};
+  if (claims) s.claims = (s.own_claims = std::make_shared<const Claims>(*claims)).get();
+  return s;
+}
+
+/// How verify() runs.
+struct VerifyOptions {
+  int cases = 2000;                          ///< targeted cases to draw
+  std::uint64_t seed = 20261121;             ///< their seed
+  std::filesystem::path out = "geomcheck-out";  ///< counterexamples go to out/<query>/
+  int max_saved = 10;                        ///< case files saved per failing property
+  bool quiet = false;                        ///< no line per saved failure
+  std::string program = "verify";            ///< names the replay command printed
+  unsigned case_seconds = 60;                ///< a case's checks taking longer: the subject hung
+};
+
+/// What verify() found.
+struct VerifyResult {
+  int cases = 0;                                 ///< cases checked
+  int failures = 0;                              ///< cases that failed a property
+  std::map<std::string, int> by_property;       ///< failing cases by the property they failed
+  std::vector<std::filesystem::path> saved;      ///< case files saved (a .html drawing beside each)
+};
+
+/// Holds `subject` to every property of query Q on opt.cases targeted cases
+/// (see the header comment); prints a summary and returns the counts.
+template <QueryId Q>
+VerifyResult verify(const ImplOf<Q>& subject, const VerifyOptions& opt);
+
+/// Replays case files of query Q against `subject`: every property, the
+/// truth and the subject's answer printed; the number of failing cases.
+template <QueryId Q>
+int replay(const ImplOf<Q>& subject, const std::vector<std::filesystem::path>& files);
+
+/// The whole program: options from the command line (see the header
+/// comment), then verify() or replay(); the exit status.
+template <QueryId Q>
+int verify(const ImplOf<Q>& subject, int argc, char** argv);
+/// The same, the query taken from the subject's type.
+template <QueryId Q>
+int verify(const Subject<Q>& subject, int argc, char** argv) {
+  return verify<Q>(static_cast<const ImplOf<Q>&>(subject), argc, argv);
+}
+
+}  // namespace geomcheck

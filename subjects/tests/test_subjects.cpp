@@ -1,0 +1,173 @@
+// geomcheck — the public door (verify.hpp) tried as a user would: subjects
+// written with and without bugs, with state, with claims, and subjects that
+// throw, answer NaN, crash or hang. Fixed seed (VerifyOptions' default).
+#include <gtest/gtest.h>
+
+#include <unistd.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <stdexcept>
+#include <thread>
+
+#include "geomcheck/casefile.hpp"
+#include "geomcheck/collide_cylinder_sphere.hpp"
+#include "geomcheck/oracles/solids.hpp"
+#include "geomcheck/verify.hpp"
+
+namespace geomcheck {
+namespace {
+
+constexpr QueryId kSphere = QueryId::collide_cylinder_sphere;
+
+/// Options writing under a fresh folder of the test's own.
+VerifyOptions options(const std::string& name, int cases) {
+  VerifyOptions opt;
+  opt.cases = cases;
+  opt.out = std::filesystem::path(::testing::TempDir()) / ("geomcheck-subjects-" + name);
+  std::filesystem::remove_all(opt.out);
+  opt.quiet = true;
+  return opt;
+}
+
+int count(const VerifyResult& r, const std::string& property) {
+  const auto it = r.by_property.find(property);
+  return it == r.by_property.end() ? 0 : it->second;
+}
+
+// Production's collide behind a lambda with state (a call counter) and an
+// adapter: held to the same yardsticks, it passes them.
+TEST(Subjects, ProductionBehindAStatefulAdapterPasses) {
+  int calls = 0;
+  auto collide_fn = [&calls](const Cylinder& c, const Sphere& s) {
+    ++calls;
+    return collide(c, s);
+  };
+  const auto mine = subject<kSphere>("adapter", [](const Cylinder& c, const Sphere& s) { return overlap(c, s); },
+                                     collide_fn);
+  ASSERT_EQ(mine.collide(Cylinder{{0, 0, 0}, {0, 0, 1}, 1}, Sphere{{0, 0, 0.5}, 0.25}).hit, true);
+  EXPECT_EQ(calls, 1);  // the subject holds the lambda itself: its state is the caller's
+  const VerifyResult r = verify<kSphere>(mine, options("adapter", 400));
+  EXPECT_EQ(r.cases, 400);
+  EXPECT_EQ(r.failures, 0) << (r.by_property.empty() ? "" : r.by_property.begin()->first);
+  EXPECT_TRUE(r.saved.empty());
+}
+
+// Single precision: caught, each saved case a valid case file of the query
+// whose replay fails again.
+TEST(Subjects, SinglePrecisionIsCaughtAndReplays) {
+  auto collide_fn = [](const Cylinder& c, const Sphere& s) {
+    auto f = [](Vec3 v) { return Vec3{float(v.x), float(v.y), float(v.z)}; };
+    Contact k = collide(Cylinder{f(c.p), f(c.q), float(c.r)}, Sphere{f(s.c), float(s.r)});
+    k.depth = float(k.depth);
+    k.normal = f(k.normal);
+    return k;
+  };
+  const auto mine = subject<kSphere>("float-inputs", [collide_fn](const Cylinder& c, const Sphere& s) {
+    return collide_fn(c, s).hit;
+  }, collide_fn);
+  const VerifyResult r = verify<kSphere>(mine, options("float", 400));
+  EXPECT_GT(r.failures, 0);
+  ASSERT_FALSE(r.saved.empty());
+  for (const auto& path : r.saved) {
+    const ParseResult p = load_case(path);
+    ASSERT_TRUE(p.ok()) << path << ": " << p.error;
+    EXPECT_EQ(p.value.query, kSphere);
+    EXPECT_TRUE(std::filesystem::exists(std::filesystem::path(path).replace_extension(".html"))) << path;
+  }
+  EXPECT_EQ(replay<kSphere>(mine, r.saved), static_cast<int>(r.saved.size()));
+  EXPECT_EQ(replay<kSphere>(production_of<kSphere>(), r.saved), 0);
+}
+
+// A subject that throws on some inputs fails those cases, and the run goes on.
+TEST(Subjects, ThrowingSubjectFailsItsCases) {
+  const auto mine = subject<kSphere>(
+      "throws", [](const Cylinder& c, const Sphere& s) { return overlap(c, s); },
+      [](const Cylinder& c, const Sphere& s) {
+        if (s.r > c.r) throw std::runtime_error("radius too large for me");
+        return collide(c, s);
+      });
+  const VerifyResult r = verify<kSphere>(mine, options("throws", 300));
+  EXPECT_EQ(r.cases, 300);
+  EXPECT_GT(count(r, "subject-threw"), 0);
+  EXPECT_EQ(r.failures, count(r, "subject-threw"));
+}
+
+// NaN in the answer: a failure of the subject, saved.
+TEST(Subjects, NaNAnswerFails) {
+  const auto mine = subject<kSphere>("nan", [](const Cylinder& c, const Sphere& s) { return overlap(c, s); },
+                                     [](const Cylinder& c, const Sphere& s) {
+                                       Contact k = collide(c, s);
+                                       if (k.hit) k.depth = NAN;
+                                       return k;
+                                     });
+  const VerifyResult r = verify<kSphere>(mine, options("nan", 200));
+  EXPECT_GT(count(r, "robust-finite-output"), 0);
+  EXPECT_FALSE(r.saved.empty());
+}
+
+// A subject that crashes the process on some inputs: those cases fail as
+// "subject-crashed", saved; every case is still checked.
+TEST(Subjects, CrashingSubjectIsContained) {
+  const auto mine = subject<kSphere>("aborts", [](const Cylinder& c, const Sphere& s) { return overlap(c, s); },
+                                     [](const Cylinder& c, const Sphere& s) {
+                                       if (s.r > 2 * c.r && s.r < 2.5 * c.r) std::abort();
+                                       return collide(c, s);
+                                     });
+  const VerifyResult r = verify<kSphere>(mine, options("aborts", 300));
+  EXPECT_EQ(r.cases, 300);
+  EXPECT_GT(count(r, "subject-crashed"), 0);
+  EXPECT_EQ(r.failures, count(r, "subject-crashed"));
+  EXPECT_FALSE(r.saved.empty());
+}
+
+// A subject that hangs once (a marker file keeps it to one case): that case
+// fails as "subject-hung" after case_seconds, the run goes on.
+TEST(Subjects, HangingSubjectIsContained) {
+  VerifyOptions opt = options("hangs", 100);
+  opt.case_seconds = 1;
+  std::filesystem::create_directories(opt.out);
+  const std::string marker = (opt.out / "hung-once").string();
+  const auto mine = subject<kSphere>("hangs", [](const Cylinder& c, const Sphere& s) { return overlap(c, s); },
+                                     [marker](const Cylinder& c, const Sphere& s) {
+                                       if (s.r > c.r && !std::filesystem::exists(marker)) {
+                                         std::FILE* f = std::fopen(marker.c_str(), "w");
+                                         if (f) std::fclose(f);
+                                         for (;;) std::this_thread::sleep_for(std::chrono::milliseconds(100));
+                                       }
+                                       return collide(c, s);
+                                     });
+  const VerifyResult r = verify<kSphere>(mine, opt);
+  EXPECT_EQ(r.cases, 100);
+  EXPECT_EQ(count(r, "subject-hung"), 1);
+  EXPECT_EQ(r.failures, 1);
+}
+
+// Claims: a subject whose ball is 1e-9 larger than the case's answers
+// "hit" on near-touching cases (1e-9 of the case's scale). Held to
+// production's claims it fails the verdict; claiming a margin of 1e-8 *
+// scale, it passes every check; claiming an inexact verdict only, it still
+// fails on its depth.
+TEST(Subjects, ClaimsAreWhatTheSubjectIsJudgedBy) {
+  auto grown = [](const Cylinder& c, const Sphere& s) { return Sphere{s.c, s.r + 1e-9 * oracle::case_scale(c, s)}; };
+  auto ov = [grown](const Cylinder& c, const Sphere& s) { return overlap(c, grown(c, s)); };
+  auto co = [grown](const Cylinder& c, const Sphere& s) { return collide(c, grown(c, s)); };
+  const VerifyResult strict = verify<kSphere>(subject<kSphere>("grown", ov, co), options("strict", 600));
+  EXPECT_GT(count(strict, "oracle-verdict"), 0);
+
+  Claims loose = production_claims<kSphere>();
+  loose.margin = 1e-8;
+  const VerifyResult judged = verify<kSphere>(subject<kSphere>("grown-with-margin", ov, co, loose), options("loose", 600));
+  EXPECT_EQ(judged.failures, 0) << (judged.by_property.empty() ? "" : judged.by_property.begin()->first);
+
+  Claims inexact = production_claims<kSphere>();
+  inexact.exact_verdict = false;
+  const VerifyResult unjudged = verify<kSphere>(subject<kSphere>("grown-inexact", ov, co, inexact), options("inexact", 600));
+  EXPECT_EQ(count(unjudged, "oracle-verdict"), 0);
+  EXPECT_GT(count(unjudged, "oracle-depth"), 0);
+}
+
+}  // namespace
+}  // namespace geomcheck

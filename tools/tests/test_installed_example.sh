@@ -1,0 +1,48 @@
+#!/usr/bin/env bash
+# geomcheck — the package as a user gets it: `cmake --install` of this build
+# into a fresh prefix, examples/verify-my-collide copied outside the source
+# tree and built against it with find_package(geomcheck CONFIG), then run.
+# The example's collide (single precision) is wrong, so the run must exit 1,
+# save failing cases with their drawings, and print a replay command that
+# reproduces the failure; a run of production's own collide through the
+# same door (the example with the float code swapped out) must pass.
+# usage: test_installed_example.sh CMAKE BUILD_DIR SOURCE_DIR WORK_DIR
+set -u
+cmake=$1 build=$2 src=$3 work=$4
+rm -rf "$work"; mkdir -p "$work"
+fail() { echo "FAIL: $*"; exit 1; }
+"$cmake" --install "$build" --prefix "$work/prefix" > "$work/install.log" 2>&1 || { cat "$work/install.log"; fail "cmake --install"; }
+[ -f "$work/prefix/lib/cmake/geomcheck/geomcheckConfig.cmake" ] || fail "no geomcheckConfig.cmake installed"
+cp -r "$src/examples/verify-my-collide" "$work/example"
+# The same example with production's collide in place of the float one: the door must let a right answer pass.
+sed -e 's/const MyContact k = my_collide.*/return geomcheck::collide(c, s);/' \
+    -e '/return Contact{k.hit/d' -e 's/"my-float-collide"/"production-through-verify"/' "$work/example/main.cpp" > "$work/example/main_production.cpp"
+grep -q "return geomcheck::collide(c, s);" "$work/example/main_production.cpp" || fail "could not derive the production variant"
+cat >> "$work/example/CMakeLists.txt" <<'CM'
+add_executable(verify_production main_production.cpp)
+target_link_libraries(verify_production PRIVATE geomcheck::subjects)
+CM
+gen=(); command -v ninja > /dev/null && gen=(-G Ninja)
+"$cmake" -S "$work/example" -B "$work/build" "${gen[@]}" -DCMAKE_BUILD_TYPE=Release -DCMAKE_PREFIX_PATH="$work/prefix" \
+  > "$work/configure.log" 2>&1 || { cat "$work/configure.log"; fail "configuring the example against the installed package"; }
+"$cmake" --build "$work/build" > "$work/build.log" 2>&1 || { cat "$work/build.log"; fail "building the example"; }
+
+"$work/build/verify_my_collide" --cases 400 --out "$work/out" > "$work/run.log" 2>&1
+status=$?
+cat "$work/run.log"
+[ "$status" -eq 1 ] || fail "exit status $status (1 expected: the float collide is wrong)"
+cases=$(find "$work/out" -name '*.case' | wc -l)
+pages=$(find "$work/out" -name '*.html' | wc -l)
+[ "$cases" -gt 0 ] || fail "no failing case saved"
+[ "$pages" -eq "$cases" ] || fail "$cases case files but $pages drawings"
+grep -q "<svg" "$(find "$work/out" -name '*.html' | head -1)" || fail "the page has no drawing"
+replay=$(grep -m1 '  replay: ' "$work/run.log" | sed 's/^  replay: //')
+[ -n "$replay" ] || fail "no replay command printed"
+$replay > "$work/replay.log" 2>&1
+rstatus=$?
+cat "$work/replay.log"
+[ "$rstatus" -eq 1 ] && grep -q '^FAIL ' "$work/replay.log" || fail "the printed replay command does not reproduce the failure"
+
+"$work/build/verify_production" --cases 400 --out "$work/out-production" > "$work/production.log" 2>&1 \
+  || { cat "$work/production.log"; fail "production's collide through the same door failed"; }
+echo "PASS: installed package found, the float collide caught ($cases cases saved), production passes"
