@@ -3,8 +3,10 @@
 # examples/verify-my-collide).
 include(CMakePackageConfigHelpers)
 
-set(GEOMCHECK_EXPORTED_TARGETS geomcheck_core geomcheck_oracles geomcheck_checks geomcheck_casefile geomcheck_reports)
-set(GEOMCHECK_EXPORTED_INCLUDE_DIRS core/include oracles/include properties/include corpora/include reports/include)
+set(GEOMCHECK_EXPORTED_TARGETS geomcheck_core geomcheck_oracles geomcheck_checks geomcheck_casefile geomcheck_reports
+                               geomcheck_fuzzing)
+set(GEOMCHECK_EXPORTED_INCLUDE_DIRS core/include oracles/include properties/include corpora/include reports/include
+                                    fuzz/include)
 set(GEOMCHECK_PACKAGE_HARNESS OFF)
 if(TARGET geomcheck_subjects)
   list(APPEND GEOMCHECK_EXPORTED_TARGETS geomcheck_harness geomcheck_subjects)

@@ -5,7 +5,7 @@
 // de-duplicate, minimise, convert, survive interruption) in
 // fuzz/tests/test_nightly.sh; it is not a fuzz target of production and is
 // not built by .clusterfuzzlite/build.sh.
-#include "fuzz_query.hpp"
+#include "geomcheck/fuzz_query.hpp"
 #include "geomcheck/properties/teeth.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {

@@ -38,8 +38,10 @@ CheckResult robust_hit(bool valid, const CastHit& h) {
 
 }  // namespace
 
+namespace {
+
 template <class Case>
-CheckResult check_robust(const Case& c, const ImplOfCase<Case>& impl) {
+CheckResult robust(const Case& c, const ImplOfCase<Case>& impl) {
   constexpr QueryKind kind = QueryTraits<query_of_case<Case>>::kind;
   const bool valid = is_valid(c.a) && is_valid(c.b);
   if constexpr (kind == QueryKind::Collide) return robust_contact(valid, impl.overlap(c.a, c.b), impl.collide(c.a, c.b));
@@ -48,8 +50,8 @@ CheckResult check_robust(const Case& c, const ImplOfCase<Case>& impl) {
 }
 
 template <class Case>
-CheckResult check_all(const Case& c, const ImplOfCase<Case>& impl) {
-  if (auto f = check_robust(c, impl)) return f;
+CheckResult all(const Case& c, const ImplOfCase<Case>& impl) {
+  if (auto f = robust(c, impl)) return f;
   if (!is_valid(c.a) || !is_valid(c.b)) return std::nullopt;
   if (auto f = check_oracle(c, impl)) return f;
   if (auto f = check_consistency(c, impl)) return f;
@@ -58,6 +60,8 @@ CheckResult check_all(const Case& c, const ImplOfCase<Case>& impl) {
     if (auto f = check_metamorphic(c, m, impl)) return f;
   return check_monotone(c, impl);
 }
+
+}  // namespace
 
 #define GEOMCHECK_X(id, kind, A, B, summary)                                                                   \
   Evaluation evaluate(const PairCase<A, B>& c, const ImplOf<QueryId::id>& impl,                                \
@@ -77,8 +81,8 @@ GEOMCHECK_QUERY_LIST(GEOMCHECK_X)
 #undef GEOMCHECK_X
 
 #define GEOMCHECK_X(id, kind, A, B, summary)                                                          \
-  template CheckResult check_robust<PairCase<A, B>>(const PairCase<A, B>&, const ImplOf<QueryId::id>&); \
-  template CheckResult check_all<PairCase<A, B>>(const PairCase<A, B>&, const ImplOf<QueryId::id>&);
+  CheckResult check_robust(const PairCase<A, B>& c, const ImplOf<QueryId::id>& impl) { return robust(c, impl); } \
+  CheckResult check_all(const PairCase<A, B>& c, const ImplOf<QueryId::id>& impl) { return all(c, impl); }
 GEOMCHECK_QUERY_LIST(GEOMCHECK_X)
 #undef GEOMCHECK_X
 

@@ -189,10 +189,9 @@ void run_guarded(int n, unsigned case_seconds, VerifyResult& res, Check&& check,
   }
 }
 
-}  // namespace
 
 template <QueryId Q>
-VerifyResult verify(const ImplOf<Q>& subject, const VerifyOptions& opt) {
+VerifyResult verify_cases(const ImplOf<Q>& subject, const VerifyOptions& opt) {
   using Case = typename QueryTraits<Q>::Case;
   VerifyResult res;
   const auto gen = Spec<Q>::targeted();
@@ -233,7 +232,7 @@ VerifyResult verify(const ImplOf<Q>& subject, const VerifyOptions& opt) {
 }
 
 template <QueryId Q>
-int replay(const ImplOf<Q>& subject, const std::vector<std::filesystem::path>& files) {
+int replay_files(const ImplOf<Q>& subject, const std::vector<std::filesystem::path>& files) {
   int failed = 0;
   for (const auto& path : files) {
     const ParseResult pr = load_case(path);
@@ -258,7 +257,7 @@ int replay(const ImplOf<Q>& subject, const std::vector<std::filesystem::path>& f
 }
 
 template <QueryId Q>
-int verify(const ImplOf<Q>& subject, int argc, char** argv) {
+int verify_program(const ImplOf<Q>& subject, int argc, char** argv) {
   VerifyOptions opt;
   if (argc > 0 && argv[0]) opt.program = argv[0];
   std::vector<std::filesystem::path> replays;
@@ -276,14 +275,22 @@ int verify(const ImplOf<Q>& subject, int argc, char** argv) {
     const int rc = app.exit(e);
     return rc == 0 ? 0 : 2;
   }
-  if (!replays.empty()) return replay<Q>(subject, replays) == 0 ? 0 : 1;
-  return verify<Q>(subject, opt).failures == 0 ? 0 : 1;
+  if (!replays.empty()) return replay_files<Q>(subject, replays) == 0 ? 0 : 1;
+  return verify_cases<Q>(subject, opt).failures == 0 ? 0 : 1;
 }
 
-#define GEOMCHECK_X(id, kind, A, B, summary)                                                              \
-  template VerifyResult verify<QueryId::id>(const ImplOf<QueryId::id>&, const VerifyOptions&);            \
-  template int replay<QueryId::id>(const ImplOf<QueryId::id>&, const std::vector<std::filesystem::path>&); \
-  template int verify<QueryId::id>(const ImplOf<QueryId::id>&, int, char**);
+}  // namespace
+
+#define GEOMCHECK_X(id, kind, A, B, summary)                                                          \
+  VerifyResult verify(const ImplOf<QueryId::id>& subject, const VerifyOptions& opt) {                 \
+    return verify_cases<QueryId::id>(subject, opt);                                                   \
+  }                                                                                                   \
+  int replay(const ImplOf<QueryId::id>& subject, const std::vector<std::filesystem::path>& files) {   \
+    return replay_files<QueryId::id>(subject, files);                                                 \
+  }                                                                                                   \
+  int verify(const ImplOf<QueryId::id>& subject, int argc, char** argv) {                             \
+    return verify_program<QueryId::id>(subject, argc, argv);                                          \
+  }
 GEOMCHECK_QUERY_LIST(GEOMCHECK_X)
 #undef GEOMCHECK_X
 

@@ -49,7 +49,7 @@ TEST(Subjects, ProductionBehindAStatefulAdapterPasses) {
                                      collide_fn);
   ASSERT_EQ(mine.collide(Cylinder{{0, 0, 0}, {0, 0, 1}, 1}, Sphere{{0, 0, 0.5}, 0.25}).hit, true);
   EXPECT_EQ(calls, 1);  // the subject holds the lambda itself: its state is the caller's
-  const VerifyResult r = verify<kSphere>(mine, options("adapter", 400));
+  const VerifyResult r = verify(mine, options("adapter", 400));
   EXPECT_EQ(r.cases, 400);
   EXPECT_EQ(r.failures, 0) << (r.by_property.empty() ? "" : r.by_property.begin()->first);
   EXPECT_TRUE(r.saved.empty());
@@ -68,7 +68,7 @@ TEST(Subjects, SinglePrecisionIsCaughtAndReplays) {
   const auto mine = subject<kSphere>("float-inputs", [collide_fn](const Cylinder& c, const Sphere& s) {
     return collide_fn(c, s).hit;
   }, collide_fn);
-  const VerifyResult r = verify<kSphere>(mine, options("float", 400));
+  const VerifyResult r = verify(mine, options("float", 400));
   EXPECT_GT(r.failures, 0);
   ASSERT_FALSE(r.saved.empty());
   for (const auto& path : r.saved) {
@@ -77,8 +77,8 @@ TEST(Subjects, SinglePrecisionIsCaughtAndReplays) {
     EXPECT_EQ(p.value.query, kSphere);
     EXPECT_TRUE(std::filesystem::exists(std::filesystem::path(path).replace_extension(".html"))) << path;
   }
-  EXPECT_EQ(replay<kSphere>(mine, r.saved), static_cast<int>(r.saved.size()));
-  EXPECT_EQ(replay<kSphere>(production_of<kSphere>(), r.saved), 0);
+  EXPECT_EQ(replay(mine, r.saved), static_cast<int>(r.saved.size()));
+  EXPECT_EQ(replay(production_of<kSphere>(), r.saved), 0);
 }
 
 // A subject that throws on some inputs fails those cases, and the run goes on.
@@ -89,7 +89,7 @@ TEST(Subjects, ThrowingSubjectFailsItsCases) {
         if (s.r > c.r) throw std::runtime_error("radius too large for me");
         return collide(c, s);
       });
-  const VerifyResult r = verify<kSphere>(mine, options("throws", 300));
+  const VerifyResult r = verify(mine, options("throws", 300));
   EXPECT_EQ(r.cases, 300);
   EXPECT_GT(count(r, "subject-threw"), 0);
   EXPECT_EQ(r.failures, count(r, "subject-threw"));
@@ -103,7 +103,7 @@ TEST(Subjects, NaNAnswerFails) {
                                        if (k.hit) k.depth = NAN;
                                        return k;
                                      });
-  const VerifyResult r = verify<kSphere>(mine, options("nan", 200));
+  const VerifyResult r = verify(mine, options("nan", 200));
   EXPECT_GT(count(r, "robust-finite-output"), 0);
   EXPECT_FALSE(r.saved.empty());
 }
@@ -116,7 +116,7 @@ TEST(Subjects, CrashingSubjectIsContained) {
                                        if (s.r > 2 * c.r && s.r < 2.5 * c.r) std::abort();
                                        return collide(c, s);
                                      });
-  const VerifyResult r = verify<kSphere>(mine, options("aborts", 300));
+  const VerifyResult r = verify(mine, options("aborts", 300));
   EXPECT_EQ(r.cases, 300);
   EXPECT_GT(count(r, "subject-crashed"), 0);
   EXPECT_EQ(r.failures, count(r, "subject-crashed"));
@@ -139,7 +139,7 @@ TEST(Subjects, HangingSubjectIsContained) {
                                        }
                                        return collide(c, s);
                                      });
-  const VerifyResult r = verify<kSphere>(mine, opt);
+  const VerifyResult r = verify(mine, opt);
   EXPECT_EQ(r.cases, 100);
   EXPECT_EQ(count(r, "subject-hung"), 1);
   EXPECT_EQ(r.failures, 1);
@@ -154,17 +154,17 @@ TEST(Subjects, ClaimsAreWhatTheSubjectIsJudgedBy) {
   auto grown = [](const Cylinder& c, const Sphere& s) { return Sphere{s.c, s.r + 1e-9 * oracle::case_scale(c, s)}; };
   auto ov = [grown](const Cylinder& c, const Sphere& s) { return overlap(c, grown(c, s)); };
   auto co = [grown](const Cylinder& c, const Sphere& s) { return collide(c, grown(c, s)); };
-  const VerifyResult strict = verify<kSphere>(subject<kSphere>("grown", ov, co), options("strict", 600));
+  const VerifyResult strict = verify(subject<kSphere>("grown", ov, co), options("strict", 600));
   EXPECT_GT(count(strict, "oracle-verdict"), 0);
 
   Claims loose = production_claims<kSphere>();
   loose.margin = 1e-8;
-  const VerifyResult judged = verify<kSphere>(subject<kSphere>("grown-with-margin", ov, co, loose), options("loose", 600));
+  const VerifyResult judged = verify(subject<kSphere>("grown-with-margin", ov, co, loose), options("loose", 600));
   EXPECT_EQ(judged.failures, 0) << (judged.by_property.empty() ? "" : judged.by_property.begin()->first);
 
   Claims inexact = production_claims<kSphere>();
   inexact.exact_verdict = false;
-  const VerifyResult unjudged = verify<kSphere>(subject<kSphere>("grown-inexact", ov, co, inexact), options("inexact", 600));
+  const VerifyResult unjudged = verify(subject<kSphere>("grown-inexact", ov, co, inexact), options("inexact", 600));
   EXPECT_EQ(count(unjudged, "oracle-verdict"), 0);
   EXPECT_GT(count(unjudged, "oracle-depth"), 0);
 }

@@ -5,7 +5,8 @@
 # The example's collide (single precision) is wrong, so the run must exit 1,
 # save failing cases with their drawings, and print a replay command that
 # reproduces the failure; a run of production's own collide through the
-# same door (the example with the float code swapped out) must pass.
+# same door (the example with the float code swapped out) must pass; and,
+# where clang is, the example's libFuzzer target must find a failure.
 # usage: test_installed_example.sh CMAKE BUILD_DIR SOURCE_DIR WORK_DIR
 set -u
 cmake=$1 build=$2 src=$3 work=$4
@@ -15,9 +16,10 @@ fail() { echo "FAIL: $*"; exit 1; }
 [ -f "$work/prefix/lib/cmake/geomcheck/geomcheckConfig.cmake" ] || fail "no geomcheckConfig.cmake installed"
 cp -r "$src/examples/verify-my-collide" "$work/example"
 # The same example with production's collide in place of the float one: the door must let a right answer pass.
-sed -e 's/const MyContact k = my_collide.*/return geomcheck::collide(c, s);/' \
-    -e '/return Contact{k.hit/d' -e 's/"my-float-collide"/"production-through-verify"/' "$work/example/main.cpp" > "$work/example/main_production.cpp"
-grep -q "return geomcheck::collide(c, s);" "$work/example/main_production.cpp" || fail "could not derive the production variant"
+sed -e 's/const MyContact k = my_collide.*/return geomcheck::collide(c, s);/' -e '/return Contact{k.hit/d' \
+    -e 's/"my-float-collide"/"production-through-verify"/' "$work/example/my_collide.hpp" > "$work/example/production.hpp"
+grep -q "return geomcheck::collide(c, s);" "$work/example/production.hpp" || fail "could not derive the production variant"
+sed 's/my_collide.hpp/production.hpp/' "$work/example/main.cpp" > "$work/example/main_production.cpp"
 cat >> "$work/example/CMakeLists.txt" <<'CM'
 add_executable(verify_production main_production.cpp)
 target_link_libraries(verify_production PRIVATE geomcheck::subjects)
@@ -45,4 +47,18 @@ cat "$work/replay.log"
 
 "$work/build/verify_production" --cases 400 --out "$work/out-production" > "$work/production.log" 2>&1 \
   || { cat "$work/production.log"; fail "production's collide through the same door failed"; }
-echo "PASS: installed package found, the float collide caught ($cases cases saved), production passes"
+# With clang: the same subject as a libFuzzer target (geomcheck::fuzzing) finds a failing input.
+fuzz="not built (no clang++)"
+if command -v clang++ > /dev/null; then
+  "$cmake" -S "$work/example" -B "$work/build-clang" "${gen[@]}" -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_COMPILER=clang++ \
+    -DCMAKE_PREFIX_PATH="$work/prefix" > "$work/configure-clang.log" 2>&1 || { cat "$work/configure-clang.log"; fail "configuring with clang"; }
+  "$cmake" --build "$work/build-clang" --target fuzz_my_collide > "$work/build-clang.log" 2>&1 \
+    || { cat "$work/build-clang.log"; fail "building the fuzz target"; }
+  (cd "$work" && "$work/build-clang/fuzz_my_collide" -seed=1 -runs=200000 -max_total_time=120) > "$work/fuzz.log" 2>&1
+  fstatus=$?
+  tail -20 "$work/fuzz.log"
+  [ "$fstatus" -ne 0 ] && grep -q "==== geomcheck collide_cylinder_sphere property failed" "$work/fuzz.log" \
+    || fail "the fuzz target did not find the float collide's failure (exit $fstatus)"
+  fuzz="the fuzz target finds it too"
+fi
+echo "PASS: installed package found, the float collide caught ($cases cases saved), production passes; $fuzz"

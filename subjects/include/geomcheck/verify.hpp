@@ -112,24 +112,23 @@ struct VerifyResult {
   std::vector<std::filesystem::path> saved;      ///< case files saved (a .html drawing beside each)
 };
 
-/// Holds `subject` to every property of query Q on opt.cases targeted cases
-/// (see the header comment); prints a summary and returns the counts.
-template <QueryId Q>
-VerifyResult verify(const ImplOf<Q>& subject, const VerifyOptions& opt);
-
-/// Replays case files of query Q against `subject`: every property, the
-/// truth and the subject's answer printed; the number of failing cases.
-template <QueryId Q>
-int replay(const ImplOf<Q>& subject, const std::vector<std::filesystem::path>& files);
-
-/// The whole program: options from the command line (see the header
-/// comment), then verify() or replay(); the exit status.
-template <QueryId Q>
-int verify(const ImplOf<Q>& subject, int argc, char** argv);
-/// The same, the query taken from the subject's type.
-template <QueryId Q>
-int verify(const Subject<Q>& subject, int argc, char** argv) {
-  return verify<Q>(static_cast<const ImplOf<Q>&>(subject), argc, argv);
-}
+// For every registered query Q, as plain overloads on its subject type
+// ImplOf<Q> (a Subject<Q> converts), so that they link the same from any
+// compiler:
+//   VerifyResult verify(subject, const VerifyOptions& opt)
+//       holds `subject` to every property on opt.cases targeted cases (see
+//       the header comment); prints a summary and returns the counts;
+//   int replay(subject, files)
+//       replays case files of Q against `subject`: every property, the
+//       truth and the subject's answer printed; the number of failing cases;
+//   int verify(subject, argc, argv)
+//       the whole program: options from the command line (see the header
+//       comment), then verify() or replay(); the exit status.
+#define GEOMCHECK_X(id, kind, A, B, summary)                                                          \
+  VerifyResult verify(const ImplOf<QueryId::id>& subject, const VerifyOptions& opt);                  \
+  int replay(const ImplOf<QueryId::id>& subject, const std::vector<std::filesystem::path>& files);    \
+  int verify(const ImplOf<QueryId::id>& subject, int argc, char** argv);
+GEOMCHECK_QUERY_LIST(GEOMCHECK_X)
+#undef GEOMCHECK_X
 
 }  // namespace geomcheck

@@ -256,16 +256,20 @@ inline std::string verdict_word(QueryId id, const Evaluation& e) {
 CheckResult judge(QueryId id, const Evaluation& e, const Claims* claims = nullptr);
 
 // --- every query, by kind (properties/src/kind_checks.cpp) ------------------
-/// Any input, valid or not: no crash; invalid input gives no hit; a hit's
-/// output is finite and its normal unit (a cast's or sweep's t in [0, 1]);
-/// collide queries: overlap agrees with collide's hit.
-template <class Case>
-CheckResult check_robust(const Case& c, const ImplOfCase<Case>& impl = production_of<query_of_case<Case>>());
-/// Every check of the query, in order, stopping at the first failure:
-/// robust, then (valid input only) oracle, consistency, symmetry, every
-/// metamorphic move, monotone.
-template <class Case>
-CheckResult check_all(const Case& c, const ImplOfCase<Case>& impl = production_of<query_of_case<Case>>());
+// Declared for every registered query as plain overloads (not templates), so
+// that their names link the same from any compiler:
+//   check_robust  any input, valid or not: no crash; invalid input gives no
+//                 hit; a hit's output is finite and its normal unit (a
+//                 cast's or sweep's t in [0, 1]); collide queries: overlap
+//                 agrees with collide's hit.
+//   check_all     every check of the query, in order, stopping at the first
+//                 failure: robust, then (valid input only) oracle,
+//                 consistency, symmetry, every metamorphic move, monotone.
+#define GEOMCHECK_X(id, kind, A, B, summary)                                                                    \
+  CheckResult check_robust(const PairCase<A, B>& c, const ImplOf<QueryId::id>& impl = production_of<QueryId::id>()); \
+  CheckResult check_all(const PairCase<A, B>& c, const ImplOf<QueryId::id>& impl = production_of<QueryId::id>());
+GEOMCHECK_QUERY_LIST(GEOMCHECK_X)
+#undef GEOMCHECK_X
 
 // --- every query: the checks that are the query's own ----------------------
 // Declared here for every registered query; each defined in

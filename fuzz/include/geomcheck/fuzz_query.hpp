@@ -1,4 +1,12 @@
-// geomcheck — the body shared by every query's libFuzzer target.
+// geomcheck — the body shared by every query's libFuzzer target, and the
+// fuzz door for anyone's subject (verify.hpp's subject()):
+//
+//   extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+//     return geomcheck::fuzz::run_one<geomcheck::QueryId::collide_cylinder_sphere>(data, size, mine);
+//   }
+//
+// (compiled by clang with -fsanitize=fuzzer; the package's target
+// geomcheck::fuzzing).
 //
 // Inputs decode with fuzz_decode.hpp. Raw mode checks robustness
 // (check_robust: no crash, no UB, invalid input gives no hit, finite output,
@@ -24,14 +32,15 @@ template <QueryId Q>
   std::abort();
 }
 
-/// One input: raw mode checks robustness, structured mode every property.
-/// `impl` is production by default; the teeth targets pass a known-wrong
-/// variant (test-only binaries, see fuzz/CMakeLists.txt).
+/// One input: raw mode checks robustness, structured mode every property,
+/// of `impl`: production by default; the teeth targets pass a known-wrong
+/// variant (test-only binaries, see fuzz/CMakeLists.txt), a user their own
+/// subject.
 template <QueryId Q, class... Impl>
 int run_one(const std::uint8_t* data, std::size_t size, const Impl&... impl) {
   const auto c = decode<Q>(data, size);
   if (mode_of(data, size) == Mode::Raw) {
-    if (auto f = check_robust(c)) report<Q>(c, *f, "raw");
+    if (auto f = check_robust(c, impl...)) report<Q>(c, *f, "raw");
     return 0;
   }
   if (!is_valid(c.a) || !is_valid(c.b)) return 0;
