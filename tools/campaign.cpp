@@ -84,6 +84,8 @@ class QueryRun {
     rep_.name = info(Q).name;
     rep_.summary = info(Q).summary;
     rep_.subject = impl_->name;
+    rep_.claims = impl_->claims ? *impl_->claims : Spec<Q>::claims();
+    rep_.own_claims = impl_->claims != nullptr;
     rep_.tol = tolerances(Q);
     rep_.depth_is_bound = Spec<Q>::claims().depth == Claims::Depth::UpperBound;
   }

@@ -132,10 +132,35 @@ void error_row(std::ostream& h, const char* n, Series& s, double bound) {
     << (bound > 0 && mx > bound ? "bad" : "") << "'>" << jnum(mx) << "</td><td>" << hist_svg(s, bound) << "</td></tr>";
 }
 
+// What the subject is held to, in words.
+std::string claims_text(const QueryReport& r) {
+  const Claims& c = r.claims;
+  const std::string whose = r.own_claims ? "claims of " + r.subject
+                            : (r.subject == "production" ? std::string("claims") : "claims of " + r.subject + " (production's)");
+  std::string t = whose + ": verdict " + (c.exact_verdict ? "exact" : "not exact") + "; depth: " + to_string(c.depth) +
+                  "; point " + (c.point_in_both ? "claimed" : "not claimed") + "; touching " +
+                  (c.touching_is_contact ? "is" : "is not") + " contact";
+  if (c.margin > 0) t += "; margin " + jnum(c.margin) + " * scale";
+  if (*c.normal) t += std::string("; normal: ") + c.normal;
+  if (*c.truth) t += std::string("; truth: ") + c.truth;
+  return t;
+}
+
+// The claims as JSON.
+std::string claims_json(const QueryReport& r) {
+  const Claims& c = r.claims;
+  auto b = [](bool v) { return v ? "true" : "false"; };
+  return std::string("{\"subject\": ") + jstr(r.subject) + ", \"own\": " + b(r.own_claims) +
+         ", \"exact_verdict\": " + b(c.exact_verdict) + ", \"depth\": " + jstr(to_string(c.depth)) +
+         ", \"point_in_both\": " + b(c.point_in_both) + ", \"touching_is_contact\": " + b(c.touching_is_contact) +
+         ", \"margin\": " + jnum(c.margin) + ", \"normal\": " + jstr(c.normal) + ", \"truth\": " + jstr(c.truth) + "}";
+}
+
 // A query's section: its verdicts, errors, depth ratio, failures, drawings.
 void write_query_section(std::ostream& h, QueryReport& r) {
   const bool clean = r.beyond == 0 && r.check_failures == 0;
-  h << "<h2 id='" << r.name << "'>" << r.name << "</h2><p>" << html(r.summary) << "</p><p class='"
+  h << "<h2 id='" << r.name << "'>" << r.name << "</h2><p>" << html(r.summary) << "</p><p class='claims'>"
+    << html(claims_text(r)) << "</p><p class='"
     << (clean ? "ok'>verified: no disagreement beyond the band, every property holds" : "bad'>FAILURES found")
     << "</p><table><tr><th class='l'>measure</th><th>production</th><th>FCL</th></tr>"
     << "<tr><td class='l'>cases run of requested (valid)</td><td>" << r.cases << " of " << r.requested << " ("
@@ -287,6 +312,7 @@ void write_json(const std::filesystem::path& file, const RunInfo& run, std::vect
   for (std::size_t i = 0; i < reps.size(); ++i) {
     QueryReport& r = reps[i];
     js << "    {\n      \"id\": " << jstr(r.name) << ",\n      \"summary\": " << jstr(r.summary)
+       << ",\n      \"claims\": " << claims_json(r)
        << ",\n      \"requested\": " << r.requested << ", \"stopped_by_time\": " << (r.stopped_by_time ? "true" : "false")
        << ",\n      \"cases\": " << r.cases << ", \"valid\": " << r.valid << ", \"production_hits\": " << r.prod_hits
        << ", \"oracle_hits\": " << r.truth_hits << ",\n      \"hit_rate\": " << jnum(r.valid ? double(r.prod_hits) / r.valid : NAN)
@@ -347,7 +373,7 @@ void write_html(const std::filesystem::path& file, const RunInfo& run, std::vect
   h << "<!doctype html><html lang='en'><head><meta charset='utf-8'><title>geomcheck campaign report</title>"
        "<style>body{font-family:sans-serif;margin:2em;max-width:1100px}table{border-collapse:collapse;margin:1em 0}"
        "td,th{border:1px solid #bbb;padding:4px 8px;text-align:right}th{background:#eee}td.l,th.l{text-align:left}"
-       ".bad{color:#b00;font-weight:bold}.ok{color:#070}figure.cx{margin:1em 0;border-top:1px solid #ddd}"
+       ".bad{color:#b00;font-weight:bold}.ok{color:#070}.claims{font-size:13px;color:#444}figure.cx{margin:1em 0;border-top:1px solid #ddd}"
        "figure.cx svg{margin-right:6px}figcaption{font-size:12px;margin:4px 0;word-break:break-all}"
        ".legend{font-size:12px;margin:2px 0}</style></head><body>"
        "<h1>geomcheck campaign report</h1><p>seed <code>"

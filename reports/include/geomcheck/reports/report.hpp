@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "geomcheck/properties/checks.hpp"
 #include "geomcheck/properties/tolerances.hpp"
 
 namespace geomcheck::report {
@@ -44,6 +45,8 @@ struct Series {
 struct QueryReport {
   std::string name, summary;
   std::string subject = "production";  ///< the subject under test (a variant's name)
+  Claims claims{};               ///< what the subject is held to
+  bool own_claims = false;       ///< the subject's own claims (else production's)
   int requested = 0;             ///< cases asked for
   bool stopped_by_time = false;  ///< --seconds ran out before every requested case ran
   int cases = 0, valid = 0, prod_hits = 0, truth_hits = 0;
