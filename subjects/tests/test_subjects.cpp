@@ -169,5 +169,21 @@ TEST(Subjects, ClaimsAreWhatTheSubjectIsJudgedBy) {
   EXPECT_GT(count(unjudged, "oracle-depth"), 0);
 }
 
+// The same yardstick as a RapidCheck property (RC_PARAMS from ctest: a fixed
+// seed): production through the door passes, the float subject is caught.
+TEST(Subjects, RapidCheckPropertyOfASubject) {
+  EXPECT_TRUE(rapidcheck(subject<kSphere>(
+      "production-again", [](const Cylinder& c, const Sphere& s) { return overlap(c, s); },
+      [](const Cylinder& c, const Sphere& s) { return collide(c, s); })));
+  auto f = [](Vec3 v) { return Vec3{float(v.x), float(v.y), float(v.z)}; };
+  auto floated = [f](const Cylinder& c, const Sphere& s) {
+    Contact k = collide(c, s);
+    k.normal = f(k.normal);
+    return k;
+  };
+  EXPECT_FALSE(rapidcheck(subject<kSphere>(
+      "float-normal", [](const Cylinder& c, const Sphere& s) { return overlap(c, s); }, floated)));
+}
+
 }  // namespace
 }  // namespace geomcheck

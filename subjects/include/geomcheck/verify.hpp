@@ -17,6 +17,9 @@
 //     return geomcheck::verify(mine, argc, argv);
 //   }
 //
+// rapidcheck(subject) is the same yardstick as a RapidCheck property (shrunk
+// counterexamples, RC_PARAMS), for a user's own property suite.
+//
 // verify() draws `cases` targeted cases of the query from a fixed seed
 // (printed; the same seed gives the same cases) and holds the subject to
 // every property (check_all: robustness on any input, agreement with the
@@ -54,6 +57,7 @@
 #include <utility>
 #include <vector>
 
+#include "geomcheck/casefile.hpp"
 #include "geomcheck/properties/checks.hpp"
 #include "geomcheck/properties/spec.hpp"
 
@@ -111,6 +115,22 @@ struct VerifyResult {
   std::map<std::string, int> by_property;       ///< failing cases by the property they failed
   std::vector<std::filesystem::path> saved;      ///< case files saved (a .html drawing beside each)
 };
+
+/// The subject as a RapidCheck property: targeted cases of Q drawn by
+/// RapidCheck (its seed and case count: RC_PARAMS), every property
+/// (check_all) on each; a failing case is shrunk by RapidCheck and printed
+/// with its failure and its case file. True when every case passed.
+template <QueryId Q>
+bool rapidcheck(const Subject<Q>& subject) {
+  const auto gen = Spec<Q>::targeted();
+  const ImplOf<Q>& impl = subject;
+  return rc::check(std::string(impl.name) + " holds every property of " + info(Q).name, [&gen, &impl] {
+    const auto tagged = *gen;
+    if (const CheckResult f = check_all(tagged.first, impl))
+      RC_FAIL(f->property + ": " + f->detail + "\n" +
+              write_case(from_case<Q>(tagged.first, "rapidcheck " + tagged.second, "", f->property)));
+  });
+}
 
 // For every registered query Q, as plain overloads on its subject type
 // ImplOf<Q> (a Subject<Q> converts), so that they link the same from any
