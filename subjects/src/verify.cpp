@@ -65,7 +65,8 @@ Evaluation truth_of(const typename QueryTraits<Q>::Case& c, const ImplOf<Q>& sub
   }
 }
 
-/// Saves a failing case: its case file and, beside it, a page drawing it.
+/// Saves a failing case: its case file (the truth's verdict filed, none on
+/// invalid input, as replay expects) and, beside it, a page drawing it.
 template <QueryId Q>
 bool save_failure(const typename QueryTraits<Q>::Case& c, const ImplOf<Q>& subject, const Failure& f,
                   const VerifyOptions& opt, int index, std::filesystem::path& path, bool with_answer) {
@@ -78,7 +79,7 @@ bool save_failure(const typename QueryTraits<Q>::Case& c, const ImplOf<Q>& subje
   const Evaluation e = with_answer ? truth_of<Q>(c, subject) : evaluate(c, production_of<Q>());
   CaseFile file = from_case<Q>(c, "verify " + std::string(subject.name) + " seed=" + std::to_string(opt.seed) +
                                       " case=" + std::to_string(index),
-                               verdict_word(Q, e), f.property + ": " + f.detail);
+                               e.valid ? verdict_word(Q, e) : std::string(), f.property + ": " + f.detail);
   std::string err;
   if (!save_case(path, file, err)) {
     std::fprintf(stderr, "verify: cannot save %s: %s\n", path.string().c_str(), err.c_str());
