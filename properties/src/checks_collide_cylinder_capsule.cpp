@@ -65,6 +65,9 @@ void hold_to_truth(Evaluation& e, const CylinderCapsuleCase& c, const Contact& c
   };
   score(ct, e.unit_err, e.depth_err, e.normal_err, e.point_err);
   if (peer) score(*peer, e.peer.unit_err, e.peer.depth_err, e.peer.normal_err, e.peer.point_err);
+  // The sides of the penetration depth where the truth gives it (shallow).
+  if (ct.hit && e.truth_hit && truth.core_outside && truth.core_distance.lo > times_scale(1e-6, e.scale))
+    score_depth_sides(e, -truth.signed_distance, ct.depth);
 }
 
 CheckResult check_consistency(const CylinderCapsuleCase& c, const CylinderCapsuleImpl& impl) {

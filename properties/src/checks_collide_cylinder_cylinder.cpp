@@ -122,6 +122,10 @@ void hold_to_truth(Evaluation& e, const CylinderCylinderCase& c, const Contact& 
   std::optional<oracle::PenetrationResult> pd;
   const Score m = score_contact(ct, e.truth_hit, truth.verdict, qa, qb, sa, sb, e.scale, pd);
   e.unit_err = m.unit, e.depth_err = m.depth, e.point_err = m.point, e.depth_ratio = m.ratio;
+  if (ct.hit && e.truth_hit) {
+    if (truth.verdict == Verdict::Touching) score_depth_sides(e, oracle::point(Q(0)), ct.depth);
+    else if (pd && pd->overlapping) score_depth_sides(e, pd->depth, ct.depth);
+  }
   if (peer) {
     const Score p = score_contact(*peer, e.truth_hit, truth.verdict, qa, qb, sa, sb, e.scale, pd);
     e.peer.unit_err = p.unit, e.peer.depth_err = p.depth, e.peer.point_err = p.point;

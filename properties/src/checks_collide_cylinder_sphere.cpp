@@ -70,6 +70,7 @@ void hold_to_truth(Evaluation& e, const CylinderSphereCase& c, const Contact& ct
   };
   score(ct, e.unit_err, e.depth_err, e.normal_err, e.point_err);
   if (peer) score(*peer, e.peer.unit_err, e.peer.depth_err, e.peer.normal_err, e.peer.point_err);
+  if (ct.hit && e.truth_hit) score_depth_sides(e, -truth.signed_distance, ct.depth);
 }
 
 CheckResult check_consistency(const CylinderSphereCase& c, const CylinderSphereImpl& impl) {

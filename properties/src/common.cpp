@@ -55,12 +55,47 @@ double rel_error(const oracle::QInterval& x, double v, double scale) {
   return rel_up(a > b ? a : b, scale);
 }
 
+void score_depth_sides(Evaluation& e, const QInterval& pd, double depth) {
+  if (!std::isfinite(depth) || !std::isfinite(oracle::to_double(pd.hi))) return;
+  const Q v = oracle::to_q(depth);
+  e.depth_short = v < pd.lo ? rel_up(pd.lo - v, e.scale) : 0.0;
+  e.depth_over = v > pd.hi ? rel_up(v - pd.hi, e.scale) : 0.0;
+}
+
 void widen_band(Evaluation& e, double margin) {
   if (!(margin > 0) || !e.valid) return;
   if (!(std::fabs(e.signed_distance) <= margin * e.scale) && !(e.disagree && e.margin <= margin)) return;
   e.near_boundary = true;
   if (e.disagree) e.excused = true;
 }
+
+namespace {
+
+/// judge()'s depth: production's claim held by depth_err; a subject's own
+/// depth claim by the side(s) of the penetration depth it claims.
+CheckResult judge_depth(QueryId id, const Evaluation& e, const Claims* claims, double bound, double margin) {
+  if (info(id).kind != QueryKind::Collide) {  // casts and sweeps: no depth; t is judged below
+    if (std::isnan(e.depth_err) || e.depth_err <= bound + margin) return std::nullopt;
+    return Failure{"oracle-depth", fmt("depth error %.3g * scale exceeds bound %.3g", e.depth_err, bound + margin) +
+                                       "; oracle: " + e.truth_text + "; production: " + e.prod_text};
+  }
+  using Depth = Claims::Depth;
+  const Depth production = visit_query(id, [](auto q) { return spec_of<decltype(q)::value>().claims.depth; });
+  const Depth claimed = claims ? claims->depth : production;
+  double err = e.depth_err;
+  const char* what = "depth error";
+  if (claimed == Depth::None) return std::nullopt;
+  if (claimed == Depth::UpperBound && production != Depth::UpperBound) {
+    err = e.depth_short, what = "depth below the penetration depth by";
+  } else if (claimed != Depth::UpperBound && production == Depth::UpperBound) {
+    if (e.depth_over > e.depth_err || std::isnan(e.depth_err)) err = e.depth_over, what = "depth above the penetration depth by";
+  }
+  if (std::isnan(err) || err <= bound + margin) return std::nullopt;
+  return Failure{"oracle-depth", std::string(what) + fmt(" %.3g * scale exceeds bound %.3g", err, bound + margin) +
+                                     "; oracle: " + e.truth_text + "; production: " + e.prod_text};
+}
+
+}  // namespace
 
 CheckResult judge(QueryId id, const Evaluation& e, const Claims* claims) {
   const Tolerances tol = tolerances(id);
@@ -85,11 +120,9 @@ CheckResult judge(QueryId id, const Evaluation& e, const Claims* claims) {
                    std::string(what) + fmt(" error %.3g * scale exceeds bound %.3g", err, bound + margin) +
                        "; oracle: " + e.truth_text + "; production: " + e.prod_text};
   };
-  const bool depth_claimed = !claims || claims->depth != Claims::Depth::None || info(id).kind != QueryKind::Collide;
   const bool point_claimed = !claims || claims->point_in_both;
   if (auto f = over("unit", e.unit_err, tol.unit)) return f;
-  if (depth_claimed)
-    if (auto f = over("depth", e.depth_err, tol.depth)) return f;
+  if (auto f = judge_depth(id, e, claims, tol.depth, margin)) return f;
   if (auto f = over("normal", e.normal_err, tol.normal)) return f;
   if (point_claimed)
     if (auto f = over("point", e.point_err, tol.point)) return f;

@@ -48,6 +48,10 @@ double rel_error(const oracle::QInterval& x, double v, double scale);
 /// rims) within qnear of x; INFINITY when x is near no feature.
 double cylinder_normal_error(const oracle::QCylinder& c, const oracle::QVec& x, Vec3 n, const oracle::Q& qnear);
 
+/// Sets e.depth_short and e.depth_over: where the subject's depth lies
+/// certainly below or above the certified penetration depth `pd`.
+void score_depth_sides(Evaluation& e, const oracle::QInterval& pd, double depth);
+
 /// The margin a subject claims (Claims::margin, a multiple of scale); 0 for
 /// production and every subject without claims of its own.
 template <class Impl>

@@ -139,6 +139,10 @@ void score_polytope_contacts(Evaluation& e, const Contact& mine, const Contact* 
   const ContactErrors m = score_polytope_contact(mine, e.truth_hit, truth, qcyl, cyl, shape, e.scale, depth_bound, pd,
                                                  outside_b, &wide);
   e.unit_err = m.unit, e.depth_err = m.depth, e.normal_err = m.normal, e.point_err = m.point;
+  if (mine.hit && e.truth_hit) {
+    if (truth.verdict == Verdict::Touching) score_depth_sides(e, oracle::point(Q(0)), mine.depth);
+    else if (pd && pd->overlapping) score_depth_sides(e, pd->depth, mine.depth);
+  }
   if (peer) {
     const ContactErrors t = score_polytope_contact(*peer, e.truth_hit, truth, qcyl, cyl, shape, e.scale, depth_bound,
                                                    pd, outside_b, &wide);

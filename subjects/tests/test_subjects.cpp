@@ -13,6 +13,7 @@
 #include <thread>
 
 #include "geomcheck/casefile.hpp"
+#include "geomcheck/collide_cylinder_cylinder.hpp"
 #include "geomcheck/collide_cylinder_sphere.hpp"
 #include "geomcheck/oracles/solids.hpp"
 #include "geomcheck/verify.hpp"
@@ -171,6 +172,49 @@ TEST(Subjects, ClaimsAreWhatTheSubjectIsJudgedBy) {
 
 // The same yardstick as a RapidCheck property (RC_PARAMS from ctest: a fixed
 // seed): production through the door passes, the float subject is caught.
+// A depth claim other than production's is judged by its own side(s) of
+// the certified penetration depth PD: an upper bound only from below, the
+// true PD (stronger than cylinder/cylinder production's upper bound) from
+// both sides.
+TEST(Subjects, DepthClaimsOtherThanProductionsAreJudgedByTheirSides) {
+  Evaluation e;
+  e.valid = true;
+  e.verdict = oracle::Verdict::Overlapping;
+  e.prod_hit = e.truth_hit = true;
+  e.depth_err = e.depth_over = 0.1;  // 0.1 * scale above PD
+  e.depth_short = 0;
+  constexpr QueryId kBox = QueryId::collide_cylinder_obb, kCyl = QueryId::collide_cylinder_cylinder;
+  Claims upper = production_claims<kBox>();
+  upper.depth = Claims::Depth::UpperBound;
+  EXPECT_TRUE(judge(kBox, e, nullptr).has_value());  // production's claim: PD
+  EXPECT_FALSE(judge(kBox, e, &upper).has_value());  // an upper bound may lie above
+  e.depth_short = 0.1;
+  EXPECT_TRUE(judge(kBox, e, &upper).has_value());  // but never below
+
+  e.depth_err = 0, e.depth_short = 0;  // cylinder/cylinder's depth_err: the shortfall alone
+  Claims minimal = production_claims<kCyl>();
+  minimal.depth = Claims::Depth::Penetration;
+  EXPECT_FALSE(judge(kCyl, e, nullptr).has_value());  // production claims an upper bound
+  const CheckResult f = judge(kCyl, e, &minimal);
+  ASSERT_TRUE(f.has_value());
+  EXPECT_EQ(f->property, "oracle-depth");
+}
+
+// Production's cylinder/cylinder contact claimed as the true penetration
+// depth: its depth is the overlap along one of the talk's candidate
+// directions, above PD on some cases, and the stronger claim fails there.
+TEST(Subjects, StrongerClaimThanProductionsIsHeld) {
+  constexpr QueryId kCyl = QueryId::collide_cylinder_cylinder;
+  Claims minimal = production_claims<kCyl>();
+  minimal.depth = Claims::Depth::Penetration;
+  const auto mine = subject<kCyl>(
+      "claims-minimal", [](const Cylinder& a, const Cylinder& b) { return overlap(a, b); },
+      [](const Cylinder& a, const Cylinder& b) { return collide(a, b); }, minimal);
+  const VerifyResult r = verify(mine, options("claims-minimal", 300));
+  EXPECT_GT(count(r, "oracle-depth"), 0);
+  EXPECT_EQ(count(r, "oracle-depth"), r.failures);
+}
+
 TEST(Subjects, RapidCheckPropertyOfASubject) {
   EXPECT_TRUE(rapidcheck(subject<kSphere>(
       "production-again", [](const Cylinder& c, const Sphere& s) { return overlap(c, s); },

@@ -237,6 +237,15 @@ struct Evaluation {
   /// engine's enclosure of it is within 1% (relative) and it is at least
   /// 1e-9 * scale (below that, rounding decides the ratio); NaN otherwise.
   double depth_ratio = NAN;
+  /// Collide queries, where the truth encloses the penetration depth PD
+  /// (the shapes overlapping or touching): how far production's depth
+  /// certainly lies below PD (depth_short) and above it (depth_over), as
+  /// multiples of `scale`, 0 where it may lie inside; NaN where not
+  /// measured. They judge a subject whose depth claim differs from
+  /// production's (judge()): an upper bound is held by depth_short alone,
+  /// the true penetration depth on a query whose production claims only an
+  /// upper bound also by depth_over.
+  double depth_short = NAN, depth_over = NAN;
 };
 
 /// The oracle's verdict in the words of case files' `oracle-verdict`:
@@ -247,12 +256,16 @@ inline std::string verdict_word(QueryId id, const Evaluation& e) {
 
 /// Compares an evaluation with the query's tolerances (tolerances.hpp) and
 /// what production claims, or, given a subject's `claims`, with what that
-/// subject claims. A subject's claims can only relax production's
-/// yardsticks: an inexact verdict (disagreements reported, not failed),
+/// subject claims: an inexact verdict (disagreements reported, not failed),
 /// touching not counted as contact (a miss where the truth is touching
-/// passes), no depth or no point-in-both claim (those errors not judged),
-/// and a margin (a disagreement within margin * scale of touching passes;
-/// every error bound grows by the margin).
+/// passes), no depth or no point-in-both claim (those errors not judged), a
+/// margin (a disagreement within margin * scale of touching passes; every
+/// error bound grows by the margin), and the depth's meaning: a subject
+/// claiming an upper bound (a consistent contact) where production claims
+/// the penetration depth is held only to not falling below it
+/// (depth_short); one claiming the true penetration depth where production
+/// claims an upper bound (collide_cylinder_cylinder) is held to it from
+/// both sides (depth_over too), a stronger claim than production's.
 CheckResult judge(QueryId id, const Evaluation& e, const Claims* claims = nullptr);
 
 // --- every query, by kind (properties/src/kind_checks.cpp) ------------------
