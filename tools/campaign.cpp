@@ -178,24 +178,8 @@ class QueryRun {
 
   // One evaluated case into the report.
   void gather(const Row& r) {
-    const Evaluation& e = r.e;
-    ++rep_.cases;
-    if (!e.valid) return;
-    ++rep_.valid;
-    rep_.prod_hits += e.prod_hit;
-    rep_.truth_hits += e.truth_hit;
-    rep_.verdicts[verdict_word(Q, e)]++;
-    if (e.disagree) {
-      ++rep_.disagree;
-      if (e.excused) ++rep_.excused;
-      else ++rep_.beyond;
-      if (std::isfinite(e.margin)) rep_.worst_margin = std::max(rep_.worst_margin, e.margin);
-    }
-    rep_.depth.add(e.depth_err);
-    rep_.depth_ratio.add(e.depth_ratio);
-    rep_.normal.add(e.normal_err);
-    rep_.point.add(e.point_err);
-    rep_.t.add(e.t_err);
+    report::add_evaluation(rep_, Q, r.e);
+    if (!r.e.valid) return;
     if (r.fcl.supported) {
       ++rep_.fcl_supported;
       if (r.fcl.ok) gather_fcl(r);

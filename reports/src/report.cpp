@@ -10,6 +10,12 @@ namespace geomcheck::report {
 
 namespace {
 
+/// The command that replays one of r's counterexamples, less its path.
+std::string replay_prefix(const QueryReport& r) {
+  if (!r.replay.empty()) return r.replay;
+  return "geomcheck replay " + (r.subject == "production" ? std::string() : "--subject " + r.subject + " ");
+}
+
 std::string jnum(double x) {
   if (!std::isfinite(x)) return "null";
   char b[40];
@@ -207,8 +213,7 @@ void write_query_section(std::ostream& h, QueryReport& r) {
   if (!r.failures_by_property.empty()) {
     h << "<h3>failures</h3><ul>";
     for (const auto& [k, v] : r.failures_by_property) h << "<li>" << html(k) << ": " << v << "</li>";
-    h << "</ul><p>counterexamples (replay with <code>geomcheck replay "
-      << (r.subject == "production" ? std::string() : "--subject " + html(r.subject) + " ")
+    h << "</ul><p>counterexamples (replay with <code>" << html(replay_prefix(r))
       << "FILE</code>; each drawn in the "
          ".html beside it):</p><ul>";
     for (std::size_t k = 0; k < r.counterexamples.size() && k < 50; ++k)
@@ -437,8 +442,7 @@ void write_junit(const std::filesystem::path& file, const RunInfo& run, const st
                  const std::vector<PointSetReport>& point_sets) {
   std::vector<JunitCase> cases;
   for (const QueryReport& r : reps) {
-    const std::string prefix = "geomcheck replay " + (r.subject == "production" ? std::string() : "--subject " + r.subject + " ");
-    for (JunitCase& c : junit_cases(r, prefix)) cases.push_back(std::move(c));
+    for (JunitCase& c : junit_cases(r, replay_prefix(r))) cases.push_back(std::move(c));
   }
   for (const PointSetReport& r : point_sets)
     for (const char* prop : {"valid", "agrees-with-cgal"}) {

@@ -6,7 +6,11 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
+#include <chrono>
+#include <cmath>
 #include <csignal>
+#include <ctime>
 #include <cstdio>
 #include <cstdlib>
 #include <exception>
@@ -14,6 +18,7 @@
 
 #include "geomcheck/casefile.hpp"
 #include "geomcheck/properties/spec.hpp"
+#include "geomcheck/properties/tolerances.hpp"
 #include "geomcheck/reports/draw.hpp"
 #include "geomcheck/reports/report.hpp"
 
@@ -114,12 +119,62 @@ std::string claims_text(const ImplOf<Q>& subject) {
   return t;
 }
 
-/// A failure counted into res (and its case file, when one was saved).
-void count(VerifyResult& res, const std::string& property, const std::filesystem::path& saved) {
-  ++res.failures;
-  ++res.by_property[property];
-  if (!saved.empty()) res.saved.push_back(saved);
+/// What one case gave: the failure (none when every property held), the
+/// evaluation's figures (the report's counts and error measures) and the
+/// time of one call of the subject.
+struct Outcome {
+  CheckResult failure;
+  Evaluation e;
+  double ns = NAN;
+};
+
+/// The figures of an evaluation that a report counts, on one line (hex
+/// floats: exact), and back.
+std::string encode(const Evaluation& e, double ns) {
+  char b[512];
+  std::snprintf(b, sizeof b, "%d %d %d %d %d %d %d %a %a %a %a %a %a %a %a", e.valid, e.prod_hit, e.truth_hit,
+                static_cast<int>(e.verdict), e.disagree, e.excused, e.near_boundary, e.scale, e.margin, e.depth_err,
+                e.depth_ratio, e.normal_err, e.point_err, e.t_err, ns);
+  return b;
 }
+Outcome decode(const std::string& text) {
+  Outcome o;
+  Evaluation& e = o.e;
+  int f[7] = {};
+  double d[8] = {};
+  char* p = const_cast<char*>(text.c_str());
+  for (int& x : f) x = static_cast<int>(std::strtol(p, &p, 10));
+  for (double& x : d) x = std::strtod(p, &p);
+  e.valid = f[0], e.prod_hit = f[1], e.truth_hit = f[2], e.verdict = static_cast<oracle::Verdict>(f[3]);
+  e.disagree = f[4], e.excused = f[5], e.near_boundary = f[6];
+  e.scale = d[0], e.margin = d[1], e.depth_err = d[2], e.depth_ratio = d[3], e.normal_err = d[4], e.point_err = d[5];
+  e.t_err = d[6], o.ns = d[7];
+  return o;
+}
+
+/// What verify() gathers: the counts returned to the caller and the report.
+struct Tally {
+  VerifyResult res;
+  report::QueryReport rep;
+  std::vector<double> ns;  ///< the subject's time per call, one per case
+  /// A case's outcome (`saved`: its case file, when one was saved).
+  void add(QueryId id, const Outcome& o, const std::filesystem::path& saved) {
+    report::add_evaluation(rep, id, o.e);
+    if (std::isfinite(o.ns)) ns.push_back(o.ns);
+    if (o.failure) fail(o.failure->property, saved);
+  }
+  /// A failing case of `property` (and its case file, when one was saved).
+  void fail(const std::string& property, const std::filesystem::path& saved) {
+    ++res.failures;
+    ++res.by_property[property];
+    ++rep.check_failures;
+    ++rep.failures_by_property[property];
+    if (!saved.empty()) {
+      res.saved.push_back(saved);
+      rep.counterexamples.push_back(saved.string());
+    }
+  }
+};
 
 /// Runs check(i) for every i in [0, n) in a child process, so that a
 /// subject that crashes (a signal: a segfault, an abort) fails its case
@@ -128,32 +183,36 @@ void count(VerifyResult& res, const std::string& property, const std::filesystem
 /// "subject-hung" (saved without asking the subject again) and a new
 /// child goes on after it. A failure is saved and printed where it is found
 /// (save(i, failure, ask_subject) returns the case file, or nothing past
-/// the cap), and counted in res by the parent. Without fork, in process.
+/// the cap), and counted in `tally` by the parent from the child's line.
+/// Without `isolate` (or without fork), in process: the subject's state
+/// changes stay, and a crash ends the run.
 template <class Check, class Save>
-void run_guarded(int n, unsigned case_seconds, VerifyResult& res, Check&& check, Save&& save) {
+void run_guarded(QueryId id, int n, bool isolate, unsigned case_seconds, Tally& tally, Check&& check, Save&& save) {
   int next = 0;
   while (next < n) {
     int fds[2];
-    const pid_t pid = ::pipe(fds) == 0 ? ::fork() : -1;
+    const pid_t pid = isolate && ::pipe(fds) == 0 ? ::fork() : -1;
     if (pid < 0) {  // no child: in process
-      for (; next < n; ++next)
-        if (const CheckResult f = check(next)) count(res, f->property, save(next, *f, true));
+      for (; next < n; ++next) {
+        const Outcome o = check(next);
+        tally.add(id, o, o.failure ? save(next, *o.failure, true) : std::filesystem::path());
+      }
       return;
     }
-    if (pid == 0) {  // the child: a line per case, "<i>" or "<i>\t<property>\t<saved case file>"
+    if (pid == 0) {  // the child: a line per case, "<i>\t<property or ->\t<saved case file>\t<figures>"
       ::close(fds[0]);
       FILE* out = ::fdopen(fds[1], "w");
       for (int i = next; i < n; ++i) {
         ::alarm(case_seconds);  // a subject that hangs is ended by SIGALRM
-        const CheckResult f = check(i);
+        const Outcome o = check(i);
         ::alarm(0);
-        if (!f) {
-          std::fprintf(out, "%d\n", i);
-        } else {
-          const std::filesystem::path saved = save(i, *f, true);
-          count(res, f->property, saved);  // the child's copy: the cap per property
-          std::fprintf(out, "%d\t%s\t%s\n", i, f->property.c_str(), saved.string().c_str());
+        std::filesystem::path saved;
+        if (o.failure) {
+          saved = save(i, *o.failure, true);
+          tally.fail(o.failure->property, saved);  // the child's copy: the cap per property
         }
+        std::fprintf(out, "%d\t%s\t%s\t%s\n", i, o.failure ? o.failure->property.c_str() : "-", saved.string().c_str(),
+                     encode(o.e, o.ns).c_str());
         std::fflush(out);
       }
       std::fflush(stdout);
@@ -167,10 +226,12 @@ void run_guarded(int n, unsigned case_seconds, VerifyResult& res, Check&& check,
         line += static_cast<char>(ch);
         continue;
       }
-      const std::size_t t1 = line.find('\t');
-      if (t1 != std::string::npos) {
-        const std::size_t t2 = line.find('\t', t1 + 1);
-        count(res, line.substr(t1 + 1, t2 - t1 - 1), line.substr(t2 + 1));
+      const std::size_t t1 = line.find('\t'), t2 = line.find('\t', t1 + 1), t3 = line.find('\t', t2 + 1);
+      if (t3 != std::string::npos) {
+        Outcome o = decode(line.substr(t3 + 1));
+        const std::string property = line.substr(t1 + 1, t2 - t1 - 1);
+        if (property != "-") o.failure = Failure{property, ""};
+        tally.add(id, o, line.substr(t2 + 1, t3 - t2 - 1));
       }
       next = std::atoi(line.c_str()) + 1;
       line.clear();
@@ -184,33 +245,80 @@ void run_guarded(int n, unsigned case_seconds, VerifyResult& res, Check&& check,
                                                   : "exit status " + std::to_string(WEXITSTATUS(status));
       const Failure f = hung ? Failure{"subject-hung", "no answer within " + std::to_string(case_seconds) + " s"}
                              : Failure{"subject-crashed", "the subject ended the process (" + how + ")"};
-      count(res, f.property, save(next, f, false));
+      ++tally.rep.cases;  // run, and failed without an answer to count
+      tally.fail(f.property, save(next, f, false));
       ++next;
     }
   }
 }
 
+/// Now, UTC, ISO 8601.
+std::string utc_now() {
+  const std::time_t t = std::time(nullptr);
+  std::tm tm{};
+  gmtime_r(&t, &tm);
+  char b[32];
+  std::strftime(b, sizeof b, "%Y-%m-%dT%H:%M:%SZ", &tm);
+  return b;
+}
+
+/// report.json and report.html of a verify run (and a JUnit file when asked
+/// for) under opt.out, from the tally of subject's cases.
+template <QueryId Q>
+std::filesystem::path write_report(const ImplOf<Q>& subject, const VerifyOptions& opt, Tally& t, double seconds) {
+  report::QueryReport& rep = t.rep;
+  rep.name = info(Q).name;
+  rep.summary = info(Q).summary;
+  rep.subject = subject.name;
+  rep.replay = opt.program + " --replay ";
+  rep.claims = subject.claims ? *subject.claims : spec_of<Q>().claims;
+  rep.own_claims = subject.claims != nullptr;
+  rep.requested = opt.cases;
+  rep.tol = tolerances(Q);
+  rep.depth_is_bound = rep.claims.depth == Claims::Depth::UpperBound;
+  if (!t.ns.empty()) {  // the median call
+    std::nth_element(t.ns.begin(), t.ns.begin() + t.ns.size() / 2, t.ns.end());
+    rep.prod_ns = t.ns[t.ns.size() / 2];
+  }
+  rep.oracle_us = rep.cases ? seconds * 1e6 / rep.cases : NAN;
+  report::RunInfo run;
+  run.version = GEOMCHECK_VERSION;
+  run.started = opt.started.empty() ? utc_now() : opt.started;
+  run.command = opt.command.empty() ? opt.program : opt.command;
+  run.seed = opt.seed;
+  run.per_query = std::to_string(opt.cases) + " targeted cases";
+  run.rerun = opt.program + " --seed " + std::to_string(opt.seed) + " --cases " + std::to_string(opt.cases);
+  run.under_test = std::string(subject.name) + " (the subject verified)";
+  std::vector<report::QueryReport> reps{rep};
+  std::error_code ec;
+  std::filesystem::create_directories(opt.out, ec);
+  report::write_json(opt.out / "report.json", run, reps, {});
+  report::write_html(opt.out / "report.html", run, reps, {});
+  if (!opt.junit.empty()) report::write_junit(opt.junit, run, reps, {});
+  return opt.out / "report.html";
+}
 
 template <QueryId Q>
 VerifyResult verify_cases(const ImplOf<Q>& subject, const VerifyOptions& opt) {
   using Case = typename QueryTraits<Q>::Case;
-  VerifyResult res;
+  const auto start = std::chrono::steady_clock::now();
   const auto gen = Spec<Q>::targeted();
   // The campaign's derivation: the same seed draws the same cases there.
   rc::Random random(opt.seed ^ (0x9e3779b97f4a7c15ull * (static_cast<std::uint64_t>(Q) + 1)));
   std::vector<Tagged<Case>> cases;
   cases.reserve(opt.cases);
   for (int i = 0; i < opt.cases; ++i) cases.push_back(gen(random.split(), 50).value());
-  std::fprintf(stderr, "verify %s against %s: %d targeted cases, seed %llu\n", subject.name, info(Q).name, opt.cases,
-               static_cast<unsigned long long>(opt.seed));
+  std::fprintf(stderr, "verify %s against %s: %d targeted cases, seed %llu%s\n", subject.name, info(Q).name, opt.cases,
+               static_cast<unsigned long long>(opt.seed), opt.isolate ? "" : ", in process");
   std::printf("%s\n", claims_text<Q>(subject).c_str());
   std::fflush(stdout);
 
+  Tally tally;
   // A failure saved (the first opt.max_saved of its property) and announced.
   auto save = [&](int i, const Failure& f, bool ask_subject) -> std::filesystem::path {
     std::filesystem::path path;
-    const auto it = res.by_property.find(f.property);
-    if (it != res.by_property.end() && it->second >= opt.max_saved) return path;
+    const auto it = tally.res.by_property.find(f.property);
+    if (it != tally.res.by_property.end() && it->second >= opt.max_saved) return path;
     if (!save_failure<Q>(cases[i].first, subject, f, opt, i, path, ask_subject)) return {};
     if (!opt.quiet)
       std::printf("FAIL %s (case %d, %s): %s\n  drawn: %s\n  replay: %s --replay %s\n", f.property.c_str(), i,
@@ -220,8 +328,26 @@ VerifyResult verify_cases(const ImplOf<Q>& subject, const VerifyOptions& opt) {
     std::fflush(stdout);
     return path;
   };
-  run_guarded(static_cast<int>(cases.size()), opt.case_seconds, res, [&](int i) { return guarded_check(cases[i].first, subject); }, save);
+  // Every property, the figures of the report, and one call timed.
+  auto check = [&](int i) {
+    Outcome o;
+    const Case& c = cases[i].first;
+    o.failure = guarded_check(c, subject);
+    o.e = truth_of<Q>(c, subject);
+    try {
+      const auto t0 = std::chrono::steady_clock::now();
+      const bool hit = Spec<Q>::hit(c, subject);
+      o.ns = std::chrono::duration<double, std::nano>(std::chrono::steady_clock::now() - t0).count();
+      if (hit && o.ns < 0) std::puts("");  // keeps the call
+    } catch (...) {
+    }
+    return o;
+  };
+  run_guarded(Q, static_cast<int>(cases.size()), opt.isolate, opt.case_seconds, tally, check, save);
+  VerifyResult& res = tally.res;
   res.cases = static_cast<int>(cases.size());
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  if (opt.report) res.report = write_report<Q>(subject, opt, tally, seconds);
 
   std::printf("verify %s (%s): %d cases, seed %llu: %s\n", subject.name, info(Q).name, res.cases,
               static_cast<unsigned long long>(opt.seed), res.failures == 0 ? "every property held" : "FAILED");
@@ -229,6 +355,7 @@ VerifyResult verify_cases(const ImplOf<Q>& subject, const VerifyOptions& opt) {
   if (!res.saved.empty())
     std::printf("  %zu saved (at most %d per property) under %s\n", res.saved.size(), opt.max_saved,
                 (opt.out / info(Q).name).string().c_str());
+  if (!res.report.empty()) std::printf("  report: %s (and report.json)\n", res.report.string().c_str());
   return res;
 }
 
@@ -270,6 +397,10 @@ int verify_program(const ImplOf<Q>& subject, int argc, char** argv) {
   app.add_option("--max-saved", opt.max_saved, "case files saved per failing property")->capture_default_str();
   app.add_option("--replay", replays, "replay these case files instead")->check(CLI::ExistingFile);
   app.add_flag("--quiet", opt.quiet, "no line per saved failure");
+  app.add_flag("!--in-process", opt.isolate,
+               "run the subject in this process (its state changes stay; a crash ends the run)");
+  app.add_flag("!--no-report", opt.report, "write no report.json and report.html");
+  app.add_option("--junit", opt.junit, "also write a JUnit XML file here");
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -277,6 +408,7 @@ int verify_program(const ImplOf<Q>& subject, int argc, char** argv) {
     return rc == 0 ? 0 : 2;
   }
   if (!replays.empty()) return replay_files<Q>(subject, replays) == 0 ? 0 : 1;
+  for (int i = 0; i < argc; ++i) opt.command += (i ? " " : "") + std::string(argv[i]);
   return verify_cases<Q>(subject, opt).failures == 0 ? 0 : 1;
 }
 

@@ -9,6 +9,8 @@
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
+#include <sstream>
 #include <stdexcept>
 #include <thread>
 
@@ -33,6 +35,13 @@ VerifyOptions options(const std::string& name, int cases) {
   return opt;
 }
 
+std::string read_text(const std::filesystem::path& p) {
+  std::ifstream in(p);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
 int count(const VerifyResult& r, const std::string& property) {
   const auto it = r.by_property.find(property);
   return it == r.by_property.end() ? 0 : it->second;
@@ -54,6 +63,14 @@ TEST(Subjects, ProductionBehindAStatefulAdapterPasses) {
   EXPECT_EQ(r.cases, 400);
   EXPECT_EQ(r.failures, 0) << (r.by_property.empty() ? "" : r.by_property.begin()->first);
   EXPECT_TRUE(r.saved.empty());
+  const int before = calls;
+  EXPECT_EQ(calls, before);  // checked in a child process: the caller's counter did not move
+
+  // In process: the subject's own state changes are the caller's.
+  VerifyOptions in_process = options("adapter-in-process", 50);
+  in_process.isolate = false;
+  EXPECT_EQ(verify(mine, in_process).failures, 0);
+  EXPECT_GE(calls, before + 50);
 }
 
 // Single precision: caught, each saved case a valid case file of the query
@@ -80,6 +97,15 @@ TEST(Subjects, SinglePrecisionIsCaughtAndReplays) {
   }
   EXPECT_EQ(replay(mine, r.saved), static_cast<int>(r.saved.size()));
   EXPECT_EQ(replay(production_of<kSphere>(), r.saved), 0);
+
+  // The report of the run: the subject, its claims and the same counts.
+  ASSERT_FALSE(r.report.empty());
+  const std::string json = read_text(r.report.parent_path() / "report.json");
+  EXPECT_NE(json.find("\"subject\": \"float-inputs\""), std::string::npos);
+  EXPECT_NE(json.find("\"verdict\": \"failed\""), std::string::npos);
+  EXPECT_NE(json.find("\"check_failures\": " + std::to_string(r.failures) + ","), std::string::npos);
+  const std::string page = read_text(r.report);
+  EXPECT_NE(page.find(" --replay "), std::string::npos);  // the program's own replay command
 }
 
 // A subject that throws on some inputs fails those cases, and the run goes on.

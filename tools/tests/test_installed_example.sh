@@ -6,7 +6,8 @@
 # save failing cases with their drawings, and print a replay command that
 # reproduces the failure; a run of production's own collide through the
 # same door (the example with the float code swapped out) must pass; and,
-# where clang is, the example's libFuzzer target must find a failure.
+# where clang is, the example's libFuzzer target must find a failure. The
+# run's report.json validates against the schema.
 # usage: test_installed_example.sh CMAKE BUILD_DIR SOURCE_DIR WORK_DIR
 set -u
 cmake=$1 build=$2 src=$3 work=$4
@@ -34,10 +35,17 @@ status=$?
 cat "$work/run.log"
 [ "$status" -eq 1 ] || fail "exit status $status (1 expected: the float collide is wrong)"
 cases=$(find "$work/out" -name '*.case' | wc -l)
-pages=$(find "$work/out" -name '*.html' | wc -l)
+pages=$(find "$work/out" -name '*.html' ! -name report.html | wc -l)
 [ "$cases" -gt 0 ] || fail "no failing case saved"
 [ "$pages" -eq "$cases" ] || fail "$cases case files but $pages drawings"
-grep -q "<svg" "$(find "$work/out" -name '*.html' | head -1)" || fail "the page has no drawing"
+grep -q "<svg" "$(find "$work/out" -name '*.html' ! -name report.html | head -1)" || fail "the page has no drawing"
+# The run's report: report.html, and report.json valid against the schema with the failure in it.
+[ -f "$work/out/report.html" ] || fail "no report.html"
+grep -q '"verdict": "failed"' "$work/out/report.json" || fail "report.json does not say the run failed"
+if command -v python3 > /dev/null; then
+  python3 "$src/tools/tests/test_report_schema.py" "$src/reports/report.schema.json" "$work/out/report.json"
+  [ $? -eq 1 ] && fail "report.json does not validate against reports/report.schema.json"
+fi
 replay=$(grep -m1 '  replay: ' "$work/run.log" | sed 's/^  replay: //')
 [ -n "$replay" ] || fail "no replay command printed"
 $replay > "$work/replay.log" 2>&1

@@ -7,9 +7,12 @@
 // that signature serves: a function pointer, a lambda or an object with
 // state, or an adapter that converts geomcheck's shapes into the caller's
 // own vector and shape types (subject() below builds one). A subject is held
-// to what production claims, or to its own Claims (checks.hpp): an inexact
-// verdict, touching not counted as contact, no depth or point claim, a
-// margin; verify() prints them before the figures.
+// to what production claims, or to its own Claims (checks.hpp): exact
+// verdict or not, the depth's meaning (the true penetration depth, or an
+// upper bound: a consistent contact; a claim stronger than production's is
+// held too), point in both shapes or not, touching counted as contact or
+// not, a margin; verify() prints them before the figures and the report
+// shows them beside its figures.
 //
 //   int main(int argc, char** argv) {
 //     auto mine = geomcheck::subject<geomcheck::QueryId::collide_cylinder_sphere>(
@@ -30,21 +33,29 @@
 // a subject that crashes the process ("subject-crashed") or gives no answer
 // within a minute ("subject-hung") fails that case, and the run goes on
 // after it. So a subject's own state changes (a call counter) stay in that
-// child: verify() reports what the subject did, the subject object in the
-// caller is left as it was.
+// child, and the subject object in the caller is left as it was; with
+// `--in-process` (VerifyOptions::isolate false) the subject runs in the
+// caller's process: its state changes stay, and a crash ends the run.
 //
 // Every failing case is counted by property; the first `max_saved` of each
 // property are saved under `out` as a case file (corpora/README.md's
 // format, replayable) with a page beside it that draws the shapes, the
 // subject's answer and the truth's witness. Each saved failure prints the
-// command that replays it: the same program with `--replay FILE`.
+// command that replays it: the same program with `--replay FILE`. The run
+// ends with `out`/report.json and report.html, the campaign's report of the
+// subject: verdict mix, error percentiles and histograms against the
+// bounds, the subject's median time per call, its claims, its failures.
 //
 // Command line (verify(subject, argc, argv)):
 //   --cases N       cases to draw (default 2000)
 //   --seed N        the seed (default 20261121)
-//   --out DIR       where counterexamples go (default geomcheck-out)
+//   --out DIR       where counterexamples and the report go (default geomcheck-out)
+//   --max-saved N   case files saved per failing property (default 10)
 //   --replay FILE   replay saved case files instead (repeatable)
 //   --quiet         no line per saved failure
+//   --in-process    no child process (see above)
+//   --no-report     no report.json / report.html
+//   --junit FILE    also a JUnit XML file (a test case per property family)
 // Exit status: 0 every case passed, 1 some case failed, 2 bad usage.
 #pragma once
 
@@ -106,6 +117,14 @@ struct VerifyOptions {
   bool quiet = false;                        ///< no line per saved failure
   std::string program = "verify";            ///< names the replay command printed
   unsigned case_seconds = 60;                ///< a case's checks taking longer: the subject hung
+  /// The subject runs in a child process (a crash or a hang is its case's
+  /// failure); false: in this process (its state changes stay, a crash
+  /// ends the run).
+  bool isolate = true;
+  bool report = true;                        ///< write out/report.json and out/report.html
+  std::string junit;                         ///< also write a JUnit XML file here (empty: none)
+  std::string command;                       ///< for the report: the command line (default: program)
+  std::string started;                       ///< for the report: the UTC start time (default: now)
 };
 
 /// What verify() found.
@@ -114,6 +133,7 @@ struct VerifyResult {
   int failures = 0;                              ///< cases that failed a property
   std::map<std::string, int> by_property;       ///< failing cases by the property they failed
   std::vector<std::filesystem::path> saved;      ///< case files saved (a .html drawing beside each)
+  std::filesystem::path report;                  ///< report.html written (empty: none)
 };
 
 /// The subject as a RapidCheck property: targeted cases of Q drawn by

@@ -45,6 +45,9 @@ struct Series {
 struct QueryReport {
   std::string name, summary;
   std::string subject = "production";  ///< the subject under test (a variant's name)
+  /// The command that replays a counterexample, its path appended; empty:
+  /// geomcheck replay (with --subject for a built-in subject).
+  std::string replay;
   Claims claims{};               ///< what the subject is held to
   bool own_claims = false;       ///< the subject's own claims (else production's)
   int requested = 0;             ///< cases asked for
@@ -75,6 +78,12 @@ struct QueryReport {
   Series depth_ratio;
 };
 
+
+/// One evaluated case of query `id` counted into `rep`: a case run; where
+/// valid, the hits, the verdict mix, a disagreement (excused inside the
+/// band, else beyond it, with its margin) and every error measure. The
+/// campaign and verify() both report through it.
+void add_evaluation(QueryReport& rep, QueryId id, const Evaluation& e);
 
 /// Everything reported about one point-set query (delaunay_2d) of a campaign.
 struct PointSetReport {
