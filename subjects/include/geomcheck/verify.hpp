@@ -90,8 +90,8 @@ Claims production_claims() {
 
 /// A subject of collide query Q from two callables, overlap(A, B) -> bool
 /// and collide(A, B) -> Contact (copied: pass std::ref(object) to share
-/// one), held to production's claims or to `claims` (judge() in checks.hpp:
-/// claims can only relax production's yardsticks).
+/// one), held to production's claims or to `claims` (judge() in checks.hpp
+/// says how each claim is judged).
 template <QueryId Q, class Overlap, class Collide,
           std::enable_if_t<QueryTraits<Q>::kind == QueryKind::Collide, int> = 0>
 Subject<Q> subject(const char* name, Overlap overlap, Collide collide, std::optional<Claims> claims = std::nullopt) {
