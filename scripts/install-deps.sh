@@ -8,6 +8,7 @@ PKGS=(
   libgtest-dev libgmock-dev librapidcheck-dev libbenchmark-dev
   libcgal-dev libfcl-dev libeigen3-dev libboost-dev libgmp-dev libmpfr-dev
   libcli11-dev nlohmann-json3-dev
+  libode-dev libbullet-dev libmujoco-dev
   python3 python3-jsonschema
   chromium
 )
