@@ -179,6 +179,30 @@ Contact collide_scaled(const Cylinder& cyl, const Capsule& cap) {
   // overlap along its normal whatever the normal.
   const detail::ClosestOnCylinder c = detail::closest_on_cylinder(cyl, s.u, s.len, x, noise);
   if (k.d > 0x1p-20 * scene && !c.inside) {
+    // Measured from p and the capsule's p, the closest points carry
+    // rounding of eps * scene; the direction between them, over a distance
+    // D, then errs by eps * scene / D, and a long segment lying across it
+    // turns that angle into overlap (a rim contact at the far end of a long
+    // cylinder). So they are found again from the cylinder's cap centre and
+    // the capsule's end nearer to them: offsets of the contact's size.
+    // Only a rim's normal depends on the offsets' rounding over D (a cap's
+    // is the axis, a side's the radial direction, of the radius' size), and
+    // only where the terms x is formed from are large against D.
+    const double ax = dot(x, s.u);
+    const bool rim = (ax < 0 || ax > s.len) && detail::safe_length(x - ax * s.u) > cyl.r;
+    const bool from_q = 2 * ax > s.len, end_q = k.l > 0.5;
+    if (rim && (from_q || end_q) && std::max(max_abs(s.a), max_abs(s.e)) > 64 * k.d) {
+      const Cylinder base = from_q ? Cylinder{cyl.q, cyl.p, cyl.r} : cyl;
+      const SegmentInFrame sl(base, end_q ? Capsule{cap.q, cap.p, cap.r} : cap);
+      const Closest kl = closest(sl, base);
+      const detail::ClosestOnCylinder near = detail::closest_on_cylinder(base, sl.u, sl.len, sl.point(kl.l), noise);
+      if (!near.inside && kl.d > 0) {
+        out.point = near.point;
+        out.normal = near.normal;
+        out.depth = std::max(cap.r - kl.d, 0.0);
+        return out;
+      }
+    }
     out.point = c.point;
     out.normal = c.normal;
     out.depth = std::max(cap.r - k.d, 0.0);

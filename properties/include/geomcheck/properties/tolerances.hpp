@@ -58,7 +58,7 @@ constexpr Tolerances tolerances(QueryId id) {
     case QueryId::cast_segment_cylinder:
       return {/*verdict*/ 1e-14, /*depth*/ 0, /*normal*/ 1e-13, /*point*/ 1e-14, /*t*/ 1e-14, /*unit*/ 1e-14};
     case QueryId::collide_cylinder_capsule:
-      return {/*verdict*/ 1e-14, /*depth*/ 1e-14, /*normal*/ 1e-11, /*point*/ 1e-14, /*t*/ 0, /*unit*/ 1e-14};
+      return {/*verdict*/ 1e-14, /*depth*/ 1e-14, /*normal*/ 1e-12, /*point*/ 1e-14, /*t*/ 0, /*unit*/ 1e-14};
     case QueryId::collide_cylinder_obb:
       return {/*verdict*/ 1e-14, /*depth*/ 1e-14, /*normal*/ 1e-14, /*point*/ 1e-14, /*t*/ 0, /*unit*/ 1e-14};
     case QueryId::collide_cylinder_triangle:
