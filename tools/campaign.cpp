@@ -21,6 +21,8 @@
 #include "geomcheck/casefile.hpp"
 #include "geomcheck/properties/tolerances.hpp"
 #include "peer.hpp"
+#include "peers.hpp"
+#include "geomcheck/properties/shrink.hpp"
 #include "geomcheck/properties/spec.hpp"
 
 namespace geomcheck {
@@ -239,27 +241,50 @@ class QueryRun {
     }
   }
 
-  // Counterexamples: every one counted by property, the first
-  // kMaxSavedPerKind of each property saved and drawn (a page beside its
-  // case file); the report shows the first 12 drawings inline.
+  // Counterexamples: every one counted by property and by signature
+  // (property @ generator mode); the first kMaxSavedPerSignature of a
+  // signature, at most kMaxSavedPerKind of a property, shrunk while they
+  // fail the same property, then saved and drawn (a page beside the case
+  // file); the report shows the first 12 drawings inline.
   void save_counterexample(const Row& r) {
-    const Evaluation& e = r.e;
     ++rep_.check_failures;
-    if (rep_.failures_by_property[r.failure->property]++ >= report::kMaxSavedPerKind) return;
+    const std::string& property = r.failure->property;
+    const std::string signature = property + " @ " + r.tag;
+    ++rep_.failures_by_signature[signature];
+    ++rep_.failures_by_property[property];
+    if (saved_of_property_[property] >= report::kMaxSavedPerKind ||
+        saved_of_signature_[signature] >= report::kMaxSavedPerSignature)
+      return;
+    ++saved_of_property_[property];
+    ++saved_of_signature_[signature];
+    Shrunk how;
+    const Case small = shrink(
+        case_of(r),
+        [&](const Case& k) {
+          const CheckResult f = check_all(k, *impl_);
+          return f && f->property == property;
+        },
+        report::kShrinkBudget, &how);
+    const CheckResult failure = how.simplified ? check_all(small, *impl_) : r.failure;
+    const Evaluation e = how.simplified ? geomcheck::evaluate(small, *impl_) : r.e;
+    rep_.shrunk += how.simplified > 0;
     const std::filesystem::path cx_dir = out_dir_ / "counterexamples" / rep_.name;
     std::filesystem::create_directories(cx_dir);
     char name[64];
-    std::snprintf(name, sizeof name, "%05d-%s.case", r.index, r.failure->property.c_str());
+    std::snprintf(name, sizeof name, "%05d-%s.case", r.index, property.c_str());
     const auto path = cx_dir / name;
-    CaseFile f = from_case<Q>(case_of(r), origin(r), "", r.failure->property + ": " + r.failure->detail);
-    f.oracle_verdict = verdict_word(Q, e);
+    const std::string found_by =
+        origin(r) + " mode=" + r.tag +
+        (how.simplified ? " (shrunk: " + std::to_string(how.simplified) + " numbers simplified)" : std::string());
+    CaseFile f = from_case<Q>(small, found_by, "", failure->property + ": " + failure->detail);
+    f.oracle_verdict = e.valid ? verdict_word(Q, e) : std::string();
     std::string err;
     if (save_case(path, f, err)) rep_.counterexamples.push_back(path.string());
     else std::fprintf(stderr, "[campaign] cannot save %s: %s\n", path.string().c_str(), err.c_str());
-    const draw::Answer ans = answer_of(case_of(r), *impl_);
+    const draw::Answer ans = answer_of(small, *impl_);
     const std::string drawing =
-        draw::views(case_of(r).a, case_of(r).b,
-                    html(std::string("case ") + name + ": " + r.failure->property + ": " + r.failure->detail +
+        draw::views(small.a, small.b,
+                    html(std::string("case ") + name + ": " + failure->property + ": " + failure->detail +
                          "; oracle: " + e.truth_text),
                     {}, &ans);
     const std::string subject = impl_->name;
@@ -273,6 +298,7 @@ class QueryRun {
 
   const CampaignOptions& opt_;
   std::filesystem::path out_dir_;
+  std::map<std::string, int> saved_of_property_, saved_of_signature_;  // counterexamples saved, for the caps
   const Impl* impl_ = nullptr;
   std::vector<std::pair<Case, std::string>> cases_;
   std::vector<Row> rows_;
@@ -313,6 +339,8 @@ int run_campaign(const CampaignOptions& opt) {
       if (!subject || subject == &production_of<Q>()) return;  // not one of Q's variants
     }
     reps.push_back(QueryRun<Q>(opt, out_dir).run(threads));
+    if (opt.variant.empty())
+      reps.back().peers = run_peers<Q>(std::min(opt.peer_cases, reps.back().cases), opt.seed, out_dir);
   });
   // The point-set family (not with a variant: those are pair subjects).
   std::vector<report::PointSetReport> point_sets;
@@ -337,6 +365,7 @@ int run_campaign(const CampaignOptions& opt) {
     std::snprintf(b, sizeof b, " --seconds %g", opt.seconds);
     run.rerun += b;
   }
+  if (opt.peer_cases != CampaignOptions{}.peer_cases) run.rerun += " --peer-cases " + std::to_string(opt.peer_cases);
   for (const auto& q : opt.queries) run.rerun += " --query " + q;
   if (!opt.variant.empty()) run.rerun += " --variant " + opt.variant;
   run.under_test = opt.variant.empty() ? "production" : opt.variant + " (a known-wrong variant)";

@@ -26,6 +26,9 @@ struct CampaignOptions {
   /// A known-wrong variant (its spec's variants()) run in
   /// production's place: only its query runs. Empty = production.
   std::string variant;
+  /// Cases of each query put to every other engine (peers/: ODE, Bullet,
+  /// MuJoCo), the first ones of the campaign's; 0: none. Not with a variant.
+  int peer_cases = 300;
   std::string junit;    ///< also write a JUnit XML file here (empty: none)
   std::string version;  ///< for the report: the build's version
   std::string started;  ///< for the report: UTC start time

@@ -24,6 +24,7 @@
 #include "geomcheck/properties/tolerances.hpp"
 #include "geomcheck/shape_traits.hpp"
 #include "peer.hpp"
+#include "peers.hpp"
 
 namespace fs = std::filesystem;
 using namespace geomcheck;
@@ -158,6 +159,7 @@ Replayed replay_one(const fs::path& path, bool quiet, const std::string& subject
   return visit_case(f, [&](auto q, const auto& c) {
     constexpr QueryId Q = decltype(q)::value;
     const auto* impl = Spec<Q>::subject(subject);
+    if (!impl) impl = peer_subject<Q>(subject);  // another engine (peers/)
     if (!impl) return unreadable(path, "no subject '" + subject + "' of query " + info(Q).name);
     const PeerAnswer fcl = peer(c);
     const Evaluation e = evaluate_with_peer(c, fcl, *impl);
@@ -329,6 +331,10 @@ void add_campaign(CLI::App& app, CampaignOptions& opt, int& rc) {
   c->add_option("--query", opt.queries, "only this query (repeatable; geomcheck queries lists them)")
       ->check([](const std::string& q) { return family_of(q) ? std::string() : "unknown query '" + q + "'"; });
   c->add_option("--junit", opt.junit, "also write the results as JUnit XML (a test case per query and property family)");
+  c->add_option("--peer-cases", opt.peer_cases,
+                "cases of each query also put to the other engines (ODE, Bullet, MuJoCo where built; 0: none)")
+      ->capture_default_str()
+      ->check(CLI::NonNegativeNumber);
   c->add_flag("--no-progress", [&opt](std::int64_t) { opt.progress = false; }, "no progress lines on stderr");
   c->add_option("--subject,--variant", opt.variant,
                 "run a built-in subject of one query in production's place: a known-wrong variant ('help' lists them)")
@@ -358,7 +364,8 @@ void add_replay(CLI::App& app, int& rc) {
                                          "1 when a check fails, 2 when a file cannot be read or parsed.");
   r->add_flag("--quiet", quiet, "one line per passing case");
   r->add_option("--subject,--variant", subject,
-                "replay against a built-in subject (a known-wrong variant, by name) in production's place");
+                "replay against a built-in subject in production's place: a known-wrong variant, or another engine "
+                "(ODE, Bullet, MuJoCo where built)");
   r->add_option("paths", paths, "case files or directories")->required();
   r->callback([&rc] { rc = cmd_replay(paths, quiet, subject); });
 }

@@ -155,9 +155,15 @@ std::string render(const Figure (&shapes)[2], const std::vector<Mark>& marks, co
   constexpr double W = 220, M = 12;
   std::ostringstream o;
   o << "<figure class='cx'><figcaption>" << title << "</figcaption>";
-  for (const View& v : kViews) {
-    // Fit: the bounds of every finite projected point, equal scales.
-    double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
+  // Fit: each view centred on the bounds of its finite projected points, one
+  // scale for all three (the largest span of any view fits), so that the
+  // views can be compared.
+  double lo_of[3][2], hi_of[3][2], span_all = -INFINITY;
+  for (int k = 0; k < 3; ++k) {
+    const View& v = kViews[k];
+    double* lo = lo_of[k];
+    double* hi = hi_of[k];
+    lo[0] = lo[1] = INFINITY, hi[0] = hi[1] = -INFINITY;
     auto grow = [&](Vec3 p) {
       const double a = coord(p, v.i), b = coord(p, v.j);
       if (!std::isfinite(a) || !std::isfinite(b)) return;
@@ -174,6 +180,13 @@ std::string render(const Figure (&shapes)[2], const std::vector<Mark>& marks, co
       grow(m.p);
       if (m.kind == Mark::Kind::Arrow || m.kind == Mark::Kind::Segment) grow(m.q);
     }
+    const double span = std::max(hi[0] - lo[0], hi[1] - lo[1]);
+    if (span >= 0 && std::isfinite(span)) span_all = std::max(span_all, span);
+  }
+  for (int k = 0; k < 3; ++k) {
+    const View& v = kViews[k];
+    const double* lo = lo_of[k];
+    const double* hi = hi_of[k];
     o << "<svg width='" << W << "' height='" << W + 16 << "' role='img' viewBox='0 0 " << W << ' ' << W + 16
       << "'><title>" << v.name << " view</title><rect x='0' y='0' width='" << W << "' height='" << W
       << "' fill='#fafafa' stroke='#ccc'/>";
@@ -182,7 +195,7 @@ std::string render(const Figure (&shapes)[2], const std::vector<Mark>& marks, co
       o << "<text x='10' y='110' font-size='11'>nothing finite to draw</text></svg>";
       continue;
     }
-    const double s = span > 0 ? (W - 2 * M) / span : 1;
+    const double s = span_all > 0 ? (W - 2 * M) / span_all : 1;
     const double cx = 0.5 * (lo[0] + hi[0]), cy = 0.5 * (lo[1] + hi[1]);
     auto X = [&](double a) { return W / 2 + (a - cx) * s; };
     auto Y = [&](double b) { return W / 2 - (b - cy) * s; };

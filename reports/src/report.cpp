@@ -6,9 +6,29 @@
 #include <fstream>
 #include <sstream>
 
+#include <nlohmann/json.hpp>
+
 namespace geomcheck::report {
 
 namespace {
+
+/// The page drawn beside a saved case file, as a link from a report written
+/// in `report_dir` (both paths as the run gave them).
+std::string page_link(const std::string& case_path, const std::filesystem::path& report_dir) {
+  const std::filesystem::path page = std::filesystem::path(case_path).replace_extension(".html");
+  const std::filesystem::path rel = page.lexically_relative(report_dir.empty() ? "." : report_dir);
+  return (rel.empty() ? page : rel).generic_string();
+}
+
+/// "N (hung H / crashed C / threw T)": a subject's property failures.
+std::string failures_cell(const QueryReport& r) {
+  auto n = [&](const char* property) {
+    const auto it = r.failures_by_property.find(property);
+    return std::to_string(it == r.failures_by_property.end() ? 0 : it->second);
+  };
+  return std::string("<span class='") + (r.check_failures ? "bad" : "ok") + "'>" + std::to_string(r.check_failures) +
+         "</span> (" + n("subject-hung") + " / " + n("subject-crashed") + " / " + n("subject-threw") + ")";
+}
 
 /// The command that replays one of r's counterexamples, less its path.
 std::string replay_prefix(const QueryReport& r) {
@@ -22,16 +42,6 @@ std::string jnum(double x) {
   std::snprintf(b, sizeof b, "%.6g", x);
   return b;
 }
-std::string jstr(const std::string& s) {
-  std::string o = "\"";
-  for (char c : s) {
-    if (c == '"' || c == '\\') o += '\\', o += c;
-    else if (c == '\n') o += "\\n";
-    else if (static_cast<unsigned char>(c) < 0x20) o += ' ';
-    else o += c;
-  }
-  return o + "\"";
-}
 std::string hnum(double x) {  // for a table cell: three digits, a dash for none
   if (!std::isfinite(x)) return "&ndash;";
   char b[32];
@@ -39,13 +49,26 @@ std::string hnum(double x) {  // for a table cell: three digits, a dash for none
   return b;
 }
 
-void write_series_json(std::ostream& o, const char* name, Series& s) {
-  o << "      " << jstr(name) << ": {\"n\": " << s.v.size() << ", \"p50\": " << jnum(s.pct(0.5))
-    << ", \"p90\": " << jnum(s.pct(0.9)) << ", \"p99\": " << jnum(s.pct(0.99)) << ", \"max\": " << jnum(s.pct(1.0))
-    << ", \"log10_histogram\": [";
-  const auto h = s.hist();
-  for (std::size_t i = 0; i < h.size(); ++i) o << (i ? ", " : "") << h[i];
-  o << "]}";
+using Json = nlohmann::ordered_json;  // report.json keeps its keys in the order written
+
+/// x as report.json gives it: jnum's six significant digits read back (an
+/// integer where the text has no fraction), null where x is not finite.
+Json json_num(double x) { return Json::parse(jnum(x)); }
+
+/// n and the percentiles of s (its minimum too where asked), as JSON.
+Json percentiles_json(Series& s, bool with_min) {
+  Json o = {{"n", s.v.size()}};
+  if (with_min) o["min"] = json_num(s.pct(0.0));
+  for (const auto& [key, p] : {std::pair<const char*, double>{"p50", 0.5}, {"p90", 0.9}, {"p99", 0.99}, {"max", 1.0}})
+    o[key] = json_num(s.pct(p));
+  return o;
+}
+
+/// An error series as JSON: n, percentiles and the log10 histogram.
+Json series_json(Series& s) {
+  Json o = percentiles_json(s, false);
+  o["log10_histogram"] = s.hist();
+  return o;
 }
 
 // The range of histogram bin i (Series::hist): exactly 0, below 1e-17, a
@@ -94,6 +117,8 @@ std::string hist_svg(const Series& s, double bound) {
 
 
 // The precision table: production and FCL, a row each, per query.
+std::string claims_text(const QueryReport& r);
+
 void write_precision_table(std::ostream& h, std::vector<QueryReport>& reps) {
   h << "<h2 id='precision'>Precision table: production and FCL against the exact oracle</h2>"
        "<p>Every error is measured with the same exact yardstick for both engines, as a multiple of the case scale "
@@ -107,7 +132,7 @@ void write_precision_table(std::ostream& h, std::vector<QueryReport>& reps) {
        "|&Delta;t| is FCL's t against the exact first touch, absolute.</p>"
        "<table style='font-size:12px'><tr><th class='l'>query</th><th class='l'>engine</th><th>answered</th>"
        "<th>verdicts beyond the band</th><th>depth</th><th>normal</th><th>point</th><th>distance</th>"
-       "<th>t</th><th>|&Delta;t|</th></tr>";
+       "<th>t</th><th>|&Delta;t|</th><th>property failures (hung / crashed / threw)</th><th>time per call</th></tr>";
   auto tri = [](Series& s) {
     if (s.v.empty()) return std::string("&ndash;");
     return hnum(s.pct(0.5)) + " / " + hnum(s.pct(0.99)) + " / " + hnum(s.pct(1.0));
@@ -115,18 +140,29 @@ void write_precision_table(std::ostream& h, std::vector<QueryReport>& reps) {
   for (QueryReport& r : reps) {
     auto rate = [&](int n, int of) { return std::to_string(n) + (of ? " (" + hnum(100.0 * n / of) + "%)" : ""); };
     Series none;
-    h << "<tr><td class='l' rowspan='2'><a href='#" << r.name << "'>" << r.name << "</a></td><td class='l'>production</td><td>"
-      << r.valid << "</td><td class='" << (r.beyond ? "bad" : "ok") << "'>" << rate(r.beyond, r.valid) << "</td><td>"
-      << tri(r.depth) << "</td><td>" << tri(r.normal) << "</td><td>" << tri(r.point) << "</td><td>&ndash;</td><td>"
-      << tri(r.t) << "</td><td>&ndash;</td></tr>";
+    h << "<tr><td class='l' rowspan='" << 2 + r.peers.size() << "'><a href='#" << r.name << "'>" << r.name
+      << "</a></td><td class='l'>production</td><td>" << r.valid << "</td><td class='" << (r.beyond ? "bad" : "ok")
+      << "'>" << rate(r.beyond, r.valid) << "</td><td>" << tri(r.depth) << "</td><td>" << tri(r.normal) << "</td><td>"
+      << tri(r.point) << "</td><td>&ndash;</td><td>" << tri(r.t) << "</td><td>&ndash;</td><td>" << failures_cell(r)
+      << "</td><td>" << hnum(r.prod_ns) << " ns</td></tr>";
     h << "<tr><td class='l'>FCL</td><td>" << r.fcl_ok << "</td><td class='" << (r.fcl_beyond || r.fcl_distance_beyond ? "bad" : "ok")
       << "'>" << rate(r.fcl_beyond, r.fcl_ok);
     if (r.fcl_distance_asked) h << "<br>distance: " << rate(r.fcl_distance_beyond, r.fcl_distance_asked);
     h << "</td><td>" << tri(r.fcl_depth) << "</td><td>" << tri(r.fcl_normal) << "</td><td>" << tri(r.fcl_point)
       << "</td><td>" << tri(r.fcl_distance) << "</td><td>" << tri(r.fcl_t_gap) << "</td><td>" << tri(r.fcl_t)
-      << "</td></tr>";
+      << "</td><td>&ndash;</td><td>&ndash;</td></tr>";
+    for (QueryReport& p : r.peers)
+      h << "<tr><td class='l' title=\"" << html(claims_text(p)) << "\">" << html(p.subject) << "</td><td>" << p.valid
+        << " of the first " << p.cases << "</td><td class='" << (p.beyond ? "bad" : "ok") << "'>"
+        << rate(p.beyond, p.valid) << "</td><td>" << tri(p.depth) << "</td><td>" << tri(p.normal) << "</td><td>"
+        << tri(p.point) << "</td><td>&ndash;</td><td>" << tri(p.t) << "</td><td>&ndash;</td><td>" << failures_cell(p)
+        << "</td><td>" << hnum(p.prod_ns) << " ns</td></tr>";
   }
-  h << "</table>";
+  h << "</table><p>Other engines (ODE, Bullet, MuJoCo, where built) answer the first cases of each query through "
+       "the same door as a user's subject, in a child process (a hang or a crash is that case's failure), and are "
+       "held to every property under their own claims (hover an engine's name; its header in <code>peers/</code> "
+       "states them). Their failing cases are saved under <code>peers/&lt;engine&gt;/&lt;query&gt;/</code>; "
+       "<code>geomcheck replay --subject ENGINE FILE</code> replays one.</p>";
 }
 
 // A row of the error table: n, percentiles, histogram, the bound.
@@ -152,18 +188,17 @@ std::string claims_text(const QueryReport& r) {
   return t;
 }
 
-// The claims as JSON.
-std::string claims_json(const QueryReport& r) {
+/// The claims as JSON.
+Json claims_json(const QueryReport& r) {
   const Claims& c = r.claims;
-  auto b = [](bool v) { return v ? "true" : "false"; };
-  return std::string("{\"subject\": ") + jstr(r.subject) + ", \"own\": " + b(r.own_claims) +
-         ", \"exact_verdict\": " + b(c.exact_verdict) + ", \"depth\": " + jstr(to_string(c.depth)) +
-         ", \"point_in_both\": " + b(c.point_in_both) + ", \"touching_is_contact\": " + b(c.touching_is_contact) +
-         ", \"margin\": " + jnum(c.margin) + ", \"normal\": " + jstr(c.normal) + ", \"truth\": " + jstr(c.truth) + "}";
+  return {{"subject", r.subject}, {"own", r.own_claims}, {"exact_verdict", c.exact_verdict},
+          {"depth", to_string(c.depth)}, {"point_in_both", c.point_in_both},
+          {"touching_is_contact", c.touching_is_contact}, {"margin", json_num(c.margin)}, {"normal", c.normal},
+          {"truth", c.truth}};
 }
 
 // A query's section: its verdicts, errors, depth ratio, failures, drawings.
-void write_query_section(std::ostream& h, QueryReport& r) {
+void write_query_section(std::ostream& h, QueryReport& r, const std::filesystem::path& report_dir) {
   const bool clean = r.beyond == 0 && r.check_failures == 0;
   h << "<h2 id='" << r.name << "'>" << r.name << "</h2><p>" << html(r.summary) << "</p><p class='claims'>"
     << html(claims_text(r)) << "</p><p class='"
@@ -213,11 +248,15 @@ void write_query_section(std::ostream& h, QueryReport& r) {
   if (!r.failures_by_property.empty()) {
     h << "<h3>failures</h3><ul>";
     for (const auto& [k, v] : r.failures_by_property) h << "<li>" << html(k) << ": " << v << "</li>";
-    h << "</ul><p>counterexamples (replay with <code>" << html(replay_prefix(r))
-      << "FILE</code>; each drawn in the "
-         ".html beside it):</p><ul>";
+    h << "</ul><table><tr><th class='l'>kind of failure (property @ generator mode)</th><th>cases</th></tr>";
+    for (const auto& [k, v] : r.failures_by_signature)
+      h << "<tr><td class='l'>" << html(k) << "</td><td>" << v << "</td></tr>";
+    h << "</table><p>counterexamples (at most " << kMaxSavedPerSignature << " of a kind and " << kMaxSavedPerKind
+      << " of a property saved, " << r.shrunk << " of them shrunk while they fail the same property; replay with <code>"
+      << html(replay_prefix(r)) << "FILE</code>; each links to its drawing):</p><ul>";
     for (std::size_t k = 0; k < r.counterexamples.size() && k < 50; ++k)
-      h << "<li><code>" << html(r.counterexamples[k]) << "</code></li>";
+      h << "<li><a href='" << html(page_link(r.counterexamples[k], report_dir)) << "'><code>"
+        << html(r.counterexamples[k]) << "</code></a></li>";
     if (r.counterexamples.size() > 50)
       h << "<li>and " << r.counterexamples.size() - 50 << " more under <code>counterexamples/" << r.name << "/</code></li>";
     h << "</ul><h3>counterexamples drawn (first " << r.drawings.size() << " of " << r.counterexamples.size() << ")</h3>";
@@ -231,31 +270,56 @@ void write_query_section(std::ostream& h, QueryReport& r) {
   }
 }
 
-std::string json_counts(const std::map<std::string, int>& m) {
-  std::string o = "{";
-  for (const auto& [k, v] : m) o += (o.size() > 1 ? ", " : "") + jstr(k) + ": " + std::to_string(v);
-  return o + "}";
+/// An engine's row of a query in report.json (QueryReport::peers).
+Json peer_json(QueryReport& p) {
+  auto count = [&](const char* property) {
+    const auto it = p.failures_by_property.find(property);
+    return it == p.failures_by_property.end() ? 0 : it->second;
+  };
+  return {{"engine", p.subject}, {"claims", claims_json(p)}, {"cases", p.cases}, {"valid", p.valid},
+          {"disagreements", p.disagree}, {"beyond_band", p.beyond}, {"check_failures", p.check_failures},
+          {"failures_by_property", p.failures_by_property}, {"hung", count("subject-hung")},
+          {"crashed", count("subject-crashed")}, {"threw", count("subject-threw")},
+          {"errors", {{"depth", series_json(p.depth)}, {"normal", series_json(p.normal)},
+                      {"point", series_json(p.point)}, {"t", series_json(p.t)}}},
+          {"ns_per_call", json_num(p.prod_ns)}, {"counterexamples", p.counterexamples}};
 }
 
-// The point-set queries, after the pair queries (absent when none ran).
-void write_point_sets_json(std::ostream& js, const std::vector<PointSetReport>& point_sets) {
-  if (point_sets.empty()) return;
-  js << ",\n  \"point_set_queries\": [\n";
-  for (std::size_t i = 0; i < point_sets.size(); ++i) {
-    const PointSetReport& r = point_sets[i];
-    js << "    {\n      \"id\": " << jstr(r.name) << ",\n      \"summary\": " << jstr(r.summary)
-       << ",\n      \"requested\": " << r.requested << ", \"stopped_by_time\": " << (r.stopped_by_time ? "true" : "false")
-       << ",\n      \"sets\": " << r.sets << ", \"points\": " << r.points << ", \"failures\": " << r.failures
-       << ",\n      \"modes\": " << json_counts(r.modes) << ",\n      \"kinds\": " << json_counts(r.kinds)
-       << ",\n      \"failures_by_property\": " << json_counts(r.failures_by_property)
-       << ",\n      \"cgal_choices_differ\": " << r.cgal_choices_differ
-       << ",\n      \"production_us_total\": " << jnum(r.production_us) << ", \"cgal_us_total\": " << jnum(r.cgal_us)
-       << ", \"production_over_cgal\": " << jnum(r.cgal_us > 0 ? r.production_us / r.cgal_us : NAN)
-       << ",\n      \"counterexamples\": [";
-    for (std::size_t k = 0; k < r.counterexamples.size(); ++k) js << (k ? ", " : "") << jstr(r.counterexamples[k]);
-    js << "]\n    }" << (i + 1 < point_sets.size() ? "," : "") << "\n";
-  }
-  js << "  ]";
+/// A query's entry in report.json.
+Json query_json(QueryReport& r) {
+  Json q = {{"id", r.name}, {"summary", r.summary}, {"claims", claims_json(r)}, {"requested", r.requested},
+            {"stopped_by_time", r.stopped_by_time}, {"cases", r.cases}, {"valid", r.valid},
+            {"production_hits", r.prod_hits}, {"oracle_hits", r.truth_hits},
+            {"hit_rate", json_num(r.valid ? double(r.prod_hits) / r.valid : NAN)}, {"verdicts", r.verdicts},
+            {"disagreements", r.disagree}, {"inside_band", r.excused}, {"beyond_band", r.beyond},
+            {"worst_margin", json_num(r.worst_margin)}, {"verdict_band", json_num(r.tol.verdict)},
+            {"check_failures", r.check_failures}, {"failures_by_property", r.failures_by_property},
+            {"failures_by_signature", r.failures_by_signature}, {"shrunk", r.shrunk},
+            {"errors", {{"depth", series_json(r.depth)}, {"normal", series_json(r.normal)},
+                        {"point", series_json(r.point)}, {"t", series_json(r.t)}}}};
+  if (r.depth_is_bound) q["depth_over_penetration_depth"] = percentiles_json(r.depth_ratio, true);
+  q["fcl"] = {{"supported", r.fcl_supported}, {"answered", r.fcl_ok}, {"disagreements", r.fcl_disagree},
+              {"beyond_band", r.fcl_beyond}, {"depth", series_json(r.fcl_depth)},
+              {"normal", series_json(r.fcl_normal)}, {"point", series_json(r.fcl_point)},
+              {"t", series_json(r.fcl_t_gap)}, {"t_abs", series_json(r.fcl_t)},
+              {"distance_asked", r.fcl_distance_asked}, {"distance_verdicts_beyond_band", r.fcl_distance_beyond},
+              {"distance", series_json(r.fcl_distance)}, {"cases", r.fcl_cases}};
+  q["production_ns_per_query"] = json_num(r.prod_ns);
+  q["oracle_us_per_case"] = json_num(r.oracle_us);
+  q["counterexamples"] = r.counterexamples;
+  q["peers"] = Json::array();
+  for (QueryReport& p : r.peers) q["peers"].push_back(peer_json(p));
+  return q;
+}
+
+/// A point-set query's entry in report.json.
+Json point_set_json(const PointSetReport& r) {
+  return {{"id", r.name}, {"summary", r.summary}, {"requested", r.requested}, {"stopped_by_time", r.stopped_by_time},
+          {"sets", r.sets}, {"points", r.points}, {"failures", r.failures}, {"modes", r.modes}, {"kinds", r.kinds},
+          {"failures_by_property", r.failures_by_property}, {"cgal_choices_differ", r.cgal_choices_differ},
+          {"production_us_total", json_num(r.production_us)}, {"cgal_us_total", json_num(r.cgal_us)},
+          {"production_over_cgal", json_num(r.cgal_us > 0 ? r.production_us / r.cgal_us : NAN)},
+          {"counterexamples", r.counterexamples}};
 }
 
 // A point-set query's section: the sets by mode and kind, failures, time against CGAL.
@@ -303,73 +367,23 @@ std::string html(const std::string& s) {
 
 void write_json(const std::filesystem::path& file, const RunInfo& run, std::vector<QueryReport>& reps,
                 const std::vector<PointSetReport>& point_sets) {
-  std::ofstream js(file);
   bool passed = true;
   for (const QueryReport& r : reps) passed = passed && r.beyond == 0 && r.check_failures == 0;
   for (const PointSetReport& r : point_sets) passed = passed && r.failures == 0;
-  js << "{\n  \"tool\": \"geomcheck\",\n  \"schema_version\": " << kReportSchemaVersion
-     << ",\n  \"version\": " << jstr(run.version) << ",\n  \"started\": " << jstr(run.started)
-     << ",\n  \"command_line\": " << jstr(run.command) << ",\n  \"verdict\": " << jstr(passed ? "passed" : "failed")
-     << ",\n  \"seed\": " << run.seed << ",\n  \"cases_per_query\": " << jstr(run.per_query)
-     << ",\n  \"saved_cases_per_kind\": " << kMaxSavedPerKind
-     << ",\n  \"replay\": " << jstr(run.rerun) << ",\n  \"implementation\": " << jstr(run.under_test)
-     << ",\n  \"queries\": [\n";
-  for (std::size_t i = 0; i < reps.size(); ++i) {
-    QueryReport& r = reps[i];
-    js << "    {\n      \"id\": " << jstr(r.name) << ",\n      \"summary\": " << jstr(r.summary)
-       << ",\n      \"claims\": " << claims_json(r)
-       << ",\n      \"requested\": " << r.requested << ", \"stopped_by_time\": " << (r.stopped_by_time ? "true" : "false")
-       << ",\n      \"cases\": " << r.cases << ", \"valid\": " << r.valid << ", \"production_hits\": " << r.prod_hits
-       << ", \"oracle_hits\": " << r.truth_hits << ",\n      \"hit_rate\": " << jnum(r.valid ? double(r.prod_hits) / r.valid : NAN)
-       << ",\n      \"verdicts\": {";
-    bool first = true;
-    for (const auto& [k, v] : r.verdicts) js << (first ? "" : ", ") << jstr(k) << ": " << v, first = false;
-    js << "},\n      \"disagreements\": " << r.disagree << ", \"inside_band\": " << r.excused
-       << ", \"beyond_band\": " << r.beyond << ", \"worst_margin\": " << jnum(r.worst_margin)
-       << ", \"verdict_band\": " << jnum(r.tol.verdict) << ",\n      \"check_failures\": " << r.check_failures
-       << ", \"failures_by_property\": {";
-    first = true;
-    for (const auto& [k, v] : r.failures_by_property) js << (first ? "" : ", ") << jstr(k) << ": " << v, first = false;
-    js << "},\n      \"errors\": {\n";
-    write_series_json(js, "depth", r.depth);
-    js << ",\n";
-    write_series_json(js, "normal", r.normal);
-    js << ",\n";
-    write_series_json(js, "point", r.point);
-    js << ",\n";
-    write_series_json(js, "t", r.t);
-    js << "\n      },\n";
-    if (r.depth_is_bound) {
-      Series& q = r.depth_ratio;
-      js << "      \"depth_over_penetration_depth\": {\"n\": " << q.v.size() << ", \"min\": " << jnum(q.pct(0.0))
-         << ", \"p50\": " << jnum(q.pct(0.5)) << ", \"p90\": " << jnum(q.pct(0.9)) << ", \"p99\": " << jnum(q.pct(0.99))
-         << ", \"max\": " << jnum(q.pct(1.0)) << "},\n";
-    }
-    js << "      \"fcl\": {\"supported\": " << r.fcl_supported << ", \"answered\": " << r.fcl_ok
-       << ", \"disagreements\": " << r.fcl_disagree << ", \"beyond_band\": " << r.fcl_beyond << ",\n";
-    write_series_json(js, "depth", r.fcl_depth);
-    js << ",\n";
-    write_series_json(js, "normal", r.fcl_normal);
-    js << ",\n";
-    write_series_json(js, "point", r.fcl_point);
-    js << ",\n";
-    write_series_json(js, "t", r.fcl_t_gap);
-    js << ",\n";
-    write_series_json(js, "t_abs", r.fcl_t);
-    js << ",\n      \"distance_asked\": " << r.fcl_distance_asked
-       << ", \"distance_verdicts_beyond_band\": " << r.fcl_distance_beyond << ",\n";
-    write_series_json(js, "distance", r.fcl_distance);
-    js << ", \"cases\": [";
-    for (std::size_t k = 0; k < r.fcl_cases.size(); ++k) js << (k ? ", " : "") << jstr(r.fcl_cases[k]);
-    js << "]},\n      \"production_ns_per_query\": " << jnum(r.prod_ns) << ", \"oracle_us_per_case\": " << jnum(r.oracle_us)
-       << ",\n      \"counterexamples\": [";
-    for (std::size_t k = 0; k < r.counterexamples.size(); ++k) js << (k ? ", " : "") << jstr(r.counterexamples[k]);
-    js << "]\n    }" << (i + 1 < reps.size() ? "," : "") << "\n";
+  Json report = {{"tool", "geomcheck"}, {"schema_version", kReportSchemaVersion}, {"version", run.version},
+                 {"started", run.started}, {"command_line", run.command}, {"verdict", passed ? "passed" : "failed"},
+                 {"seed", run.seed}, {"cases_per_query", run.per_query}, {"saved_cases_per_kind", kMaxSavedPerKind},
+                 {"saved_cases_per_signature", kMaxSavedPerSignature},
+                 {"replay", run.rerun}, {"implementation", run.under_test}, {"queries", Json::array()}};
+  for (QueryReport& r : reps) report["queries"].push_back(query_json(r));
+  // The point-set queries follow the pair queries (absent when none ran).
+  if (!point_sets.empty()) {
+    Json& sets = report["point_set_queries"] = Json::array();
+    for (const PointSetReport& r : point_sets) sets.push_back(point_set_json(r));
   }
-  js << "  ]";
-  write_point_sets_json(js, point_sets);
-  js << "\n}\n";
-
+  // Text that is not UTF-8 (a path, say) is written with U+FFFD in its place, not thrown on.
+  std::ofstream js(file);
+  js << report.dump(2, ' ', false, Json::error_handler_t::replace) << '\n';
 }
 
 void write_html(const std::filesystem::path& file, const RunInfo& run, std::vector<QueryReport>& reps,
@@ -386,20 +400,19 @@ void write_html(const std::filesystem::path& file, const RunInfo& run, std::vect
     << "</b>. Errors are multiples of the case scale "
        "(largest coordinate magnitude or extent). Rerun: <code>" << html(run.rerun) << "</code></p>";
   write_precision_table(h, reps);
-  for (QueryReport& r : reps) write_query_section(h, r);
+  for (QueryReport& r : reps) write_query_section(h, r, file.parent_path());
   for (const PointSetReport& r : point_sets) write_point_set_section(h, r);
   h << "</body></html>\n";
 }
 
 namespace {
 
+/// s for XML text or an attribute: html()'s escapes, quotes too, and control
+/// characters other than a newline as spaces.
 std::string xml(const std::string& s) {
   std::string o;
-  for (char c : s) {
-    if (c == '<') o += "&lt;";
-    else if (c == '>') o += "&gt;";
-    else if (c == '&') o += "&amp;";
-    else if (c == '"') o += "&quot;";
+  for (char c : html(s)) {
+    if (c == '"') o += "&quot;";
     else if (static_cast<unsigned char>(c) < 0x20 && c != '\n') o += ' ';
     else o += c;
   }

@@ -17,6 +17,7 @@
 #include <system_error>
 
 #include "geomcheck/casefile.hpp"
+#include "geomcheck/properties/shrink.hpp"
 #include "geomcheck/properties/spec.hpp"
 #include "geomcheck/properties/tolerances.hpp"
 #include "geomcheck/reports/draw.hpp"
@@ -25,6 +26,9 @@
 namespace geomcheck {
 
 namespace {
+
+/// The replay command of a saved case, less its path.
+std::string replay_prefix(const VerifyOptions& opt) { return opt.replay.empty() ? opt.program + " --replay " : opt.replay; }
 
 /// check_all, with a subject that throws failing the case instead of
 /// ending the run.
@@ -97,7 +101,7 @@ bool save_failure(const typename QueryTraits<Q>::Case& c, const ImplOf<Q>& subje
       c.a, c.b, report::html(std::string(name) + ": " + f.property + ": " + f.detail + "; truth: " + e.truth_text), {},
       &ans);
   report::write_counterexample_page(std::filesystem::path(path).replace_extension(".html"), name, drawing, subject.name,
-                                    opt.program + " --replay " + path.string());
+                                    replay_prefix(opt) + path.string());
   return true;
 }
 
@@ -157,22 +161,31 @@ struct Tally {
   VerifyResult res;
   report::QueryReport rep;
   std::vector<double> ns;  ///< the subject's time per call, one per case
-  /// A case's outcome (`saved`: its case file, when one was saved).
-  void add(QueryId id, const Outcome& o, const std::filesystem::path& saved) {
+  std::vector<std::string> modes;  ///< each case's generator mode: a failure's signature is property @ mode
+  std::map<std::string, int> saved_of_property, saved_of_signature;  ///< case files saved, for the caps
+  /// Case i's outcome (`saved`: its case file, when one was saved).
+  void add(QueryId id, int i, const Outcome& o, const std::filesystem::path& saved) {
     report::add_evaluation(rep, id, o.e);
     if (std::isfinite(o.ns)) ns.push_back(o.ns);
-    if (o.failure) fail(o.failure->property, saved);
+    if (o.failure) fail(i, o.failure->property, saved);
   }
-  /// A failing case of `property` (and its case file, when one was saved).
-  void fail(const std::string& property, const std::filesystem::path& saved) {
+  /// Case i failing `property` (and its case file, when one was saved).
+  void fail(int i, const std::string& property, const std::filesystem::path& saved) {
     ++res.failures;
     ++res.by_property[property];
     ++rep.check_failures;
     ++rep.failures_by_property[property];
+    ++rep.failures_by_signature[signature(i, property)];
     if (!saved.empty()) {
+      ++saved_of_property[property];
+      ++saved_of_signature[signature(i, property)];
       res.saved.push_back(saved);
       rep.counterexamples.push_back(saved.string());
     }
+  }
+  /// The signature of case i failing `property`.
+  std::string signature(int i, const std::string& property) const {
+    return property + " @ " + (i < static_cast<int>(modes.size()) ? modes[i] : std::string("?"));
   }
 };
 
@@ -195,7 +208,7 @@ void run_guarded(QueryId id, int n, bool isolate, unsigned case_seconds, Tally& 
     if (pid < 0) {  // no child: in process
       for (; next < n; ++next) {
         const Outcome o = check(next);
-        tally.add(id, o, o.failure ? save(next, *o.failure, true) : std::filesystem::path());
+        tally.add(id, next, o, o.failure ? save(next, *o.failure, true) : std::filesystem::path());
       }
       return;
     }
@@ -203,14 +216,14 @@ void run_guarded(QueryId id, int n, bool isolate, unsigned case_seconds, Tally& 
       ::close(fds[0]);
       FILE* out = ::fdopen(fds[1], "w");
       for (int i = next; i < n; ++i) {
-        ::alarm(case_seconds);  // a subject that hangs is ended by SIGALRM
+        ::alarm(case_seconds);  // a subject that hangs (checks or shrink) is ended by SIGALRM
         const Outcome o = check(i);
-        ::alarm(0);
         std::filesystem::path saved;
         if (o.failure) {
           saved = save(i, *o.failure, true);
-          tally.fail(o.failure->property, saved);  // the child's copy: the cap per property
+          tally.fail(i, o.failure->property, saved);  // the child's copy: the caps
         }
+        ::alarm(0);
         std::fprintf(out, "%d\t%s\t%s\t%s\n", i, o.failure ? o.failure->property.c_str() : "-", saved.string().c_str(),
                      encode(o.e, o.ns).c_str());
         std::fflush(out);
@@ -231,7 +244,7 @@ void run_guarded(QueryId id, int n, bool isolate, unsigned case_seconds, Tally& 
         Outcome o = decode(line.substr(t3 + 1));
         const std::string property = line.substr(t1 + 1, t2 - t1 - 1);
         if (property != "-") o.failure = Failure{property, ""};
-        tally.add(id, o, line.substr(t2 + 1, t3 - t2 - 1));
+        tally.add(id, std::atoi(line.c_str()), o, line.substr(t2 + 1, t3 - t2 - 1));
       }
       next = std::atoi(line.c_str()) + 1;
       line.clear();
@@ -246,7 +259,7 @@ void run_guarded(QueryId id, int n, bool isolate, unsigned case_seconds, Tally& 
       const Failure f = hung ? Failure{"subject-hung", "no answer within " + std::to_string(case_seconds) + " s"}
                              : Failure{"subject-crashed", "the subject ended the process (" + how + ")"};
       ++tally.rep.cases;  // run, and failed without an answer to count
-      tally.fail(f.property, save(next, f, false));
+      tally.fail(next, f.property, save(next, f, false));
       ++next;
     }
   }
@@ -264,13 +277,15 @@ std::string utc_now() {
 
 /// report.json and report.html of a verify run (and a JUnit file when asked
 /// for) under opt.out, from the tally of subject's cases.
+/// The tally's report of subject's run completed: names, claims, bounds,
+/// the median call, the time per case.
 template <QueryId Q>
-std::filesystem::path write_report(const ImplOf<Q>& subject, const VerifyOptions& opt, Tally& t, double seconds) {
+void complete_figures(const ImplOf<Q>& subject, const VerifyOptions& opt, Tally& t, double seconds) {
   report::QueryReport& rep = t.rep;
   rep.name = info(Q).name;
   rep.summary = info(Q).summary;
   rep.subject = subject.name;
-  rep.replay = opt.program + " --replay ";
+  rep.replay = replay_prefix(opt);
   rep.claims = subject.claims ? *subject.claims : spec_of<Q>().claims;
   rep.own_claims = subject.claims != nullptr;
   rep.requested = opt.cases;
@@ -281,6 +296,12 @@ std::filesystem::path write_report(const ImplOf<Q>& subject, const VerifyOptions
     rep.prod_ns = t.ns[t.ns.size() / 2];
   }
   rep.oracle_us = rep.cases ? seconds * 1e6 / rep.cases : NAN;
+}
+
+/// report.json and report.html of a verify run (and a JUnit file when asked
+/// for) under opt.out, from its completed figures.
+template <QueryId Q>
+std::filesystem::path write_report(const ImplOf<Q>& subject, const VerifyOptions& opt, const report::QueryReport& rep) {
   report::RunInfo run;
   run.version = GEOMCHECK_VERSION;
   run.started = opt.started.empty() ? utc_now() : opt.started;
@@ -308,22 +329,44 @@ VerifyResult verify_cases(const ImplOf<Q>& subject, const VerifyOptions& opt) {
   std::vector<Tagged<Case>> cases;
   cases.reserve(opt.cases);
   for (int i = 0; i < opt.cases; ++i) cases.push_back(gen(random.split(), 50).value());
-  std::fprintf(stderr, "verify %s against %s: %d targeted cases, seed %llu%s\n", subject.name, info(Q).name, opt.cases,
-               static_cast<unsigned long long>(opt.seed), opt.isolate ? "" : ", in process");
-  std::printf("%s\n", claims_text<Q>(subject).c_str());
+  if (opt.summary)
+    std::fprintf(stderr, "verify %s against %s: %d targeted cases, seed %llu%s\n", subject.name, info(Q).name,
+                 opt.cases, static_cast<unsigned long long>(opt.seed), opt.isolate ? "" : ", in process");
+  if (opt.summary) std::printf("%s\n", claims_text<Q>(subject).c_str());
   std::fflush(stdout);
 
   Tally tally;
-  // A failure saved (the first opt.max_saved of its property) and announced.
+  for (const auto& c : cases) tally.modes.push_back(c.second);
+  // A failure saved (the first opt.max_saved of its property, at most
+  // kMaxSavedPerSignature of its signature), shrunk while it fails the same
+  // property (not a crash or a hang: the subject is not asked again), and
+  // announced.
   auto save = [&](int i, const Failure& f, bool ask_subject) -> std::filesystem::path {
     std::filesystem::path path;
-    const auto it = tally.res.by_property.find(f.property);
-    if (it != tally.res.by_property.end() && it->second >= opt.max_saved) return path;
-    if (!save_failure<Q>(cases[i].first, subject, f, opt, i, path, ask_subject)) return {};
+    if (tally.saved_of_property[f.property] >= opt.max_saved ||
+        tally.saved_of_signature[tally.signature(i, f.property)] >= report::kMaxSavedPerSignature)
+      return path;
+    Case c = cases[i].first;
+    Failure shown = f;
+    if (ask_subject && opt.shrink_budget > 0) {
+      Shrunk how;
+      c = shrink(
+          c,
+          [&](const Case& k) {
+            const CheckResult g = guarded_check(k, subject);
+            return g && g->property == f.property;
+          },
+          opt.shrink_budget, &how);
+      if (how.simplified > 0) {
+        if (const CheckResult g = guarded_check(c, subject)) shown = *g;
+        shown.detail += " (shrunk: " + std::to_string(how.simplified) + " numbers simplified)";
+      }
+    }
+    if (!save_failure<Q>(c, subject, shown, opt, i, path, ask_subject)) return {};
     if (!opt.quiet)
-      std::printf("FAIL %s (case %d, %s): %s\n  drawn: %s\n  replay: %s --replay %s\n", f.property.c_str(), i,
-                  cases[i].second.c_str(), f.detail.c_str(),
-                  std::filesystem::path(path).replace_extension(".html").string().c_str(), opt.program.c_str(),
+      std::printf("FAIL %s (case %d, %s): %s\n  drawn: %s\n  replay: %s%s\n", f.property.c_str(), i,
+                  cases[i].second.c_str(), shown.detail.c_str(),
+                  std::filesystem::path(path).replace_extension(".html").string().c_str(), replay_prefix(opt).c_str(),
                   path.string().c_str());
     std::fflush(stdout);
     return path;
@@ -347,7 +390,10 @@ VerifyResult verify_cases(const ImplOf<Q>& subject, const VerifyOptions& opt) {
   VerifyResult& res = tally.res;
   res.cases = static_cast<int>(cases.size());
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  if (opt.report) res.report = write_report<Q>(subject, opt, tally, seconds);
+  complete_figures<Q>(subject, opt, tally, seconds);
+  if (opt.report) res.report = write_report<Q>(subject, opt, tally.rep);
+  res.figures = tally.rep;
+  if (!opt.summary) return res;
 
   std::printf("verify %s (%s): %d cases, seed %llu: %s\n", subject.name, info(Q).name, res.cases,
               static_cast<unsigned long long>(opt.seed), res.failures == 0 ? "every property held" : "FAILED");

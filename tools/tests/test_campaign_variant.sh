@@ -20,12 +20,29 @@ cases=$(ls "$dir"/*.case 2>/dev/null | wc -l)
 [ "$cases" -gt 0 ] || fail "no counterexample saved"
 # Every failure counted; at most saved_cases_per_kind saved per property, each listed.
 python3 - "$out/report/report.json" "$cases" <<'PY' || fail "report.json's counts and saved cases do not add up"
-import json, sys
+import collections, json, re, sys
 r = json.load(open(sys.argv[1])); saved = int(sys.argv[2]); cap = r["saved_cases_per_kind"]
 q, = r["queries"]
 assert len(q["counterexamples"]) == saved, (len(q["counterexamples"]), saved)
-assert saved == sum(min(n, cap) for n in q["failures_by_property"].values()), q["failures_by_property"]
 assert q["check_failures"] == sum(q["failures_by_property"].values()) >= saved
+sigs = q["failures_by_signature"]  # "property @ mode": count
+assert sum(sigs.values()) == q["check_failures"], sigs
+# Saved per signature (the mode is in each file's found-by line) at most
+# saved_cases_per_signature, per property at most saved_cases_per_kind, and
+# every signature has a saved case unless its property's cap was reached.
+per_sig, per_prop = collections.Counter(), collections.Counter()
+for path in q["counterexamples"]:
+    text = open(path).read()
+    prop = re.search(r"\d{5}-(.*)\.case$", path).group(1)
+    mode = re.search(r"mode=(\S+)", text).group(1)
+    per_sig[prop + " @ " + mode] += 1
+    per_prop[prop] += 1
+assert all(n <= r["saved_cases_per_signature"] for n in per_sig.values()), per_sig
+assert all(n <= cap for n in per_prop.values()), per_prop
+for sig in sigs:
+    prop = sig.split(" @ ")[0]
+    assert per_sig[sig] > 0 or per_prop[prop] == cap, (sig, per_sig, per_prop)
+print(f"{saved} saved of {q['check_failures']} failures, {len(sigs)} signatures, {q['shrunk']} shrunk")
 PY
 grep -q '"implementation": "capsule-capsule' "$out/report/report.json" || fail "report.json does not name the variant"
 grep -q '"verdict": "failed"' "$out/report/report.json" || fail "report.json's overall verdict is not failed"

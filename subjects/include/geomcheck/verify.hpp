@@ -71,6 +71,7 @@
 #include "geomcheck/casefile.hpp"
 #include "geomcheck/properties/checks.hpp"
 #include "geomcheck/properties/spec.hpp"
+#include "geomcheck/reports/report.hpp"
 
 namespace geomcheck {
 
@@ -123,6 +124,11 @@ struct VerifyOptions {
   bool isolate = true;
   bool report = true;                        ///< write out/report.json and out/report.html
   std::string junit;                         ///< also write a JUnit XML file here (empty: none)
+  bool summary = true;                       ///< print the claims and the summary (stdout)
+  int shrink_budget = report::kShrinkBudget;  ///< checks a saved case's shrink may spend (0: saved as found)
+  /// The command that replays a saved case, its path appended (default:
+  /// program + " --replay ").
+  std::string replay;
   std::string command;                       ///< for the report: the command line (default: program)
   std::string started;                       ///< for the report: the UTC start time (default: now)
 };
@@ -134,6 +140,7 @@ struct VerifyResult {
   std::map<std::string, int> by_property;       ///< failing cases by the property they failed
   std::vector<std::filesystem::path> saved;      ///< case files saved (a .html drawing beside each)
   std::filesystem::path report;                  ///< report.html written (empty: none)
+  report::QueryReport figures;                   ///< what the report shows: counts, error tails, time per call
 };
 
 /// The subject as a RapidCheck property: targeted cases of Q drawn by

@@ -70,12 +70,20 @@ struct QueryReport {
   std::vector<std::string> drawings;      // production's counterexamples, drawn (first 12)
   std::vector<std::string> fcl_drawings;  // FCL's disagreements beyond the band, drawn (the first 3 of each kind)
   std::map<std::string, int> failures_by_property;
+  /// Failing cases by signature, "property @ generator mode": the kinds of
+  /// failure (at most kMaxSavedPerSignature of each saved).
+  std::map<std::string, int> failures_by_signature;
+  int shrunk = 0;  ///< saved counterexamples made simpler before saving (shrink.hpp)
   Tolerances tol{};
   // Queries whose depth is an upper bound, not the penetration depth
   // (collide_cylinder_cylinder): depth / certified penetration depth over
   // the overlapping cases where the engine encloses it within 1%.
   bool depth_is_bound = false;
   Series depth_ratio;
+  /// The other engines (peers/) on the first cases of this query, each held
+  /// to every property under its own claims: one report per engine (its
+  /// name in `subject`; prod_ns its median time per call).
+  std::vector<QueryReport> peers;
 };
 
 
@@ -117,6 +125,10 @@ struct RunInfo {
 /// Case files saved per kind (a property's failures, a kind of FCL
 /// disagreement) and query; the rest are counted, not saved.
 inline constexpr int kMaxSavedPerKind = 25;
+/// Case files saved per failure signature (property and generator mode).
+inline constexpr int kMaxSavedPerSignature = 5;
+/// Checks a counterexample's shrink may spend before it is saved.
+inline constexpr int kShrinkBudget = 60;
 
 /// The version of report.json's layout (reports/report.schema.json).
 inline constexpr int kReportSchemaVersion = 2;

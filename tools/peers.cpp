@@ -1,0 +1,83 @@
+// geomcheck — the other engines by name, and their campaign runs (peers.hpp).
+#include "peers.hpp"
+
+#include <cstdio>
+
+#include "geomcheck/verify.hpp"
+#ifdef GEOMCHECK_PEER_ODE
+#include "geomcheck/peers/ode.hpp"
+#endif
+#ifdef GEOMCHECK_PEER_BULLET
+#include "geomcheck/peers/bullet.hpp"
+#endif
+#ifdef GEOMCHECK_PEER_MUJOCO
+#include "geomcheck/peers/mujoco.hpp"
+#endif
+
+namespace geomcheck {
+
+namespace {
+
+/// Every engine's subject of Q, null where the engine cannot express it.
+template <QueryId Q>
+std::vector<const ImplOf<Q>*> subjects_of() {
+  std::vector<const ImplOf<Q>*> out;
+#ifdef GEOMCHECK_PEER_ODE
+  out.push_back(peers::peer_ode<Q>().subject);
+#endif
+#ifdef GEOMCHECK_PEER_BULLET
+  out.push_back(peers::peer_bullet<Q>().subject);
+#endif
+#ifdef GEOMCHECK_PEER_MUJOCO
+  out.push_back(peers::peer_mujoco<Q>().subject);
+#endif
+  return out;
+}
+
+}  // namespace
+
+std::vector<std::string> peer_engines() {
+  std::vector<std::string> out;
+  for_each_query([&](auto q) {
+    for (const auto* s : subjects_of<decltype(q)::value>())
+      if (s && std::find(out.begin(), out.end(), s->name) == out.end()) out.push_back(s->name);
+  });
+  return out;
+}
+
+template <QueryId Q>
+const ImplOf<Q>* peer_subject(const std::string& name) {
+  for (const auto* s : subjects_of<Q>())
+    if (s && name == s->name) return s;
+  return nullptr;
+}
+
+template <QueryId Q>
+std::vector<report::QueryReport> run_peers(int cases, std::uint64_t seed, const std::filesystem::path& out_dir) {
+  std::vector<report::QueryReport> out;
+  if (cases <= 0) return out;
+  for (const auto* s : subjects_of<Q>()) {
+    if (!s) continue;
+    std::fprintf(stderr, "[campaign] %-24s %s on the first %d cases\n", info(Q).name, s->name, cases);
+    VerifyOptions opt;
+    opt.cases = cases;
+    opt.seed = seed;
+    opt.out = out_dir / "peers" / s->name;
+    opt.max_saved = 3;
+    opt.shrink_budget = 0;  // saved as found: the time goes to the cases
+    opt.quiet = true;
+    opt.summary = false;
+    opt.report = false;
+    opt.replay = std::string("geomcheck replay --subject ") + s->name + " ";
+    out.push_back(verify(*s, opt).figures);
+  }
+  return out;
+}
+
+#define GEOMCHECK_X(id, kind, A, B, summary)                                                               \
+  template const ImplOf<QueryId::id>* peer_subject<QueryId::id>(const std::string&);                      \
+  template std::vector<report::QueryReport> run_peers<QueryId::id>(int, std::uint64_t, const std::filesystem::path&);
+GEOMCHECK_QUERY_LIST(GEOMCHECK_X)
+#undef GEOMCHECK_X
+
+}  // namespace geomcheck
