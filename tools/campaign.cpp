@@ -340,7 +340,7 @@ int run_campaign(const CampaignOptions& opt) {
     }
     reps.push_back(QueryRun<Q>(opt, out_dir).run(threads));
     if (opt.variant.empty())
-      reps.back().peers = run_peers<Q>(std::min(opt.peer_cases, reps.back().cases), opt.seed, out_dir);
+      reps.back().peers = run_peers<Q>(std::min(opt.peer_cases, reps.back().cases), opt.seed, out_dir, opt.seeds);
   });
   // The point-set family (not with a variant: those are pair subjects).
   std::vector<report::PointSetReport> point_sets;

@@ -29,6 +29,9 @@ struct CampaignOptions {
   /// Cases of each query put to every other engine (peers/: ODE, Bullet,
   /// MuJoCo), the first ones of the campaign's; 0: none. Not with a variant.
   int peer_cases = 300;
+  /// Where the bug-report configurations are (<query>/bugreport-*.case),
+  /// put to every other engine too.
+  std::string seeds = "corpora/seeds";
   std::string junit;    ///< also write a JUnit XML file here (empty: none)
   std::string version;  ///< for the report: the build's version
   std::string started;  ///< for the report: UTC start time

@@ -335,6 +335,9 @@ void add_campaign(CLI::App& app, CampaignOptions& opt, int& rc) {
                 "cases of each query also put to the other engines (ODE, Bullet, MuJoCo where built; 0: none)")
       ->capture_default_str()
       ->check(CLI::NonNegativeNumber);
+  c->add_option("--seeds", opt.seeds, "where the bug-report configurations put to the other engines are "
+                                       "(<query>/bugreport-*.case)")
+      ->capture_default_str();
   c->add_flag("--no-progress", [&opt](std::int64_t) { opt.progress = false; }, "no progress lines on stderr");
   c->add_option("--subject,--variant", opt.variant,
                 "run a built-in subject of one query in production's place: a known-wrong variant ('help' lists them)")

@@ -1,6 +1,7 @@
 // geomcheck — the other engines by name, and their campaign runs (peers.hpp).
 #include "peers.hpp"
 
+#include <algorithm>
 #include <cstdio>
 
 #include "geomcheck/verify.hpp"
@@ -53,9 +54,17 @@ const ImplOf<Q>* peer_subject(const std::string& name) {
 }
 
 template <QueryId Q>
-std::vector<report::QueryReport> run_peers(int cases, std::uint64_t seed, const std::filesystem::path& out_dir) {
+std::vector<report::QueryReport> run_peers(int cases, std::uint64_t seed, const std::filesystem::path& out_dir,
+                                           const std::filesystem::path& seeds) {
   std::vector<report::QueryReport> out;
   if (cases <= 0) return out;
+  std::vector<std::filesystem::path> bugreports;
+  std::error_code ec;
+  for (const auto& entry : std::filesystem::directory_iterator(seeds / info(Q).name, ec)) {
+    const std::string name = entry.path().filename().string();
+    if (name.rfind("bugreport-", 0) == 0 && entry.path().extension() == ".case") bugreports.push_back(entry.path());
+  }
+  std::sort(bugreports.begin(), bugreports.end());
   for (const auto* s : subjects_of<Q>()) {
     if (!s) continue;
     std::fprintf(stderr, "[campaign] %-24s %s on the first %d cases\n", info(Q).name, s->name, cases);
@@ -70,13 +79,19 @@ std::vector<report::QueryReport> run_peers(int cases, std::uint64_t seed, const 
     opt.report = false;
     opt.replay = std::string("geomcheck replay --subject ") + s->name + " ";
     out.push_back(verify(*s, opt).figures);
+    if (bugreports.empty()) continue;
+    opt.out = out_dir / "peers" / s->name / "bugreports";
+    const VerifyResult b = verify(*s, bugreports, opt);
+    out.back().bugreports = b.cases;
+    out.back().bugreports_failed = b.failed_cases;
   }
   return out;
 }
 
 #define GEOMCHECK_X(id, kind, A, B, summary)                                                               \
   template const ImplOf<QueryId::id>* peer_subject<QueryId::id>(const std::string&);                      \
-  template std::vector<report::QueryReport> run_peers<QueryId::id>(int, std::uint64_t, const std::filesystem::path&);
+  template std::vector<report::QueryReport> run_peers<QueryId::id>(int, std::uint64_t, const std::filesystem::path&, \
+                                                                   const std::filesystem::path&);
 GEOMCHECK_QUERY_LIST(GEOMCHECK_X)
 #undef GEOMCHECK_X
 

@@ -24,8 +24,11 @@ const ImplOf<Q>* peer_subject(const std::string& name);
 /// Every engine's subject of Q held to every property (verify(): a child
 /// process, a hang or a crash that case's failure) on the first `cases`
 /// cases the campaign draws from `seed`; failures saved under
-/// out_dir/peers/<engine>/ (at most 3 per property). One report per engine.
+/// out_dir/peers/<engine>/ (at most 3 per property); then the bug-report
+/// configurations of Q (`seeds`/<query>/bugreport-*.case, where the folder
+/// exists), each failing one named. One report per engine.
 template <QueryId Q>
-std::vector<report::QueryReport> run_peers(int cases, std::uint64_t seed, const std::filesystem::path& out_dir);
+std::vector<report::QueryReport> run_peers(int cases, std::uint64_t seed, const std::filesystem::path& out_dir,
+                                           const std::filesystem::path& seeds);
 
 }  // namespace geomcheck

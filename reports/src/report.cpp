@@ -30,6 +30,16 @@ std::string failures_cell(const QueryReport& r) {
          "</span> (" + n("subject-hung") + " / " + n("subject-crashed") + " / " + n("subject-threw") + ")";
 }
 
+/// "; bug reports: k of n failed (names)": an engine's outcome on the
+/// bug-report configurations (empty where none were put to it).
+std::string bugreports_cell(const QueryReport& p) {
+  if (p.bugreports == 0) return "";
+  std::string names;
+  for (const std::string& n : p.bugreports_failed) names += (names.empty() ? "" : ", ") + n;
+  return "<br>bug reports: " + std::to_string(p.bugreports_failed.size()) + " of " + std::to_string(p.bugreports) +
+         " failed" + (names.empty() ? "" : "<span title='" + html(names) + "'> (hover)</span>");
+}
+
 /// The command that replays one of r's counterexamples, less its path.
 std::string replay_prefix(const QueryReport& r) {
   if (!r.replay.empty()) return r.replay;
@@ -156,7 +166,7 @@ void write_precision_table(std::ostream& h, std::vector<QueryReport>& reps) {
         << " of the first " << p.cases << "</td><td class='" << (p.beyond ? "bad" : "ok") << "'>"
         << rate(p.beyond, p.valid) << "</td><td>" << tri(p.depth) << "</td><td>" << tri(p.normal) << "</td><td>"
         << tri(p.point) << "</td><td>&ndash;</td><td>" << tri(p.t) << "</td><td>&ndash;</td><td>" << failures_cell(p)
-        << "</td><td>" << hnum(p.prod_ns) << " ns</td></tr>";
+        << bugreports_cell(p) << "</td><td>" << hnum(p.prod_ns) << " ns</td></tr>";
   }
   h << "</table><p>Other engines (ODE, Bullet, MuJoCo, where built) answer the first cases of each query through "
        "the same door as a user's subject, in a child process (a hang or a crash is that case's failure), and are "
@@ -282,7 +292,8 @@ Json peer_json(QueryReport& p) {
           {"crashed", count("subject-crashed")}, {"threw", count("subject-threw")},
           {"errors", {{"depth", series_json(p.depth)}, {"normal", series_json(p.normal)},
                       {"point", series_json(p.point)}, {"t", series_json(p.t)}}},
-          {"ns_per_call", json_num(p.prod_ns)}, {"counterexamples", p.counterexamples}};
+          {"ns_per_call", json_num(p.prod_ns)}, {"counterexamples", p.counterexamples},
+          {"bugreports", {{"cases", p.bugreports}, {"failed", p.bugreports_failed}}}};
 }
 
 /// A query's entry in report.json.

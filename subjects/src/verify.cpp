@@ -176,6 +176,9 @@ struct Tally {
     ++rep.check_failures;
     ++rep.failures_by_property[property];
     ++rep.failures_by_signature[signature(i, property)];
+    if (i < static_cast<int>(modes.size()) &&
+        (res.failed_cases.empty() || res.failed_cases.back() != modes[i]))
+      res.failed_cases.push_back(modes[i]);
     if (!saved.empty()) {
       ++saved_of_property[property];
       ++saved_of_signature[signature(i, property)];
@@ -320,15 +323,27 @@ std::filesystem::path write_report(const ImplOf<Q>& subject, const VerifyOptions
 }
 
 template <QueryId Q>
+VerifyResult run_cases(const ImplOf<Q>& subject, const std::vector<Tagged<typename QueryTraits<Q>::Case>>& cases,
+                       const VerifyOptions& opt);
+
+template <QueryId Q>
 VerifyResult verify_cases(const ImplOf<Q>& subject, const VerifyOptions& opt) {
   using Case = typename QueryTraits<Q>::Case;
-  const auto start = std::chrono::steady_clock::now();
   const auto gen = Spec<Q>::targeted();
   // The campaign's derivation: the same seed draws the same cases there.
   rc::Random random(opt.seed ^ (0x9e3779b97f4a7c15ull * (static_cast<std::uint64_t>(Q) + 1)));
   std::vector<Tagged<Case>> cases;
   cases.reserve(opt.cases);
   for (int i = 0; i < opt.cases; ++i) cases.push_back(gen(random.split(), 50).value());
+  return run_cases<Q>(subject, cases, opt);
+}
+
+/// verify() on the given cases (each tagged: its mode, or its file's name).
+template <QueryId Q>
+VerifyResult run_cases(const ImplOf<Q>& subject, const std::vector<Tagged<typename QueryTraits<Q>::Case>>& cases,
+                       const VerifyOptions& opt) {
+  using Case = typename QueryTraits<Q>::Case;
+  const auto start = std::chrono::steady_clock::now();
   if (opt.summary)
     std::fprintf(stderr, "verify %s against %s: %d targeted cases, seed %llu%s\n", subject.name, info(Q).name,
                  opt.cases, static_cast<unsigned long long>(opt.seed), opt.isolate ? "" : ", in process");
@@ -430,6 +445,27 @@ int replay_files(const ImplOf<Q>& subject, const std::vector<std::filesystem::pa
   return failed;
 }
 
+/// verify() on case files of Q (each tagged by its file name); a file that
+/// cannot be read, or is of another query, is said on stderr and left out.
+template <QueryId Q>
+VerifyResult verify_file_cases(const ImplOf<Q>& subject, const std::vector<std::filesystem::path>& files,
+                               const VerifyOptions& opt) {
+  std::vector<Tagged<typename QueryTraits<Q>::Case>> cases;
+  for (const auto& path : files) {
+    const ParseResult pr = load_case(path);
+    std::optional<std::string> err = pr.ok() ? case_error(pr.value) : std::optional<std::string>(pr.error);
+    if (!err && pr.value.query != Q) err = std::string("a case of ") + info(pr.value.query).name;
+    if (err) {
+      std::fprintf(stderr, "verify: %s: %s\n", path.string().c_str(), err->c_str());
+      continue;
+    }
+    cases.emplace_back(to_case<Q>(pr.value), path.stem().string());
+  }
+  VerifyOptions o = opt;
+  o.cases = static_cast<int>(cases.size());
+  return run_cases<Q>(subject, cases, o);
+}
+
 template <QueryId Q>
 int verify_program(const ImplOf<Q>& subject, int argc, char** argv) {
   VerifyOptions opt;
@@ -463,6 +499,10 @@ int verify_program(const ImplOf<Q>& subject, int argc, char** argv) {
 #define GEOMCHECK_X(id, kind, A, B, summary)                                                          \
   VerifyResult verify(const ImplOf<QueryId::id>& subject, const VerifyOptions& opt) {                 \
     return verify_cases<QueryId::id>(subject, opt);                                                   \
+  }                                                                                                   \
+  VerifyResult verify(const ImplOf<QueryId::id>& subject, const std::vector<std::filesystem::path>& files,  \
+                      const VerifyOptions& opt) {                                                      \
+    return verify_file_cases<QueryId::id>(subject, files, opt);                                       \
   }                                                                                                   \
   int replay(const ImplOf<QueryId::id>& subject, const std::vector<std::filesystem::path>& files) {   \
     return replay_files<QueryId::id>(subject, files);                                                 \

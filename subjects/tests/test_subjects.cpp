@@ -97,6 +97,13 @@ TEST(Subjects, SinglePrecisionIsCaughtAndReplays) {
   }
   EXPECT_EQ(replay(mine, r.saved), static_cast<int>(r.saved.size()));
   EXPECT_EQ(replay(production_of<kSphere>(), r.saved), 0);
+  // The same files through verify(): each fails again, named by its file.
+  VerifyOptions again = options("float-files", 1);
+  again.report = false;
+  const VerifyResult f = verify(mine, r.saved, again);
+  EXPECT_EQ(f.cases, static_cast<int>(r.saved.size()));
+  EXPECT_EQ(f.failed_cases.size(), r.saved.size());
+  EXPECT_EQ(verify(production_of<kSphere>(), r.saved, again).failures, 0);
 
   // The report of the run: the subject, its claims and the same counts.
   ASSERT_FALSE(r.report.empty());

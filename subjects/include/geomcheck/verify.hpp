@@ -141,6 +141,7 @@ struct VerifyResult {
   std::vector<std::filesystem::path> saved;      ///< case files saved (a .html drawing beside each)
   std::filesystem::path report;                  ///< report.html written (empty: none)
   report::QueryReport figures;                   ///< what the report shows: counts, error tails, time per call
+  std::vector<std::string> failed_cases;         ///< the failing cases' tags (generator mode, or file name), in order
 };
 
 /// The subject as a RapidCheck property: targeted cases of Q drawn by
@@ -165,6 +166,9 @@ bool rapidcheck(const Subject<Q>& subject) {
 //   VerifyResult verify(subject, const VerifyOptions& opt)
 //       holds `subject` to every property on opt.cases targeted cases (see
 //       the header comment); prints a summary and returns the counts;
+//   VerifyResult verify(subject, files, opt)
+//       the same on the cases of these case files (each tagged by its file
+//       name: failed_cases lists the files that failed);
 //   int replay(subject, files)
 //       replays case files of Q against `subject`: every property, the
 //       truth and the subject's answer printed; the number of failing cases;
@@ -173,6 +177,8 @@ bool rapidcheck(const Subject<Q>& subject) {
 //       comment), then verify() or replay(); the exit status.
 #define GEOMCHECK_X(id, kind, A, B, summary)                                                          \
   VerifyResult verify(const ImplOf<QueryId::id>& subject, const VerifyOptions& opt);                  \
+  VerifyResult verify(const ImplOf<QueryId::id>& subject, const std::vector<std::filesystem::path>& files, \
+                      const VerifyOptions& opt);                                                         \
   int replay(const ImplOf<QueryId::id>& subject, const std::vector<std::filesystem::path>& files);    \
   int verify(const ImplOf<QueryId::id>& subject, int argc, char** argv);
 GEOMCHECK_QUERY_LIST(GEOMCHECK_X)

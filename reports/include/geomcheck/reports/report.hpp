@@ -84,6 +84,10 @@ struct QueryReport {
   /// to every property under its own claims: one report per engine (its
   /// name in `subject`; prod_ns its median time per call).
   std::vector<QueryReport> peers;
+  /// An engine's row: the bug-report configurations of this query
+  /// (corpora/seeds/<query>/bugreport-*.case) put to it, and those it failed.
+  int bugreports = 0;
+  std::vector<std::string> bugreports_failed;
 };
 
 
