@@ -149,6 +149,63 @@ std::string fmt3(double x) {
 
 bool finite3(Vec3 v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
 
+// A fourth panel where the marks (the subject's answer, the truth's
+// witness, a peer's answer) lie closer together than the views can show
+// (under 1/50 of the scene): a window four times their spread around their
+// centre, in the view that separates them most, with a scale bar. Only the
+// marks are drawn there: the shapes' outlines are sampled polygons, not
+// exact at that zoom.
+std::string zoom(const std::vector<Mark>& marks, double span_all, double W) {
+  std::vector<Vec3> pts;
+  for (const Mark& m : marks) {
+    if (finite3(m.p)) pts.push_back(m.p);
+    if ((m.kind == Mark::Kind::Segment || m.kind == Mark::Kind::Arrow) && finite3(m.q)) pts.push_back(m.q);
+  }
+  double spread = 0;
+  int best = 0;
+  double best_sep = -1;
+  for (int k = 0; k < 3; ++k) {
+    double sep = 0;
+    for (const Vec3& a : pts)
+      for (const Vec3& b : pts) {
+        spread = std::max(spread, length(a - b));
+        sep = std::max(sep, std::hypot(coord(a, kViews[k].i) - coord(b, kViews[k].i),
+                                       coord(a, kViews[k].j) - coord(b, kViews[k].j)));
+      }
+    if (sep > best_sep) best_sep = sep, best = k;
+  }
+  if (pts.size() < 2 || !(spread > 0) || !std::isfinite(spread) || !(spread < span_all / 50)) return "";
+  const View& v = kViews[best];
+  double cx = 0, cy = 0;
+  for (const Vec3& p : pts) cx += coord(p, v.i) / pts.size(), cy += coord(p, v.j) / pts.size();
+  const double window = 4 * spread, s = W / window;
+  auto X = [&](double a) { return W / 2 + (a - cx) * s; };
+  auto Y = [&](double b) { return W / 2 - (b - cy) * s; };
+  std::ostringstream o;
+  o << "<svg width='" << W << "' height='" << W + 16 << "' role='img' viewBox='0 0 " << W << ' ' << W + 16
+    << "'><title>zoom at the contact</title><rect x='0' y='0' width='" << W << "' height='" << W
+    << "' fill='#fff8e8' stroke='#ccc'/>";
+  for (const Mark& m : marks) {
+    if (!finite3(m.p)) continue;
+    const double ax = X(coord(m.p, v.i)), ay = Y(coord(m.p, v.j));
+    o << "<circle cx='" << num(ax) << "' cy='" << num(ay) << "' r='3' fill='" << m.color << "'/>";
+    if ((m.kind == Mark::Kind::Segment || m.kind == Mark::Kind::Arrow) && finite3(m.q))
+      o << "<line x1='" << num(ax) << "' y1='" << num(ay) << "' x2='" << num(X(coord(m.q, v.i))) << "' y2='"
+        << num(Y(coord(m.q, v.j))) << "' stroke='" << m.color << "' stroke-width='1.5'/>";
+    if (m.kind == Mark::Kind::PointNormal) {
+      const double nx = coord(m.q, v.i), ny = coord(m.q, v.j);
+      if (std::isfinite(nx) && std::isfinite(ny) && (nx != 0 || ny != 0))
+        o << "<line x1='" << num(ax) << "' y1='" << num(ay) << "' x2='" << num(ax + 40 * nx) << "' y2='"
+          << num(ay - 40 * ny) << "' stroke='" << m.color << "' stroke-width='1.5'/>";
+    }
+  }
+  o << "<line x1='10' y1='" << W - 10 << "' x2='" << 10 + W / 4 << "' y2='" << W - 10
+    << "' stroke='#333' stroke-width='2'/><text x='10' y='" << W - 14 << "' font-size='10'>" << fmt3(window / 4)
+    << "</text><text x='4' y='" << W + 12 << "' font-size='10'>zoom, " << v.name << " (" << v.axes
+    << "): the marks " << fmt3(spread) << " apart</text></svg>";
+  return o.str();
+}
+
 std::string render(const Figure (&shapes)[2], const std::vector<Mark>& marks, const std::string& title) {
   static const char* kFill[2] = {"rgba(60,110,200,0.25)", "rgba(230,140,30,0.25)"};
   static const char* kStroke[2] = {"#2c5aa0", "#c06a00"};
@@ -252,6 +309,7 @@ std::string render(const Figure (&shapes)[2], const std::vector<Mark>& marks, co
     o << "<text x='4' y='" << W + 12 << "' font-size='10'>" << v.name << " (" << v.axes << "), 1 unit = " << fmt3(s)
       << " px</text></svg>";
   }
+  o << zoom(marks, span_all, W);
   o << "<p class='legend'><span style='color:#2c5aa0'>&#9632; A</span> <span style='color:#c06a00'>&#9632; B</span>";
   for (const Mark& m : marks) o << "<br><span style='color:" << m.color << "'>&#9679; " << m.label << "</span>";
   o << "</p></figure>";

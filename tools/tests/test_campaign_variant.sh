@@ -70,4 +70,7 @@ rc=$?
 [ "$rc" -eq 1 ] || { tail "$out/replay-variant.log"; fail "replay --subject capsule-capsule: exit $rc, 1 expected"; }
 grep -q "replay: 0 passed, $cases failed, 0 unreadable" "$out/replay-variant.log" || { tail -3 "$out/replay-variant.log"; fail "not every case fails again against the variant"; }
 grep -q "counterexamples drawn" "$out/report/report.html" || fail "the report draws no counterexample"
+# A disagreement too small for the views (the answer and the witness under
+# 1/50 of the scene apart) gets a zoomed panel.
+grep -q "<title>zoom at the contact</title>" "$dir"/*.html || fail "no page zooms in on a small disagreement"
 echo "variant campaign: $cases counterexamples saved and drawn, all replay as passes against production"
