@@ -59,15 +59,6 @@ std::string seed_number(const std::string& v) {
   return "";
 }
 
-/// Now, UTC, ISO 8601.
-std::string utc_now() {
-  const std::time_t t = std::time(nullptr);
-  std::tm tm{};
-  gmtime_r(&t, &tm);
-  char b[32];
-  std::strftime(b, sizeof b, "%Y-%m-%dT%H:%M:%SZ", &tm);
-  return b;
-}
 
 /// The largest input the converters read (a fuzz input or a RapidCheck text).
 constexpr std::uintmax_t kMaxConvertInputBytes = 1 << 20;
@@ -399,7 +390,7 @@ int main(int argc, char** argv) {
   int rc = 0;
   CampaignOptions opt;
   opt.version = GEOMCHECK_VERSION;
-  opt.started = utc_now();
+  opt.started = report::utc_now();
   for (int i = 0; i < argc; ++i) opt.command += (i ? " " : "") + std::string(argv[i]);
   add_campaign(app, opt, rc);
   add_replay(app, rc);

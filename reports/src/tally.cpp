@@ -1,6 +1,7 @@
-// geomcheck — one evaluated case into a query's report (report.hpp).
+// geomcheck — one evaluated case into a query's report, and a report's start time (report.hpp).
 #include <algorithm>
 #include <cmath>
+#include <ctime>
 
 #include "geomcheck/reports/report.hpp"
 
@@ -24,6 +25,15 @@ void add_evaluation(QueryReport& rep, QueryId id, const Evaluation& e) {
   rep.normal.add(e.normal_err);
   rep.point.add(e.point_err);
   rep.t.add(e.t_err);
+}
+
+std::string utc_now() {
+  const std::time_t t = std::time(nullptr);
+  std::tm tm{};
+  gmtime_r(&t, &tm);
+  char b[32];
+  std::strftime(b, sizeof b, "%Y-%m-%dT%H:%M:%SZ", &tm);
+  return b;
 }
 
 }  // namespace geomcheck::report

@@ -268,15 +268,6 @@ void run_guarded(QueryId id, int n, bool isolate, unsigned case_seconds, Tally& 
   }
 }
 
-/// Now, UTC, ISO 8601.
-std::string utc_now() {
-  const std::time_t t = std::time(nullptr);
-  std::tm tm{};
-  gmtime_r(&t, &tm);
-  char b[32];
-  std::strftime(b, sizeof b, "%Y-%m-%dT%H:%M:%SZ", &tm);
-  return b;
-}
 
 /// report.json and report.html of a verify run (and a JUnit file when asked
 /// for) under opt.out, from the tally of subject's cases.
@@ -307,7 +298,7 @@ template <QueryId Q>
 std::filesystem::path write_report(const ImplOf<Q>& subject, const VerifyOptions& opt, const report::QueryReport& rep) {
   report::RunInfo run;
   run.version = GEOMCHECK_VERSION;
-  run.started = opt.started.empty() ? utc_now() : opt.started;
+  run.started = opt.started.empty() ? report::utc_now() : opt.started;
   run.command = opt.command.empty() ? opt.program : opt.command;
   run.seed = opt.seed;
   run.per_query = std::to_string(opt.cases) + " targeted cases";

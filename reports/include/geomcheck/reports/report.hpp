@@ -154,6 +154,8 @@ void write_junit(const std::filesystem::path& file, const RunInfo& run, const st
 /// command that replays it.
 void write_counterexample_page(const std::filesystem::path& file, const std::string& name, const std::string& drawing,
                                const std::string& subject, const std::string& replay_command);
+/// Now, UTC, ISO 8601 (a report's `started`).
+std::string utc_now();
 /// s with <, > and & escaped for HTML.
 std::string html(const std::string& s);
 
