@@ -271,12 +271,7 @@ CastHit bullet_cast(const Segment& s, const Cylinder& c) {
   BtCylinder cyl(c);
   BtSphere start(Sphere{s.a, 0.0});
   if (contact_of(pair_test(cyl.object, start.object)).hit) {
-    CastHit h;
-    h.hit = true;
-    h.t = 0;
-    h.point = s.a;
-    h.starts_inside = true;
-    return h;
+    return starts_inside_at(s.a);
   }
   const InWorld in(cyl.object);
   btCollisionWorld::ClosestRayResultCallback cb(to_bt(s.a), to_bt(s.b));
@@ -304,12 +299,7 @@ CastHit bullet_sweep(const MovingSphere& m, const Cylinder& c) {
     // The point of both (production's: the cylinder point closest to c):
     // Bullet's witness on the cylinder while the centre is outside it (depth
     // r - dist(c, cylinder) < r), the centre itself once inside (depth >= r).
-    CastHit h;
-    h.hit = true;
-    h.t = 0;
-    h.point = at0.depth >= m.r ? m.c : d.on_a;
-    h.starts_inside = true;
-    return h;
+    return starts_inside_at(at0.depth >= m.r ? m.c : d.on_a);
   }
   const InWorld in(cyl.object);
   const btTransform from = translation(m.c), to = translation(m.c + m.delta);

@@ -308,12 +308,7 @@ CastHit ode_cast(const Segment& s, const Cylinder& c) {
   // The start in the solid (touching included): a ball of radius 0 at a.
   const Geom start = make_geom(Sphere{s.a, 0.0});
   if (any_contact(cyl.get(), start.get())) {
-    CastHit h;
-    h.hit = true;
-    h.t = 0;
-    h.point = s.a;
-    h.starts_inside = true;
-    return h;
+    return starts_inside_at(s.a);
   }
   const Direction d = direction_of(s.b - s.a);
   const Geom ray(dCreateRay(nullptr, d.length));

@@ -32,6 +32,17 @@ struct PeerSubject {
   const char* engine = "";
 };
 
+/// A cast or sweep that starts in the cylinder: a hit at t = 0 at `point`
+/// (what every engine's adapter answers after its own start test).
+inline CastHit starts_inside_at(Vec3 point) {
+  CastHit h;
+  h.hit = true;
+  h.t = 0;
+  h.point = point;
+  h.starts_inside = true;
+  return h;
+}
+
 }  // namespace geomcheck::peers
 
 /// Declares peer_<engine><Q>() for every registered query Q (put in the
