@@ -99,6 +99,7 @@ class QueryRun {
     const double elapsed = evaluate(threads);
     for (const Row& r : rows_)
       if (r.run) gather(r);  // not run: the time budget ran out first
+    save_fcl_cases(threads);
     rep_.oracle_us = rep_.cases ? elapsed * 1e6 * threads / rep_.cases : NAN;
     rep_.stopped_by_time = rep_.cases < rep_.requested;
     return rep_;
@@ -189,55 +190,115 @@ class QueryRun {
     if (r.failure) save_counterexample(r);
   }
 
+  // The kinds of FCL's disagreement beyond the band on one case: its
+  // verdict (false-hit, missed-hit), its distance's verdict
+  // (distance-says-meet, distance-says-apart); none where it agrees.
+  static std::vector<const char*> fcl_kinds(const PeerAnswer& p, const Evaluation& e) {
+    std::vector<const char*> out;
+    if (!e.valid || !p.supported || !p.ok || e.near_boundary) return out;  // the same band as production's
+    if (p.hit != e.truth_hit) out.push_back(p.hit ? "false-hit" : "missed-hit");
+    if (std::isfinite(p.distance) && (p.distance < 0) != e.truth_hit)
+      out.push_back(p.distance < 0 ? "distance-says-meet" : "distance-says-apart");
+    return out;
+  }
+
   // FCL's answer to one case, held to the same truth.
   void gather_fcl(const Row& r) {
     const Evaluation& e = r.e;
     ++rep_.fcl_ok;
     if (r.fcl.hit != e.truth_hit) {
       ++rep_.fcl_disagree;
-      if (!e.near_boundary) {  // the same band as production's
-        ++rep_.fcl_beyond;
-        save_fcl(r, r.fcl.hit ? "false-hit" : "missed-hit", r.fcl.hit ? "FCL hit" : "FCL no hit");
-      }
+      if (!e.near_boundary) ++rep_.fcl_beyond;
     }
+    if (std::isfinite(r.fcl.distance)) {
+      ++rep_.fcl_distance_asked;
+      if ((r.fcl.distance < 0) != e.truth_hit && !e.near_boundary) ++rep_.fcl_distance_beyond;
+      if (r.fcl.distance >= 0 && std::isfinite(e.distance))
+        rep_.fcl_distance.add(std::fabs(r.fcl.distance - e.distance) / e.scale);
+    }
+    for (const char* kind : fcl_kinds(r.fcl, e)) note_fcl(r, kind);
     rep_.fcl_depth.add(e.peer.depth_err);
     rep_.fcl_normal.add(e.peer.normal_err);
     rep_.fcl_point.add(e.peer.point_err);
     rep_.fcl_t_gap.add(e.peer.t_err);
     if (r.fcl.hit && e.truth_hit && std::isfinite(r.fcl.t) && std::isfinite(e.t_true))
       rep_.fcl_t.add(std::fabs(r.fcl.t - e.t_true));
-    if (std::isfinite(r.fcl.distance)) {
-      ++rep_.fcl_distance_asked;
-      if ((r.fcl.distance < 0) != e.truth_hit && !e.near_boundary) {
-        ++rep_.fcl_distance_beyond;
-        save_fcl(r, r.fcl.distance < 0 ? "distance-says-meet" : "distance-says-apart",
-                 r.fcl.distance < 0 ? "FCL's distance: they meet" : "FCL's distance: separated");
-      }
-      if (r.fcl.distance >= 0 && std::isfinite(e.distance))
-        rep_.fcl_distance.add(std::fabs(r.fcl.distance - e.distance) / e.scale);
-    }
   }
 
-  // FCL's disagreements beyond the band: the first kMaxSavedPerKind of each
-  // kind saved as case files (all counted), the first 3 drawn.
-  void save_fcl(const Row& r, const char* kind, const std::string& answer) {
-    const Evaluation& e = r.e;
-    const int seen = rep_.fcl_drawn[kind]++;
-    if (seen >= report::kMaxSavedPerKind) return;
-    const std::filesystem::path dir = out_dir_ / "fcl-disagreements" / rep_.name;
-    std::filesystem::create_directories(dir);
-    char name[80];
-    std::snprintf(name, sizeof name, "%05d-fcl-%s.case", r.index, kind);
-    CaseFile f = from_case<Q>(case_of(r), origin(r), verdict_word(Q, e), "FCL: " + r.fcl.text + "; oracle: " + e.truth_text);
-    std::string err;
-    if (save_case(dir / name, f, err)) rep_.fcl_cases.push_back((dir / name).string());
-    else std::fprintf(stderr, "[campaign] cannot save %s: %s\n", (dir / name).string().c_str(), err.c_str());
-    if (seen < 3) {
-      const draw::Answer ans = answer_of(case_of(r), *impl_);
-      rep_.fcl_drawings.push_back(draw::views(
-          case_of(r).a, case_of(r).b,
-          html(std::string("case ") + name + ": " + answer + " (" + r.fcl.text + "); oracle: " + e.truth_text),
-          {fcl_mark(case_of(r), r.fcl)}, &ans));
+  // FCL's disagreements beyond the band, as for production's
+  // counterexamples: every one counted by signature (kind @ generator mode);
+  // the first kMaxSavedPerSignature of a signature, at most kMaxSavedPerKind
+  // of a kind, kept to be shrunk and saved (save_fcl_cases).
+  struct FclSave {
+    int row = 0;
+    const char* kind = "";
+    Case small{};
+    PeerAnswer fcl;
+    Evaluation e;
+    Shrunk how;
+  };
+  void note_fcl(const Row& r, const char* kind) {
+    const std::string signature = std::string(kind) + " @ " + r.tag;
+    ++rep_.fcl_by_signature[signature];
+    if (fcl_saved_of_kind_[kind] >= report::kMaxSavedPerKind ||
+        fcl_saved_of_signature_[signature] >= report::kMaxSavedPerSignature)
+      return;
+    ++fcl_saved_of_kind_[kind];
+    ++fcl_saved_of_signature_[signature];
+    FclSave s;
+    s.row = r.index;
+    s.kind = kind;
+    fcl_saves_.push_back(std::move(s));
+  }
+
+  // Each kept disagreement shrunk while FCL still disagrees the same way
+  // (on `threads` threads: every step asks the truth), then saved in case
+  // order, the first 3 of each kind drawn.
+  void save_fcl_cases(int threads) {
+    std::atomic<std::size_t> next{0};
+    auto worker = [&] {
+      for (;;) {
+        const std::size_t k = next++;
+        if (k >= fcl_saves_.size()) return;
+        FclSave& s = fcl_saves_[k];
+        const std::string kind = s.kind;
+        s.small = shrink(
+            cases_[s.row].first,
+            [&](const Case& c) {
+              const PeerAnswer p = peer(c);
+              for (const char* k2 : fcl_kinds(p, evaluate_with_peer(c, p, *impl_)))
+                if (kind == k2) return true;
+              return false;
+            },
+            report::kShrinkBudget, &s.how);
+        s.fcl = s.how.simplified ? peer(s.small) : rows_[s.row].fcl;
+        s.e = s.how.simplified ? evaluate_with_peer(s.small, s.fcl, *impl_) : rows_[s.row].e;
+      }
+    };
+    std::vector<std::thread> pool;
+    for (int k = 0; k < std::max(1, threads) && k < static_cast<int>(fcl_saves_.size()); ++k) pool.emplace_back(worker);
+    for (auto& th : pool) th.join();
+    std::map<std::string, int> drawn;
+    for (const FclSave& s : fcl_saves_) {
+      rep_.fcl_shrunk += s.how.simplified > 0;
+      const std::filesystem::path dir = out_dir_ / "fcl-disagreements" / rep_.name;
+      std::filesystem::create_directories(dir);
+      char name[80];
+      std::snprintf(name, sizeof name, "%05d-fcl-%s.case", s.row, s.kind);
+      const std::string found_by =
+          origin(rows_[s.row]) + " mode=" + rows_[s.row].tag +
+          (s.how.simplified ? " (shrunk: " + std::to_string(s.how.simplified) + " numbers simplified)" : std::string());
+      CaseFile f = from_case<Q>(s.small, found_by, verdict_word(Q, s.e), "FCL: " + s.fcl.text + "; oracle: " + s.e.truth_text);
+      std::string err;
+      if (save_case(dir / name, f, err)) rep_.fcl_cases.push_back((dir / name).string());
+      else std::fprintf(stderr, "[campaign] cannot save %s: %s\n", (dir / name).string().c_str(), err.c_str());
+      if (drawn[s.kind]++ < 3) {
+        const draw::Answer ans = answer_of(s.small, *impl_);
+        rep_.fcl_drawings.push_back(draw::views(
+            s.small.a, s.small.b,
+            html(std::string("case ") + name + ": FCL's " + s.kind + " (" + s.fcl.text + "); oracle: " + s.e.truth_text),
+            {fcl_mark(s.small, s.fcl)}, &ans));
+      }
     }
   }
 
@@ -299,6 +360,8 @@ class QueryRun {
   const CampaignOptions& opt_;
   std::filesystem::path out_dir_;
   std::map<std::string, int> saved_of_property_, saved_of_signature_;  // counterexamples saved, for the caps
+  std::map<std::string, int> fcl_saved_of_kind_, fcl_saved_of_signature_;  // FCL's disagreements kept, for the caps
+  std::vector<FclSave> fcl_saves_;
   const Impl* impl_ = nullptr;
   std::vector<std::pair<Case, std::string>> cases_;
   std::vector<Row> rows_;

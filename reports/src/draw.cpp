@@ -352,7 +352,11 @@ std::vector<Mark> engine_witness(const oracle::ConvexShape& a, const oracle::Con
                                  const Vec3* hint) {
   oracle::EngineOptions opt;
   opt.rel_width = 1e-12;
-  const oracle::DistanceResult d = oracle::classify(a, b, opt);
+  oracle::DistanceResult d = oracle::classify(a, b, opt);
+  if (d.verdict == oracle::Verdict::Separated && !(d.witness_a && d.witness_b)) {
+    opt.filter = false;  // the interval filter decides without points: GJK in rationals gives them
+    d = oracle::classify(a, b, opt);
+  }
   switch (d.verdict) {
     case oracle::Verdict::Separated:
       if (d.witness_a && d.witness_b)

@@ -272,10 +272,19 @@ void write_query_section(std::ostream& h, QueryReport& r, const std::filesystem:
     h << "</ul><h3>counterexamples drawn (first " << r.drawings.size() << " of " << r.counterexamples.size() << ")</h3>";
     for (const auto& d : r.drawings) h << d;
   }
-  if (!r.fcl_drawings.empty()) {
-    h << "<h3>FCL's disagreements beyond the band, drawn (" << r.fcl_drawings.size() << " of " << r.fcl_cases.size()
-      << "; every one saved under <code>fcl-disagreements/" << r.name
-      << "/</code>, replay with <code>geomcheck replay DIR</code>)</h3>";
+  if (!r.fcl_by_signature.empty()) {
+    int all = 0;
+    for (const auto& [k, v] : r.fcl_by_signature) all += v;
+    h << "<h3>FCL's disagreements beyond the band</h3><table><tr><th class='l'>kind of disagreement (kind @ generator "
+         "mode)</th><th>cases</th></tr>";
+    for (const auto& [k, v] : r.fcl_by_signature)
+      h << "<tr><td class='l'>" << html(k) << "</td><td>" << v << "</td></tr>";
+    h << "</table><p>" << r.fcl_cases.size() << " of " << all << " saved under <code>fcl-disagreements/" << r.name
+      << "/</code> (at most " << kMaxSavedPerSignature << " of a kind and generator mode, " << kMaxSavedPerKind
+      << " of a kind), " << r.fcl_shrunk
+      << " of them shrunk while FCL disagrees the same way; replay with <code>geomcheck replay DIR</code>, "
+         "which shows production's answer and the truth; the drawings show FCL's.</p>";
+    h << "<h3>FCL's disagreements drawn (" << r.fcl_drawings.size() << " of " << r.fcl_cases.size() << ")</h3>";
     for (const auto& d : r.fcl_drawings) h << d;
   }
 }
@@ -314,7 +323,8 @@ Json query_json(QueryReport& r) {
               {"normal", series_json(r.fcl_normal)}, {"point", series_json(r.fcl_point)},
               {"t", series_json(r.fcl_t_gap)}, {"t_abs", series_json(r.fcl_t)},
               {"distance_asked", r.fcl_distance_asked}, {"distance_verdicts_beyond_band", r.fcl_distance_beyond},
-              {"distance", series_json(r.fcl_distance)}, {"cases", r.fcl_cases}};
+              {"distance", series_json(r.fcl_distance)}, {"by_signature", r.fcl_by_signature},
+              {"shrunk", r.fcl_shrunk}, {"cases", r.fcl_cases}};
   q["production_ns_per_query"] = json_num(r.prod_ns);
   q["oracle_us_per_case"] = json_num(r.oracle_us);
   q["counterexamples"] = r.counterexamples;

@@ -63,12 +63,16 @@ struct QueryReport {
   Series fcl_t;  // |t_FCL - t_exact| (absolute, t in [0, 1])
   Series fcl_distance;  // |FCL distance - certified distance| on separated pairs FCL calls separated
   int fcl_distance_asked = 0, fcl_distance_beyond = 0;  // distance's verdict (< 0: meet) beyond the band
-  std::vector<std::string> fcl_cases;  // FCL disagreements beyond the band, saved (all of them)
-  std::map<std::string, int> fcl_drawn;  // per kind of disagreement (the first 3 of each are drawn)
+  std::vector<std::string> fcl_cases;  // FCL disagreements beyond the band, saved (capped as counterexamples are)
+  /// FCL's disagreements beyond the band by signature, "kind @ generator
+  /// mode" (kind: false-hit, missed-hit, distance-says-meet,
+  /// distance-says-apart); at most kMaxSavedPerSignature of each saved.
+  std::map<std::string, int> fcl_by_signature;
+  int fcl_shrunk = 0;  ///< saved FCL disagreements made simpler before saving
   double prod_ns = NAN, oracle_us = NAN;
   std::vector<std::string> counterexamples;
   std::vector<std::string> drawings;      // production's counterexamples, drawn (first 12)
-  std::vector<std::string> fcl_drawings;  // FCL's disagreements beyond the band, drawn (the first 3 of each kind)
+  std::vector<std::string> fcl_drawings;  // FCL's disagreements beyond the band, drawn (the first 3 saved of each kind)
   std::map<std::string, int> failures_by_property;
   /// Failing cases by signature, "property @ generator mode": the kinds of
   /// failure (at most kMaxSavedPerSignature of each saved).
