@@ -297,7 +297,8 @@ Json peer_json(QueryReport& p) {
   };
   return {{"engine", p.subject}, {"claims", claims_json(p)}, {"cases", p.cases}, {"valid", p.valid},
           {"disagreements", p.disagree}, {"beyond_band", p.beyond}, {"check_failures", p.check_failures},
-          {"failures_by_property", p.failures_by_property}, {"hung", count("subject-hung")},
+          {"failures_by_property", p.failures_by_property},
+          {"failures_by_signature", p.failures_by_signature}, {"shrunk", p.shrunk}, {"hung", count("subject-hung")},
           {"crashed", count("subject-crashed")}, {"threw", count("subject-threw")},
           {"errors", {{"depth", series_json(p.depth)}, {"normal", series_json(p.normal)},
                       {"point", series_json(p.point)}, {"t", series_json(p.t)}}},

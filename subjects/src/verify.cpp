@@ -364,6 +364,7 @@ VerifyResult run_cases(const ImplOf<Q>& subject, const std::vector<Tagged<typena
           },
           opt.shrink_budget, &how);
       if (how.simplified > 0) {
+        ++tally.rep.shrunk;
         if (const CheckResult g = guarded_check(c, subject)) shown = *g;
         shown.detail += " (shrunk: " + std::to_string(how.simplified) + " numbers simplified)";
       }
