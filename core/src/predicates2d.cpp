@@ -342,9 +342,112 @@ int incircle_rational(Vec2 a, Vec2 b, Vec2 c, Vec2 d) {
   return sign_of(Int(alift * (bdx * cdy - cdx * bdy) + blift * (cdx * ady - adx * cdy) + clift * (adx * bdy - bdx * ady)));
 }
 
+// ---- the filter again on differences scaled by powers of two -------------
+//
+// The inline filters refuse where their products may overflow or underflow
+// (differences near 2^+-255 for in-circle, determinants below 2^-900 for
+// orientation): a set far from 1 in scale, or huge beside tiny points.
+// Scaling a row or a column of a determinant by a power of two scales the
+// determinant and leaves its sign; here each difference vector (a row) is
+// scaled to a largest component in [1, 2), and the in-circle lifts (the
+// third column) by the power of two that keeps the largest at most 8
+// (row i's lift becomes (X_i^2 + Y_i^2) * 2^(m - k_i), k_i its row's shift,
+// m the smallest of them). Every operation is then the unscaled one scaled
+// exactly, except where a result falls into the subnormal range.
+//
+// Error: Shewchuk's relative bounds (ccwerrboundA, iccerrboundA) hold for
+// the scaled computation as long as nothing underflows. Scaled, every
+// coordinate is below 2 in magnitude, every product of two below 4, every
+// minor and lift below 8. Underflow adds at most 2^-1075 to a scaled
+// difference or lift (a result in the subnormal range) and to each
+// rounded operation. Orientation: each of four scaled coordinates enters
+// det = ux*vy - uy*vx with a factor below 2, and three operations follow:
+// below 4 * 2 * 2^-1075 + 3 * 2^-1075 < 2^-1070. In-circle: det =
+// sum L_i M_i; each of the six coordinates enters it with a factor below
+// 64 (through two minors, 2 * 2 * 8, and its own lift, 4 * 8), each lift
+// with a factor below 8: below (6 * 64 + 3 * 8) * 2^-1075 < 2^-1065; about
+// 25 operations, each multiplied afterwards by at most 8, add below
+// 25 * 8 * 2^-1075 < 2^-1067. The absolute slack below is 2^-1060 for both
+// (more than 16 times the larger sum); a value that cannot exceed it is
+// left to the exact stages.
+constexpr double kRescaledSlack = 0x1p-1060;
+
+// The shift that brings max(|x|, |y|) into [1, 2); false when x or y is
+// not finite (a difference overflowed) or both are 0.
+bool row_shift(double x, double y, int& k) {
+  if (!std::isfinite(x) || !std::isfinite(y)) return false;
+  const double m = std::max(std::fabs(x), std::fabs(y));
+  if (m == 0) return false;
+  k = -std::ilogb(m);
+  return true;
+}
+
+// One pivot (the last point) of the rescaled filters below; 0 where a
+// difference vector is zero (two equal points: the determinant is 0).
+static int orient2d_rescaled_at(Vec2 a, Vec2 b, Vec2 c) {
+  double ux = a.x - c.x, uy = a.y - c.y, vx = b.x - c.x, vy = b.y - c.y;
+  if ((ux == 0 && uy == 0) || (vx == 0 && vy == 0)) return 0;  // a difference of doubles is 0 only when exact
+  int ku, kv;
+  if (!row_shift(ux, uy, ku) || !row_shift(vx, vy, kv)) return 2;
+  ux = std::ldexp(ux, ku), uy = std::ldexp(uy, ku), vx = std::ldexp(vx, kv), vy = std::ldexp(vy, kv);
+  const double detleft = ux * vy, detright = uy * vx;
+  const double det = detleft - detright;
+  const double bound = kCcwErrBoundA * (std::fabs(detleft) + std::fabs(detright)) + kRescaledSlack;
+  if (det > bound || -det > bound) return det > 0 ? 1 : -1;
+  return 2;
+}
+
+static int incircle_rescaled_at(Vec2 a, Vec2 b, Vec2 c, Vec2 d) {
+  double adx = a.x - d.x, bdx = b.x - d.x, cdx = c.x - d.x;
+  double ady = a.y - d.y, bdy = b.y - d.y, cdy = c.y - d.y;
+  if ((adx == 0 && ady == 0) || (bdx == 0 && bdy == 0) || (cdx == 0 && cdy == 0)) return 0;  // a zero row
+  int ka, kb, kc;
+  if (!row_shift(adx, ady, ka) || !row_shift(bdx, bdy, kb) || !row_shift(cdx, cdy, kc)) return 2;
+  adx = std::ldexp(adx, ka), ady = std::ldexp(ady, ka);
+  bdx = std::ldexp(bdx, kb), bdy = std::ldexp(bdy, kb);
+  cdx = std::ldexp(cdx, kc), cdy = std::ldexp(cdy, kc);
+  const int m = std::min(ka, std::min(kb, kc));
+  const double bdxcdy = bdx * cdy, cdxbdy = cdx * bdy;
+  const double cdxady = cdx * ady, adxcdy = adx * cdy;
+  const double adxbdy = adx * bdy, bdxady = bdx * ady;
+  const double alift = std::ldexp(adx * adx + ady * ady, m - ka);
+  const double blift = std::ldexp(bdx * bdx + bdy * bdy, m - kb);
+  const double clift = std::ldexp(cdx * cdx + cdy * cdy, m - kc);
+  const double det = alift * (bdxcdy - cdxbdy) + blift * (cdxady - adxcdy) + clift * (adxbdy - bdxady);
+  const double permanent = (std::fabs(bdxcdy) + std::fabs(cdxbdy)) * alift +
+                           (std::fabs(cdxady) + std::fabs(adxcdy)) * blift +
+                           (std::fabs(adxbdy) + std::fabs(bdxady)) * clift;
+  const double bound = kIccErrBoundA * permanent + kRescaledSlack;
+  if (det > bound || -det > bound) return det > 0 ? 1 : -1;
+  return 2;
+}
+
+// Every pivot in turn: the determinant does not depend on which point the
+// differences are taken from, but its rounding does (three tiny points and
+// a huge one cancel in the huge one's differences, not in a tiny one's).
+// A cyclic shift of three points keeps the orientation; of four points it
+// flips the in-circle sign (an odd permutation).
+int orient2d_rescaled(Vec2 a, Vec2 b, Vec2 c) {
+  int s = orient2d_rescaled_at(a, b, c);
+  if (s == 2) s = orient2d_rescaled_at(b, c, a);
+  if (s == 2) s = orient2d_rescaled_at(c, a, b);
+  return s;
+}
+
+int incircle_rescaled(Vec2 a, Vec2 b, Vec2 c, Vec2 d) {
+  int s = incircle_rescaled_at(a, b, c, d);
+  if (s != 2) return s;
+  if ((s = incircle_rescaled_at(b, c, d, a)) != 2) return -s;
+  if ((s = incircle_rescaled_at(c, d, a, b)) != 2) return s;
+  if ((s = incircle_rescaled_at(d, a, b, c)) != 2) return -s;
+  return 2;
+}
+
 int orient2d_exact(Vec2 a, Vec2 b, Vec2 c) {
   int sd;
   if (orient2d_in_doubles(a, b, c, sd)) return sd;
+  const int sr = orient2d_rescaled(a, b, c);
+  if (sr != 2) return sr;
   const int sb = orient2d_stage_b(a, b, c);
   if (sb != 2) return sb;
   const int e = orient2d_expansion(a, b, c);
@@ -354,6 +457,8 @@ int orient2d_exact(Vec2 a, Vec2 b, Vec2 c) {
 int incircle_exact(Vec2 a, Vec2 b, Vec2 c, Vec2 d) {
   int sd;
   if (incircle_in_doubles(a, b, c, d, sd)) return sd;
+  const int sr = incircle_rescaled(a, b, c, d);
+  if (sr != 2) return sr;
   const int sb = incircle_stage_b(a, b, c, d);
   if (sb != 2) return sb;
   const int e = incircle_expansion(a, b, c, d);

@@ -11,6 +11,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <random>
 #include <ostream>
 #include <vector>
 
@@ -110,6 +111,10 @@ RC_GTEST_PROP(Predicates2d, OrientationIsExact, ()) {
   const int b = geomcheck::detail::orient2d_stage_b(p[0], p[1], p[2]);
   RC_CLASSIFY(b != 2, "stage B applies");
   RC_ASSERT(b == 2 || b == want);
+  for (int k = 0; k < 3; ++k) {  // every pivot
+    const int r = geomcheck::detail::orient2d_rescaled(p[k], p[(k + 1) % 3], p[(k + 2) % 3]);
+    RC_ASSERT(r == 2 || r == want);
+  }
 }
 
 RC_GTEST_PROP(Predicates2d, InCircleIsExact, ()) {
@@ -126,6 +131,11 @@ RC_GTEST_PROP(Predicates2d, InCircleIsExact, ()) {
   const int b = geomcheck::detail::incircle_stage_b(p[0], p[1], p[2], p[3]);
   RC_CLASSIFY(b != 2, "stage B applies");
   RC_ASSERT(b == 2 || b == want);
+  const int r = geomcheck::detail::incircle_rescaled(p[0], p[1], p[2], p[3]);
+  RC_CLASSIFY(r != 2, "the rescaled filter decides");
+  RC_ASSERT(r == 2 || r == want);
+  const int r3 = geomcheck::detail::incircle_rescaled(p[3], p[0], p[1], p[2]);  // d first: an odd permutation
+  RC_ASSERT(r3 == 2 || r3 == -want);
 }
 
 // Symmetries the exact signs must have: cyclic shifts keep them, a swap
@@ -198,6 +208,66 @@ TEST(Predicates2d, FilterUnderflowTimesLift) {
   EXPECT_EQ(geomcheck::detail::incircle_rational(p3, p0, p1, p2), want);
   EXPECT_EQ(geomcheck::incircle(p3, p0, p1, p2), want);
   EXPECT_EQ(geomcheck::incircle(p0, p1, p2, p3), cgal_incircle(p0, p1, p2, p3));
+}
+
+// The rescaled filter (predicates2d.hpp, stage 2) where the inline filters
+// refuse: sets scaled far from 1, huge beside tiny points, every point at
+// its own scale; against CGAL on every call. On two clusters (each point
+// near 2^+900 or 2^-900, as in bench_delaunay_2d's huge-tiny set) it must
+// also decide nearly every call (else the stage is dead weight and the
+// exact stages carry the load); with every point at its own scale many
+// determinants lie below what doubles hold, and only agreement is asked.
+TEST(Predicates2d, RescaledFilterOnHugeAndTiny) {
+  std::mt19937_64 rng(20261126);
+  std::uniform_real_distribution<double> u(-1, 1);
+  std::uniform_int_distribution<int> e(-1000, 1000), pick(0, 2);
+  for (const bool clusters : {true, false}) {
+    int decided = 0, calls = 0;
+    for (int i = 0; i < 20000; ++i) {
+      Vec2 p[4];
+      const int scale = e(rng);
+      for (Vec2& q : p) {
+        const int k = clusters ? (pick(rng) == 0 ? 900 : -900) : (pick(rng) == 0 ? e(rng) : scale);
+        q = {std::ldexp(u(rng), k), std::ldexp(u(rng), k)};
+      }
+      const int o = geomcheck::detail::orient2d_rescaled(p[0], p[1], p[2]);
+      const int c = geomcheck::detail::incircle_rescaled(p[0], p[1], p[2], p[3]);
+      ASSERT_TRUE(o == 2 || o == cgal_orient(p[0], p[1], p[2]))
+          << std::hexfloat << p[0].x << " " << p[0].y << " " << p[1].x << " " << p[1].y << " " << p[2].x << " "
+          << p[2].y;
+      ASSERT_TRUE(c == 2 || c == cgal_incircle(p[0], p[1], p[2], p[3]))
+          << std::hexfloat << p[0].x << " " << p[0].y << " " << p[1].x << " " << p[1].y << " " << p[2].x << " "
+          << p[2].y << " " << p[3].x << " " << p[3].y;
+      decided += (o != 2) + (c != 2);
+      calls += 2;
+    }
+    if (clusters) {
+      EXPECT_GT(decided, calls * 9 / 10) << "the rescaled filter decides only " << decided << " of " << calls;
+    }
+    std::printf("rescaled filter, %s: %d of %d calls decided, every one as CGAL\n",
+                clusters ? "two clusters at 2^+-900" : "every point at its own scale", decided, calls);
+  }
+}
+
+// Differences that become subnormal when scaled (one near 1, the rest near
+// 2^-1070 of it) and determinants just above the absolute slack: the
+// filter's answers agree with CGAL's.
+TEST(Predicates2d, RescaledFilterAtTheUnderflow) {
+  std::mt19937_64 rng(7);
+  std::uniform_real_distribution<double> u(0.5, 1);
+  std::uniform_int_distribution<int> e(-1074, -1000);
+  int decided = 0;
+  for (int i = 0; i < 20000; ++i) {
+    const int k = e(rng);
+    const Vec2 a{0, 0}, b{u(rng), std::ldexp(u(rng), k)}, c{std::ldexp(u(rng), e(rng)), std::ldexp(u(rng), k)};
+    const Vec2 d{std::ldexp(u(rng), k), -std::ldexp(u(rng), e(rng))};
+    const int o = geomcheck::detail::orient2d_rescaled(a, b, c);
+    const int ic = geomcheck::detail::incircle_rescaled(a, b, c, d);
+    ASSERT_TRUE(o == 2 || o == cgal_orient(a, b, c)) << i;
+    ASSERT_TRUE(ic == 2 || ic == cgal_incircle(a, b, c, d)) << i;
+    decided += (o != 2) + (ic != 2);
+  }
+  std::printf("rescaled filter at the underflow: %d of 40000 calls decided, every one as CGAL\n", decided);
 }
 
 }  // namespace

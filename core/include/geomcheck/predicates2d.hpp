@@ -6,15 +6,19 @@
 //      iccerrboundA, which cover the rounding of the differences as well);
 //      it answers when the computed value is farther from zero than the
 //      bound and nothing overflowed or underflowed;
-//   2. when the filter fails and the coordinate differences are exact and of
+//   2. the same filter on each difference vector scaled by its own power of
+//      two (and the in-circle lifts by one more), every pivot in turn, with
+//      an absolute slack for underflow, so that a set's scale and
+//      huge-beside-tiny mixes do not send every test to the exact stages;
+//   3. when the filter fails and the coordinate differences are exact and of
 //      moderate magnitude (integer grids, nearby points: the common
 //      degenerate input), Shewchuk's stage B on fixed-size expansions, which
 //      is then exact;
-//   3. otherwise exact expansion arithmetic (error-free sums and products,
+//   4. otherwise exact expansion arithmetic (error-free sums and products,
 //      products by fma) on the points scaled by one power of two, when the
 //      magnitudes of the involved coordinates span few enough binades that
 //      no partial product can overflow or lose bits to underflow;
-//   4. otherwise exact big integers (boost::multiprecision::cpp_int) on the
+//   5. otherwise exact big integers (boost::multiprecision::cpp_int) on the
 //      coordinates scaled to integers by one power of two,
 //      which cover any mix of magnitudes (1e300 beside 1e-300).
 // The caller checks finiteness (non-finite input has no exact answer: the
@@ -103,6 +107,11 @@ int incircle_stage_b(Vec2 a, Vec2 b, Vec2 c, Vec2 d);
 /// *_rational: the exact stage that covers every finite input).
 int orient2d_expansion(Vec2 a, Vec2 b, Vec2 c);  ///< 2 = not applicable
 int incircle_expansion(Vec2 a, Vec2 b, Vec2 c, Vec2 d);  ///< 2 = not applicable
+/// The filter again on the difference vectors each scaled by a power of two
+/// (largest component in [1, 2)), every pivot in turn, for sets far from 1
+/// in scale or mixing huge and tiny points; 2 = cannot decide.
+int orient2d_rescaled(Vec2 a, Vec2 b, Vec2 c);
+int incircle_rescaled(Vec2 a, Vec2 b, Vec2 c, Vec2 d);
 int orient2d_rational(Vec2 a, Vec2 b, Vec2 c);
 int incircle_rational(Vec2 a, Vec2 b, Vec2 c, Vec2 d);
 }  // namespace detail

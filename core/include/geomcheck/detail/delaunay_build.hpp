@@ -14,6 +14,7 @@
 #pragma once
 
 #include <algorithm>
+#include <limits>
 #include <cmath>
 #include <cstdint>
 #include <string>
@@ -102,6 +103,25 @@ inline std::uint64_t insertion_key(std::uint64_t h) {
   return ((15 - round) << 60) | (h >> 4);
 }
 
+/// The power of two 2^k by which the triangulation scales its points
+/// (every coordinate multiplied exactly, so every predicate's sign and the
+/// triangles are unchanged): the largest magnitude `big` brought into
+/// [1, 2), so that the filters see the same numbers whatever the set's
+/// scale (a set at 2^+-500 would otherwise overflow or underflow them and
+/// fall to the exact stages), but never so far down that the smallest
+/// non-zero magnitude `tiny` leaves the normal range (it would lose bits).
+/// 0 for an empty or all-zero set, or a mix too wide to move.
+inline int normalising_shift(double big, double tiny) {
+  if (!(big > 0) || !std::isfinite(tiny)) return 0;
+  int k = -std::ilogb(big);
+  const int room = std::ilogb(tiny) - std::numeric_limits<double>::min_exponent + 1;  // binades above the subnormals
+  if (k < 0) k = std::max(k, -std::max(room, 0));
+  return k;
+}
+
+/// v * 2^k, exactly (the caller's k keeps the result normal or exact).
+inline double scaled(double v, int k) { return k == 0 ? v : std::ldexp(v, k); }
+
 template <class Pred>
 class DelaunayBuilder {
  public:
@@ -116,6 +136,7 @@ class DelaunayBuilder {
       throw DelaunayInputError(kMaxPoints, "delaunay_2d: " + std::to_string(n) + " points is more than the " +
                                                std::to_string(kMaxPoints) + " this triangulation can index");
     double lox = 0, hix = 0, loy = 0, hiy = 0;
+    double tiny = std::numeric_limits<double>::infinity();  // smallest non-zero |coordinate|
     for (std::size_t i = 0; i < n; ++i) {
       const Vec2 p = input[i];
       if (!std::isfinite(p.x) || !std::isfinite(p.y))
@@ -127,7 +148,11 @@ class DelaunayBuilder {
         lox = std::min(lox, p.x), hix = std::max(hix, p.x);
         loy = std::min(loy, p.y), hiy = std::max(hiy, p.y);
       }
+      const double ax = std::fabs(p.x), ay = std::fabs(p.y);
+      if (ax != 0) tiny = std::min(tiny, ax);
+      if (ay != 0) tiny = std::min(tiny, ay);
     }
+    const int shift = normalising_shift(std::max(std::max(-lox, hix), std::max(-loy, hiy)), tiny);
     // Spatial sort (insertion_key); ties by coordinates, so that the order
     // is a function of the point set, then by index, so that the first of
     // equal points is the smallest index.
@@ -166,9 +191,9 @@ class DelaunayBuilder {
     pts_.reserve(n);
     for (std::size_t k = 0; k < n; ++k) {
       const std::uint32_t i = order[k].index;
-      if (k == 0 || input[i] != pts_.back()) {
+      if (k == 0 || input[i] != input[rep_.back()]) {
         rep_.push_back(i);
-        pts_.push_back(input[i]);
+        pts_.push_back({scaled(input[i].x, shift), scaled(input[i].y, shift)});
       }
       out.vertex_of[i] = rep_.back();
     }
