@@ -92,11 +92,24 @@ class QueryRun {
     rep_.depth_is_bound = Spec<Q>::claims().depth == Claims::Depth::UpperBound;
   }
 
-  QueryReport run(int threads) {
+  /// Runs every case; production and FCL are also reported apart on the
+  /// first `first_cases` (the cases the other engines answer; 0: none).
+  QueryReport run(int threads, int first_cases = 0) {
     generate();
     rep_.requested = static_cast<int>(cases_.size());
     time_production();
     const double elapsed = evaluate(threads);
+    first_cases_ = std::min(first_cases, static_cast<int>(cases_.size()));
+    if (first_cases_ > 0) {
+      QueryReport f;
+      f.name = rep_.name;
+      f.subject = rep_.subject;
+      f.claims = rep_.claims;
+      f.tol = rep_.tol;
+      f.requested = first_cases_;
+      f.prod_ns = rep_.prod_ns;
+      rep_.first.push_back(std::move(f));
+    }
     for (const Row& r : rows_)
       if (r.run) gather(r);  // not run: the time budget ran out first
     save_fcl_cases(threads);
@@ -181,6 +194,7 @@ class QueryRun {
 
   // One evaluated case into the report.
   void gather(const Row& r) {
+    if (r.index < first_cases_) gather_first(r);
     report::add_evaluation(rep_, Q, r.e);
     if (!r.e.valid) return;
     if (r.fcl.supported) {
@@ -202,27 +216,49 @@ class QueryRun {
     return out;
   }
 
-  // FCL's answer to one case, held to the same truth.
+  // FCL's answer to one case, held to the same truth; its disagreements
+  // kept to be saved.
   void gather_fcl(const Row& r) {
+    score_fcl(rep_, r);
+    for (const char* kind : fcl_kinds(r.fcl, r.e)) note_fcl(r, kind);
+  }
+
+  // FCL's answer to one case counted into `into`.
+  static void score_fcl(QueryReport& into, const Row& r) {
     const Evaluation& e = r.e;
-    ++rep_.fcl_ok;
+    ++into.fcl_ok;
     if (r.fcl.hit != e.truth_hit) {
-      ++rep_.fcl_disagree;
-      if (!e.near_boundary) ++rep_.fcl_beyond;
+      ++into.fcl_disagree;
+      if (!e.near_boundary) ++into.fcl_beyond;
     }
     if (std::isfinite(r.fcl.distance)) {
-      ++rep_.fcl_distance_asked;
-      if ((r.fcl.distance < 0) != e.truth_hit && !e.near_boundary) ++rep_.fcl_distance_beyond;
+      ++into.fcl_distance_asked;
+      if ((r.fcl.distance < 0) != e.truth_hit && !e.near_boundary) ++into.fcl_distance_beyond;
       if (r.fcl.distance >= 0 && std::isfinite(e.distance))
-        rep_.fcl_distance.add(std::fabs(r.fcl.distance - e.distance) / e.scale);
+        into.fcl_distance.add(std::fabs(r.fcl.distance - e.distance) / e.scale);
     }
-    for (const char* kind : fcl_kinds(r.fcl, e)) note_fcl(r, kind);
-    rep_.fcl_depth.add(e.peer.depth_err);
-    rep_.fcl_normal.add(e.peer.normal_err);
-    rep_.fcl_point.add(e.peer.point_err);
-    rep_.fcl_t_gap.add(e.peer.t_err);
+    into.fcl_depth.add(e.peer.depth_err);
+    into.fcl_normal.add(e.peer.normal_err);
+    into.fcl_point.add(e.peer.point_err);
+    into.fcl_t_gap.add(e.peer.t_err);
     if (r.fcl.hit && e.truth_hit && std::isfinite(r.fcl.t) && std::isfinite(e.t_true))
-      rep_.fcl_t.add(std::fabs(r.fcl.t - e.t_true));
+      into.fcl_t.add(std::fabs(r.fcl.t - e.t_true));
+  }
+
+  // Production and FCL on the first `first_cases` cases, the ones the other
+  // engines answer: the precision table's rows on the same cases.
+  void gather_first(const Row& r) {
+    QueryReport& f = rep_.first.front();
+    report::add_evaluation(f, Q, r.e);
+    if (!r.e.valid) return;
+    if (r.failure) {
+      ++f.check_failures;
+      ++f.failures_by_property[r.failure->property];
+    }
+    if (r.fcl.supported) {
+      ++f.fcl_supported;
+      if (r.fcl.ok) score_fcl(f, r);
+    }
   }
 
   // FCL's disagreements beyond the band, as for production's
@@ -363,6 +399,7 @@ class QueryRun {
   std::map<std::string, int> fcl_saved_of_kind_, fcl_saved_of_signature_;  // FCL's disagreements kept, for the caps
   std::vector<FclSave> fcl_saves_;
   const Impl* impl_ = nullptr;
+  int first_cases_ = 0;
   std::vector<std::pair<Case, std::string>> cases_;
   std::vector<Row> rows_;
   QueryReport rep_;
@@ -401,9 +438,11 @@ int run_campaign(const CampaignOptions& opt) {
       const auto* subject = Spec<Q>::subject(opt.variant);
       if (!subject || subject == &production_of<Q>()) return;  // not one of Q's variants
     }
-    reps.push_back(QueryRun<Q>(opt, out_dir).run(threads));
-    if (opt.variant.empty())
+    reps.push_back(QueryRun<Q>(opt, out_dir).run(threads, opt.variant.empty() ? opt.peer_cases : 0));
+    if (opt.variant.empty()) {
       reps.back().peers = run_peers<Q>(std::min(opt.peer_cases, reps.back().cases), opt.seed, out_dir, opt.seeds);
+      if (reps.back().peers.empty()) reps.back().first.clear();  // no engine built: nothing to set beside
+    }
   });
   // The point-set family (not with a variant: those are pair subjects).
   std::vector<report::PointSetReport> point_sets;

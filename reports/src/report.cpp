@@ -147,20 +147,32 @@ void write_precision_table(std::ostream& h, std::vector<QueryReport>& reps) {
     if (s.v.empty()) return std::string("&ndash;");
     return hnum(s.pct(0.5)) + " / " + hnum(s.pct(0.99)) + " / " + hnum(s.pct(1.0));
   };
-  for (QueryReport& r : reps) {
-    auto rate = [&](int n, int of) { return std::to_string(n) + (of ? " (" + hnum(100.0 * n / of) + "%)" : ""); };
-    Series none;
-    h << "<tr><td class='l' rowspan='" << 2 + r.peers.size() << "'><a href='#" << r.name << "'>" << r.name
-      << "</a></td><td class='l'>production</td><td>" << r.valid << "</td><td class='" << (r.beyond ? "bad" : "ok")
+  auto rate = [&](int n, int of) { return std::to_string(n) + (of ? " (" + hnum(100.0 * n / of) + "%)" : ""); };
+  auto production_row = [&](QueryReport& r, const std::string& label) {
+    h << "<td class='l'>" << label << "</td><td>" << r.valid << "</td><td class='" << (r.beyond ? "bad" : "ok")
       << "'>" << rate(r.beyond, r.valid) << "</td><td>" << tri(r.depth) << "</td><td>" << tri(r.normal) << "</td><td>"
       << tri(r.point) << "</td><td>&ndash;</td><td>" << tri(r.t) << "</td><td>&ndash;</td><td>" << failures_cell(r)
       << "</td><td>" << hnum(r.prod_ns) << " ns</td></tr>";
-    h << "<tr><td class='l'>FCL</td><td>" << r.fcl_ok << "</td><td class='" << (r.fcl_beyond || r.fcl_distance_beyond ? "bad" : "ok")
-      << "'>" << rate(r.fcl_beyond, r.fcl_ok);
+  };
+  auto fcl_row = [&](QueryReport& r, const std::string& label) {
+    h << "<tr><td class='l'>" << label << "</td><td>" << r.fcl_ok << "</td><td class='"
+      << (r.fcl_beyond || r.fcl_distance_beyond ? "bad" : "ok") << "'>" << rate(r.fcl_beyond, r.fcl_ok);
     if (r.fcl_distance_asked) h << "<br>distance: " << rate(r.fcl_distance_beyond, r.fcl_distance_asked);
     h << "</td><td>" << tri(r.fcl_depth) << "</td><td>" << tri(r.fcl_normal) << "</td><td>" << tri(r.fcl_point)
       << "</td><td>" << tri(r.fcl_distance) << "</td><td>" << tri(r.fcl_t_gap) << "</td><td>" << tri(r.fcl_t)
       << "</td><td>&ndash;</td><td>&ndash;</td></tr>";
+  };
+  for (QueryReport& r : reps) {
+    h << "<tr><td class='l' rowspan='" << 2 + 2 * r.first.size() + r.peers.size() << "'><a href='#" << r.name << "'>"
+      << r.name << "</a></td>";
+    production_row(r, "production");
+    fcl_row(r, "FCL");
+    for (QueryReport& f : r.first) {
+      const std::string first = " (the first " + std::to_string(f.cases) + ", as the engines)";
+      h << "<tr class='same'>";
+      production_row(f, "production" + first);
+      fcl_row(f, "FCL" + first);
+    }
     for (QueryReport& p : r.peers)
       h << "<tr><td class='l' title=\"" << html(claims_text(p)) << "\">" << html(p.subject) << "</td><td>" << p.valid
         << " of the first " << p.cases << "</td><td class='" << (p.beyond ? "bad" : "ok") << "'>"
@@ -168,7 +180,10 @@ void write_precision_table(std::ostream& h, std::vector<QueryReport>& reps) {
         << tri(p.point) << "</td><td>&ndash;</td><td>" << tri(p.t) << "</td><td>&ndash;</td><td>" << failures_cell(p)
         << bugreports_cell(p) << "</td><td>" << hnum(p.prod_ns) << " ns</td></tr>";
   }
-  h << "</table><p>Other engines (ODE, Bullet, MuJoCo, where built) answer the first cases of each query through "
+  h << "</table><p>Production's and FCL's first rows are over every case of the run; the rows marked &ldquo;the "
+       "first N&rdquo; are over the same cases as the engines below them, for a like-for-like comparison. The "
+       "engines' <b>distance</b> is &ndash;: their subjects answer collide, not a distance query. "
+       "Other engines (ODE, Bullet, MuJoCo, where built) answer the first cases of each query through "
        "the same door as a user's subject, in a child process (a hang or a crash is that case's failure), and are "
        "held to every property under their own claims (hover an engine's name; its header in <code>peers/</code> "
        "states them). Their failing cases are saved under <code>peers/&lt;engine&gt;/&lt;query&gt;/</code>; "
@@ -331,6 +346,18 @@ Json query_json(QueryReport& r) {
   q["counterexamples"] = r.counterexamples;
   q["peers"] = Json::array();
   for (QueryReport& p : r.peers) q["peers"].push_back(peer_json(p));
+  for (QueryReport& f : r.first)
+    q["same_cases"] = {
+        {"cases", f.cases},
+        {"production", {{"valid", f.valid}, {"beyond_band", f.beyond}, {"check_failures", f.check_failures},
+                        {"failures_by_property", f.failures_by_property},
+                        {"errors", {{"depth", series_json(f.depth)}, {"normal", series_json(f.normal)},
+                                    {"point", series_json(f.point)}, {"t", series_json(f.t)}}}}},
+        {"fcl", {{"answered", f.fcl_ok}, {"beyond_band", f.fcl_beyond},
+                 {"distance_asked", f.fcl_distance_asked}, {"distance_verdicts_beyond_band", f.fcl_distance_beyond},
+                 {"errors", {{"depth", series_json(f.fcl_depth)}, {"normal", series_json(f.fcl_normal)},
+                             {"point", series_json(f.fcl_point)}, {"distance", series_json(f.fcl_distance)},
+                             {"t", series_json(f.fcl_t_gap)}}}}}};
   return q;
 }
 

@@ -42,6 +42,20 @@ views=$(grep -o "<title>[a-z]* view</title>" "$out/dom.html" | wc -l)
 [ "$figures" -gt 0 ] || fail "no counterexample drawn (FCL's cast disagreements are expected at this seed)"
 [ "$views" -eq $((3 * figures)) ] || fail "$figures figures but $views views (three each expected)"
 grep -q "log10 histogram" "$out/dom.html" || fail "no histogram"
+# Where other engines ran, production and FCL have rows on the same cases.
+python3 - "$out/report/report.json" "$out/dom.html" <<'PY' || fail "no like-for-like rows beside the engines"
+import json, sys
+rep = json.load(open(sys.argv[1]))
+dom = open(sys.argv[2]).read()
+for q in rep["queries"]:
+    if not q["peers"]:
+        continue
+    same = q["same_cases"]
+    assert same["cases"] == q["peers"][0]["cases"], (q["id"], same["cases"], q["peers"][0]["cases"])
+    assert same["production"]["valid"] <= same["cases"] and same["fcl"]["answered"] <= same["cases"]
+    assert f"production (the first {same['cases']}, as the engines)" in dom, q["id"]
+    print(f"{q['id']}: production and FCL on the engines' {same['cases']} cases")
+PY
 # The tails show: every non-empty bin has a bar of visible height, and the
 # histograms of bounded errors draw their bound.
 python3 - "$out/dom.html" <<'PY' || fail "a histogram hides a non-empty bin, or draws no bound"

@@ -88,6 +88,9 @@ struct QueryReport {
   /// to every property under its own claims: one report per engine (its
   /// name in `subject`; prod_ns its median time per call).
   std::vector<QueryReport> peers;
+  /// Production and FCL on the same first cases as the engines (one
+  /// element when engines ran; its counts, errors and FCL fields only).
+  std::vector<QueryReport> first;
   /// An engine's row: the bug-report configurations of this query
   /// (corpora/seeds/<query>/bugreport-*.case) put to it, and those it failed.
   int bugreports = 0;
