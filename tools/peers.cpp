@@ -19,19 +19,39 @@ namespace geomcheck {
 
 namespace {
 
+/// An engine's subject of Q with the engine's `expresses` attached (so that
+/// verify() does not ask it cases it cannot state); null where the engine
+/// cannot express Q. Made once per engine and query.
+template <QueryId Q>
+const ImplOf<Q>* with_expresses(const peers::PeerSubject<Q>& p) {
+  if (!p.subject) return nullptr;
+  auto* s = new ImplOf<Q>(*p.subject);  // lives as long as the program, as the engine's own subject does
+  if (p.expresses) {
+    using Case = typename QueryTraits<Q>::Case;
+    const auto expresses = p.expresses;
+    s->expresses = [expresses](const typename QueryTraits<Q>::ShapeA& a, const typename QueryTraits<Q>::ShapeB& b) {
+      return expresses(Case{a, b});
+    };
+  }
+  return s;
+}
+
 /// Every engine's subject of Q, null where the engine cannot express it.
 template <QueryId Q>
 std::vector<const ImplOf<Q>*> subjects_of() {
-  std::vector<const ImplOf<Q>*> out;
+  static const std::vector<const ImplOf<Q>*> out = [] {
+    std::vector<const ImplOf<Q>*> v;
 #ifdef GEOMCHECK_PEER_ODE
-  out.push_back(peers::peer_ode<Q>().subject);
+    v.push_back(with_expresses(peers::peer_ode<Q>()));
 #endif
 #ifdef GEOMCHECK_PEER_BULLET
-  out.push_back(peers::peer_bullet<Q>().subject);
+    v.push_back(with_expresses(peers::peer_bullet<Q>()));
 #endif
 #ifdef GEOMCHECK_PEER_MUJOCO
-  out.push_back(peers::peer_mujoco<Q>().subject);
+    v.push_back(with_expresses(peers::peer_mujoco<Q>()));
 #endif
+    return v;
+  }();
   return out;
 }
 

@@ -175,7 +175,9 @@ void write_precision_table(std::ostream& h, std::vector<QueryReport>& reps) {
     }
     for (QueryReport& p : r.peers)
       h << "<tr><td class='l' title=\"" << html(claims_text(p)) << "\">" << html(p.subject) << "</td><td>" << p.valid
-        << " of the first " << p.cases << "</td><td class='" << (p.beyond ? "bad" : "ok") << "'>"
+        << " of the first " << p.cases + p.not_expressed
+        << (p.not_expressed ? " (" + std::to_string(p.not_expressed) + " it cannot state)" : std::string())
+        << "</td><td class='" << (p.beyond ? "bad" : "ok") << "'>"
         << rate(p.beyond, p.valid) << "</td><td>" << tri(p.depth) << "</td><td>" << tri(p.normal) << "</td><td>"
         << tri(p.point) << "</td><td>&ndash;</td><td>" << tri(p.t) << "</td><td>&ndash;</td><td>" << failures_cell(p)
         << bugreports_cell(p) << "</td><td>" << hnum(p.prod_ns) << " ns</td></tr>";
@@ -310,7 +312,8 @@ Json peer_json(QueryReport& p) {
     const auto it = p.failures_by_property.find(property);
     return it == p.failures_by_property.end() ? 0 : it->second;
   };
-  return {{"engine", p.subject}, {"claims", claims_json(p)}, {"cases", p.cases}, {"valid", p.valid},
+  return {{"engine", p.subject}, {"claims", claims_json(p)}, {"cases", p.cases},
+          {"not_expressed", p.not_expressed}, {"valid", p.valid},
           {"disagreements", p.disagree}, {"beyond_band", p.beyond}, {"check_failures", p.check_failures},
           {"failures_by_property", p.failures_by_property},
           {"failures_by_signature", p.failures_by_signature}, {"shrunk", p.shrunk}, {"hung", count("subject-hung")},

@@ -331,10 +331,25 @@ VerifyResult verify_cases(const ImplOf<Q>& subject, const VerifyOptions& opt) {
 
 /// verify() on the given cases (each tagged: its mode, or its file's name).
 template <QueryId Q>
-VerifyResult run_cases(const ImplOf<Q>& subject, const std::vector<Tagged<typename QueryTraits<Q>::Case>>& cases,
+VerifyResult run_cases(const ImplOf<Q>& subject, const std::vector<Tagged<typename QueryTraits<Q>::Case>>& all,
                        const VerifyOptions& opt) {
   using Case = typename QueryTraits<Q>::Case;
   const auto start = std::chrono::steady_clock::now();
+  // The cases the subject can state (all of them unless it says otherwise).
+  std::vector<Tagged<Case>> kept;
+  int not_expressed = 0;
+  if (subject.expresses) {
+    for (const auto& c : all) {
+      bool ok = false;
+      try {
+        ok = subject.expresses(c.first.a, c.first.b);
+      } catch (...) {
+      }
+      if (ok) kept.push_back(c);
+      else ++not_expressed;
+    }
+  }
+  const std::vector<Tagged<Case>>& cases = subject.expresses ? kept : all;
   if (opt.summary)
     std::fprintf(stderr, "verify %s against %s: %d targeted cases, seed %llu%s\n", subject.name, info(Q).name,
                  opt.cases, static_cast<unsigned long long>(opt.seed), opt.isolate ? "" : ", in process");
@@ -396,6 +411,8 @@ VerifyResult run_cases(const ImplOf<Q>& subject, const std::vector<Tagged<typena
   run_guarded(Q, static_cast<int>(cases.size()), opt.isolate, opt.case_seconds, tally, check, save);
   VerifyResult& res = tally.res;
   res.cases = static_cast<int>(cases.size());
+  res.not_expressed = not_expressed;
+  tally.rep.not_expressed = not_expressed;
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   complete_figures<Q>(subject, opt, tally, seconds);
   if (opt.report) res.report = write_report<Q>(subject, opt, tally.rep);
@@ -404,6 +421,8 @@ VerifyResult run_cases(const ImplOf<Q>& subject, const std::vector<Tagged<typena
 
   std::printf("verify %s (%s): %d cases, seed %llu: %s\n", subject.name, info(Q).name, res.cases,
               static_cast<unsigned long long>(opt.seed), res.failures == 0 ? "every property held" : "FAILED");
+  if (res.not_expressed)
+    std::printf("  %d cases not asked: the subject cannot state them (its expresses())\n", res.not_expressed);
   for (const auto& [property, n] : res.by_property) std::printf("  %6d failing cases: %s\n", n, property.c_str());
   if (!res.saved.empty())
     std::printf("  %zu saved (at most %d per property) under %s\n", res.saved.size(), opt.max_saved,

@@ -73,6 +73,31 @@ TEST(Subjects, ProductionBehindAStatefulAdapterPasses) {
   EXPECT_GE(calls, before + 50);
 }
 
+// A subject that cannot state some cases (an engine's model refuses a
+// shape) says so with `expresses`: those cases are not asked, not failed,
+// and counted apart. Here a subject throws on balls under a fifth of the
+// cylinder's radius (a limit the checks' moves keep: they move, turn and
+// scale the whole scene) and declares them out of its reach: the run
+// passes, every refused case counted.
+TEST(Subjects, CasesASubjectCannotStateAreNotAsked) {
+  auto small = [](const Cylinder& c, const Sphere& s) { return !(s.r >= 0.2 * c.r); };
+  auto collide_fn = [small](const Cylinder& c, const Sphere& s) {
+    if (small(c, s)) throw std::runtime_error("this engine has no ball under a fifth of the cylinder's radius");
+    return collide(c, s);
+  };
+  auto mine = subject<kSphere>("no-small-balls", [collide_fn](const Cylinder& c, const Sphere& s) {
+    return collide_fn(c, s).hit;
+  }, collide_fn);
+  const VerifyResult asked_all = verify(mine, options("no-small-balls-all", 300));
+  ASSERT_GT(count(asked_all, "subject-threw"), 0) << "no small ball among the cases: the test tests nothing";
+  mine.expresses = [small](const Cylinder& c, const Sphere& s) { return !small(c, s); };
+  const VerifyResult r = verify(mine, options("no-small-balls", 300));
+  EXPECT_EQ(r.failures, 0) << (r.by_property.empty() ? "" : r.by_property.begin()->first);
+  EXPECT_GT(r.not_expressed, 0);
+  EXPECT_EQ(r.cases + r.not_expressed, 300);
+  EXPECT_EQ(r.figures.not_expressed, r.not_expressed);
+}
+
 // Single precision: caught, each saved case a valid case file of the query
 // whose replay fails again.
 TEST(Subjects, SinglePrecisionIsCaughtAndReplays) {

@@ -136,6 +136,7 @@ struct VerifyOptions {
 /// What verify() found.
 struct VerifyResult {
   int cases = 0;                                 ///< cases checked
+  int not_expressed = 0;                         ///< cases not asked: the subject's expresses() refused them
   int failures = 0;                              ///< cases that failed a property
   std::map<std::string, int> by_property;       ///< failing cases by the property they failed
   std::vector<std::filesystem::path> saved;      ///< case files saved (a .html drawing beside each)

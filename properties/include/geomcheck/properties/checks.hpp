@@ -87,6 +87,10 @@ struct CollideImpl {
   Callable<bool(const A&, const B&)> overlap;
   Callable<Contact(const A&, const B&)> collide;
   const Claims* claims = nullptr;  ///< what the subject claims; null: what production claims
+  /// The cases the subject can state at all (another engine's limits: a
+  /// shape its model refuses); empty: every case. verify() does not ask the
+  /// subject the others and counts them apart (not_expressed).
+  Callable<bool(const A&, const B&)> expresses{};
 };
 /// A subject of a cast query: cast(A, B), A the moving segment.
 template <class A, class B>
@@ -94,6 +98,10 @@ struct CastImpl {
   const char* name;
   Callable<CastHit(const A&, const B&)> cast;
   const Claims* claims = nullptr;  ///< what the subject claims; null: what production claims
+  /// The cases the subject can state at all (another engine's limits: a
+  /// shape its model refuses); empty: every case. verify() does not ask the
+  /// subject the others and counts them apart (not_expressed).
+  Callable<bool(const A&, const B&)> expresses{};
 };
 /// A subject of a sweep query: sweep(A, B), A the moving shape.
 template <class A, class B>
@@ -101,6 +109,10 @@ struct SweepImpl {
   const char* name;
   Callable<CastHit(const A&, const B&)> sweep;
   const Claims* claims = nullptr;  ///< what the subject claims; null: what production claims
+  /// The cases the subject can state at all (another engine's limits: a
+  /// shape its model refuses); empty: every case. verify() does not ask the
+  /// subject the others and counts them apart (not_expressed).
+  Callable<bool(const A&, const B&)> expresses{};
 };
 
 /// The subject type of a query kind over shapes A and B.

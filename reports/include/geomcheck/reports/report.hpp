@@ -53,6 +53,7 @@ struct QueryReport {
   int requested = 0;             ///< cases asked for
   bool stopped_by_time = false;  ///< --seconds ran out before every requested case ran
   int cases = 0, valid = 0, prod_hits = 0, truth_hits = 0;
+  int not_expressed = 0;  ///< cases not asked: the subject cannot state them (its expresses())
   std::map<std::string, int> verdicts;
   int disagree = 0, excused = 0, beyond = 0, check_failures = 0;
   double worst_margin = 0;
