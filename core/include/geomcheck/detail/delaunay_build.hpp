@@ -165,13 +165,9 @@ class DelaunayBuilder {
       keyed[i] = {insertion_key(hilbert_index(grid_position(input[i].x, lox, hix), grid_position(input[i].y, loy, hiy))),
                   static_cast<std::uint32_t>(i)};
     // Counting sort on the top 16 bits of the key, then each bucket sorted
-    // whole (most buckets hold a handful of points).
+    // whole (most buckets hold a handful of points); a small set is sorted
+    // whole at once (the same order: the buckets are ranges of the key).
     {
-      std::vector<std::uint32_t> start(65537, 0);
-      for (const Keyed& k : keyed) ++start[(k.key >> 48) + 1];
-      for (std::size_t b = 1; b <= 65536; ++b) start[b] += start[b - 1];
-      std::vector<std::uint32_t> fill(start.begin(), start.end() - 1);
-      for (const Keyed& k : keyed) order[fill[k.key >> 48]++] = k;
       const auto less = [input](const Keyed& a, const Keyed& b) {
         if (a.key != b.key) return a.key < b.key;
         const Vec2 p = input[a.index], q = input[b.index];
@@ -179,8 +175,18 @@ class DelaunayBuilder {
         if (p.y != q.y) return p.y < q.y;
         return a.index < b.index;
       };
-      for (std::size_t b = 0; b < 65536; ++b)
-        if (start[b + 1] - start[b] > 1) std::sort(order.begin() + start[b], order.begin() + start[b + 1], less);
+      if (n < (std::size_t(1) << 14)) {
+        order = keyed;
+        std::sort(order.begin(), order.end(), less);
+      } else {
+        std::vector<std::uint32_t> start(65537, 0);
+        for (const Keyed& k : keyed) ++start[(k.key >> 48) + 1];
+        for (std::size_t b = 1; b <= 65536; ++b) start[b] += start[b - 1];
+        std::vector<std::uint32_t> fill(start.begin(), start.end() - 1);
+        for (const Keyed& k : keyed) order[fill[k.key >> 48]++] = k;
+        for (std::size_t b = 0; b < 65536; ++b)
+          if (start[b + 1] - start[b] > 1) std::sort(order.begin() + start[b], order.begin() + start[b + 1], less);
+      }
     }
     std::vector<Keyed>().swap(keyed);
     // Merge duplicates (adjacent after the sort).
