@@ -92,7 +92,7 @@ std::vector<report::QueryReport> run_peers(int cases, std::uint64_t seed, const 
     opt.cases = cases;
     opt.seed = seed;
     opt.out = out_dir / "peers" / s->name;
-    opt.max_saved = 3;
+    opt.max_saved = 10;  // of a property (and 5 of a signature): each is shrunk, one engine answering at a time
     opt.shrink_budget = 30;  // shrunk (a short budget: the time goes to the cases)
     opt.quiet = true;
     opt.summary = false;

@@ -215,20 +215,21 @@ void run_guarded(QueryId id, int n, bool isolate, unsigned case_seconds, Tally& 
       }
       return;
     }
-    if (pid == 0) {  // the child: a line per case, "<i>\t<property or ->\t<saved case file>\t<figures>"
+    if (pid == 0) {  // the child: a line per case, "<i>\t<property or ->\t<saved case file>\t<shrunk>\t<figures>"
       ::close(fds[0]);
       FILE* out = ::fdopen(fds[1], "w");
       for (int i = next; i < n; ++i) {
         ::alarm(case_seconds);  // a subject that hangs (checks or shrink) is ended by SIGALRM
         const Outcome o = check(i);
         std::filesystem::path saved;
+        const int shrunk_before = tally.rep.shrunk;
         if (o.failure) {
           saved = save(i, *o.failure, true);
           tally.fail(i, o.failure->property, saved);  // the child's copy: the caps
         }
         ::alarm(0);
-        std::fprintf(out, "%d\t%s\t%s\t%s\n", i, o.failure ? o.failure->property.c_str() : "-", saved.string().c_str(),
-                     encode(o.e, o.ns).c_str());
+        std::fprintf(out, "%d\t%s\t%s\t%d\t%s\n", i, o.failure ? o.failure->property.c_str() : "-",
+                     saved.string().c_str(), tally.rep.shrunk - shrunk_before, encode(o.e, o.ns).c_str());
         std::fflush(out);
       }
       std::fflush(stdout);
@@ -243,11 +244,13 @@ void run_guarded(QueryId id, int n, bool isolate, unsigned case_seconds, Tally& 
         continue;
       }
       const std::size_t t1 = line.find('\t'), t2 = line.find('\t', t1 + 1), t3 = line.find('\t', t2 + 1);
-      if (t3 != std::string::npos) {
-        Outcome o = decode(line.substr(t3 + 1));
+      const std::size_t t4 = t3 == std::string::npos ? t3 : line.find('\t', t3 + 1);
+      if (t4 != std::string::npos) {
+        Outcome o = decode(line.substr(t4 + 1));
         const std::string property = line.substr(t1 + 1, t2 - t1 - 1);
         if (property != "-") o.failure = Failure{property, ""};
         tally.add(id, std::atoi(line.c_str()), o, line.substr(t2 + 1, t3 - t2 - 1));
+        tally.rep.shrunk += std::atoi(line.c_str() + t3 + 1);  // shrunk in the child
       }
       next = std::atoi(line.c_str()) + 1;
       line.clear();
