@@ -114,6 +114,9 @@ TEST(Subjects, SinglePrecisionIsCaughtAndReplays) {
   const VerifyResult r = verify(mine, options("float", 400));
   EXPECT_GT(r.failures, 0);
   ASSERT_FALSE(r.saved.empty());
+  // Shrunk in the child process that found them, counted by the parent.
+  EXPECT_GT(r.figures.shrunk, 0);
+  EXPECT_LE(r.figures.shrunk, static_cast<int>(r.saved.size()));
   for (const auto& path : r.saved) {
     const ParseResult p = load_case(path);
     ASSERT_TRUE(p.ok()) << path << ": " << p.error;
