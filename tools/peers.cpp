@@ -19,6 +19,7 @@ namespace geomcheck {
 
 namespace {
 
+#if defined(GEOMCHECK_PEER_ODE) || defined(GEOMCHECK_PEER_BULLET) || defined(GEOMCHECK_PEER_MUJOCO)
 /// An engine's subject of Q with the engine's `expresses` attached (so that
 /// verify() does not ask it cases it cannot state); null where the engine
 /// cannot express Q. Made once per engine and query.
@@ -35,6 +36,7 @@ const ImplOf<Q>* with_expresses(const peers::PeerSubject<Q>& p) {
   }
   return s;
 }
+#endif
 
 /// Every engine's subject of Q, null where the engine cannot express it.
 template <QueryId Q>
