@@ -34,6 +34,21 @@ using report::QueryReport;
 using report::Series;
 using Clock = std::chrono::steady_clock;
 
+// The caps on saved cases: at most kMaxSavedPerKind of a kind (a property,
+// or a kind of FCL's disagreement) and kMaxSavedPerSignature of a
+// signature (kind @ generator mode).
+struct SaveCaps {
+  std::map<std::string, int> of_kind, of_signature;
+  /// Whether one more case of `kind` and `signature` is saved (then counted).
+  bool take(const std::string& kind, const std::string& signature) {
+    if (of_kind[kind] >= report::kMaxSavedPerKind || of_signature[signature] >= report::kMaxSavedPerSignature)
+      return false;
+    ++of_kind[kind];
+    ++of_signature[signature];
+    return true;
+  }
+};
+
 // Everything kept per case.
 struct Row {
   Evaluation e;
@@ -276,11 +291,7 @@ class QueryRun {
   void note_fcl(const Row& r, const char* kind) {
     const std::string signature = std::string(kind) + " @ " + r.tag;
     ++rep_.fcl_by_signature[signature];
-    if (fcl_saved_of_kind_[kind] >= report::kMaxSavedPerKind ||
-        fcl_saved_of_signature_[signature] >= report::kMaxSavedPerSignature)
-      return;
-    ++fcl_saved_of_kind_[kind];
-    ++fcl_saved_of_signature_[signature];
+    if (!fcl_caps_.take(kind, signature)) return;
     FclSave s;
     s.row = r.index;
     s.kind = kind;
@@ -349,11 +360,7 @@ class QueryRun {
     const std::string signature = property + " @ " + r.tag;
     ++rep_.failures_by_signature[signature];
     ++rep_.failures_by_property[property];
-    if (saved_of_property_[property] >= report::kMaxSavedPerKind ||
-        saved_of_signature_[signature] >= report::kMaxSavedPerSignature)
-      return;
-    ++saved_of_property_[property];
-    ++saved_of_signature_[signature];
+    if (!caps_.take(property, signature)) return;
     Shrunk how;
     const Case small = shrink(
         case_of(r),
@@ -395,8 +402,7 @@ class QueryRun {
 
   const CampaignOptions& opt_;
   std::filesystem::path out_dir_;
-  std::map<std::string, int> saved_of_property_, saved_of_signature_;  // counterexamples saved, for the caps
-  std::map<std::string, int> fcl_saved_of_kind_, fcl_saved_of_signature_;  // FCL's disagreements kept, for the caps
+  SaveCaps caps_, fcl_caps_;  // counterexamples saved, FCL's disagreements kept
   std::vector<FclSave> fcl_saves_;
   const Impl* impl_ = nullptr;
   int first_cases_ = 0;
