@@ -16,12 +16,14 @@
 
 #include <unistd.h>
 
+#include "geomcheck/oracles/engine.hpp"
 #include "geomcheck/reports/draw.hpp"
 #include "geomcheck/reports/report.hpp"
 #include "geomcheck/casefile.hpp"
 #include "geomcheck/properties/tolerances.hpp"
 #include "peer.hpp"
 #include "peers.hpp"
+#include "shard.hpp"
 #include "geomcheck/properties/shrink.hpp"
 #include "geomcheck/properties/spec.hpp"
 
@@ -55,6 +57,7 @@ struct Row {
   PeerAnswer fcl;
   std::string tag;
   CheckResult failure;
+  oracle::Stage stage = oracle::Stage::None;  // the deepest stage of the engine the truth needed
   int index = 0;
   bool run = false;
 };
@@ -111,7 +114,7 @@ class QueryRun {
   /// first `first_cases` (the cases the other engines answer; 0: none).
   QueryReport run(int threads, int first_cases = 0) {
     generate();
-    rep_.requested = static_cast<int>(cases_.size());
+    for (std::size_t i = 0; i < cases_.size(); ++i) rep_.requested += mine(static_cast<int>(i));
     time_production();
     const double elapsed = evaluate(threads);
     first_cases_ = std::min(first_cases, static_cast<int>(cases_.size()));
@@ -121,7 +124,7 @@ class QueryRun {
       f.subject = rep_.subject;
       f.claims = rep_.claims;
       f.tol = rep_.tol;
-      f.requested = first_cases_;
+      for (int i = 0; i < first_cases_; ++i) f.requested += mine(i);
       f.prod_ns = rep_.prod_ns;
       rep_.first.push_back(std::move(f));
     }
@@ -135,6 +138,8 @@ class QueryRun {
 
  private:
   const Case& case_of(const Row& r) const { return cases_[r.index].first; }
+  /// Case i is this shard's.
+  bool mine(int i) const { return i % opt_.shards == opt_.shard; }
   std::string origin(const Row& r) const {
     return "campaign seed=" + std::to_string(opt_.seed) + " case=" + std::to_string(r.index);
   }
@@ -167,6 +172,7 @@ class QueryRun {
       for (;;) {
         const int i = next++;
         if (i >= static_cast<int>(cases_.size())) return;
+        if (!mine(i)) continue;
         if (opt_.seconds > 0 && std::chrono::duration<double>(Clock::now() - start).count() > opt_.seconds) {
           out_of_time = true;
           return;
@@ -175,8 +181,10 @@ class QueryRun {
         r.index = i;
         r.tag = cases_[i].second;
         r.fcl = peer(cases_[i].first);
+        oracle::reset_deepest_stage();
         r.e = evaluate_with_peer(cases_[i].first, r.fcl, *impl_);
-        r.failure = check_all(cases_[i].first, *impl_);
+        r.stage = oracle::deepest_stage();
+        r.failure = check_all(cases_[i].first, r.e, *impl_);  // the truth asked once
         r.run = true;
         ++done;
       }
@@ -196,11 +204,11 @@ class QueryRun {
     for (int tick = 1; opt_.progress; ++tick) {
       std::this_thread::sleep_for(std::chrono::milliseconds(500));
       const int d = done;
-      const bool last = d >= static_cast<int>(cases_.size()) || out_of_time;
+      const bool last = d >= rep_.requested || out_of_time;
       if (tick % every == 0 || last) {
         const double el = std::chrono::duration<double>(Clock::now() - start).count();
-        std::fprintf(stderr, "%s[campaign] %-24s %7d / %zu cases  %6.0f cases/s  %5.1fs%s", tty ? "\r" : "",
-                     rep_.name.c_str(), d, cases_.size(), d / std::max(el, 1e-9), el, tty ? "" : "\n");
+        std::fprintf(stderr, "%s[campaign] %-24s %7d / %d cases  %6.0f cases/s  %5.1fs%s", tty ? "\r" : "",
+                     rep_.name.c_str(), d, rep_.requested, d / std::max(el, 1e-9), el, tty ? "" : "\n");
       }
       if (last) break;
     }
@@ -212,6 +220,7 @@ class QueryRun {
     if (r.index < first_cases_) gather_first(r);
     report::add_evaluation(rep_, Q, r.e);
     if (!r.e.valid) return;
+    ++rep_.truth_stages[oracle::to_string(r.stage)];
     if (r.fcl.supported) {
       ++rep_.fcl_supported;
       if (r.fcl.ok) gather_fcl(r);
@@ -433,9 +442,12 @@ int run_campaign(const CampaignOptions& opt) {
   fs::create_directories(out_dir);
   const int threads = opt.threads > 0 ? opt.threads : std::max(1u, std::thread::hardware_concurrency());
   const std::string per_query = opt.cases > 0 ? std::to_string(opt.cases) + " cases per query"
-                                              : std::string("100000 cases per query (10000 where the oracle is the certified engine)");
+                                              : std::string("100000 cases per query (10000 point sets)");
   std::fprintf(stderr, "[campaign] seed %llu, %s, %d threads, output %s\n", static_cast<unsigned long long>(opt.seed),
                per_query.c_str(), threads, out_dir.string().c_str());
+  if (opt.shards > 1)
+    std::fprintf(stderr, "[campaign] shard %d of %d (0-based): the cases i with i %% %d == %d\n", opt.shard, opt.shards,
+                 opt.shards, opt.shard);
   std::vector<QueryReport> reps;
   for_each_query([&](auto q) {
     constexpr QueryId Q = decltype(q)::value;
@@ -445,10 +457,13 @@ int run_campaign(const CampaignOptions& opt) {
       if (!subject || subject == &production_of<Q>()) return;  // not one of Q's variants
     }
     reps.push_back(QueryRun<Q>(opt, out_dir).run(threads, opt.variant.empty() ? opt.peer_cases : 0));
-    if (opt.variant.empty()) {
-      reps.back().peers = run_peers<Q>(std::min(opt.peer_cases, reps.back().cases), opt.seed, out_dir, opt.seeds);
-      if (reps.back().peers.empty()) reps.back().first.clear();  // no engine built: nothing to set beside
+    if (opt.variant.empty() && opt.shard == 0) {
+      // Sharded: the engines on the campaign's first cases (in shard 0), not this shard's.
+      const int first = opt.shards > 1 ? campaign_cases(opt, Q) : reps.back().cases;
+      reps.back().peers = run_peers<Q>(std::min(opt.peer_cases, first), opt.seed, out_dir, opt.seeds);
     }
+    // No engine built: nothing to set beside (sharded: decided by merge).
+    if (opt.shards == 1 && reps.back().peers.empty()) reps.back().first.clear();
   });
   // The point-set family (not with a variant: those are pair subjects).
   std::vector<report::PointSetReport> point_sets;
@@ -477,6 +492,10 @@ int run_campaign(const CampaignOptions& opt) {
   for (const auto& q : opt.queries) run.rerun += " --query " + q;
   if (!opt.variant.empty()) run.rerun += " --variant " + opt.variant;
   run.under_test = opt.variant.empty() ? "production" : opt.variant + " (a known-wrong variant)";
+  if (opt.shards > 1) {
+    write_shard(out_dir / "shard.json", opt, run, reps, point_sets);  // the run's rerun: all shards
+    run.rerun += " --shard " + std::to_string(opt.shard) + "/" + std::to_string(opt.shards);
+  }
   report::write_json(out_dir / "report.json", run, reps, point_sets);
   report::write_html(out_dir / "report.html", run, reps, point_sets);
   if (!opt.junit.empty()) report::write_junit(opt.junit, run, reps, point_sets);

@@ -32,6 +32,11 @@ struct CampaignOptions {
   /// Where the bug-report configurations are (<query>/bugreport-*.case),
   /// put to every other engine too.
   std::string seeds = "corpora/seeds";
+  /// This run is shard `shard` (0-based) of `shards`: it evaluates the cases
+  /// whose index i has i % shards == shard, of every query, from the same
+  /// generated sequence, and also writes DIR/shard.json for `geomcheck merge`.
+  /// The other engines run in shard 0 only (on the campaign's first cases).
+  int shard = 0, shards = 1;
   std::string junit;    ///< also write a JUnit XML file here (empty: none)
   std::string version;  ///< for the report: the build's version
   std::string started;  ///< for the report: UTC start time

@@ -94,12 +94,14 @@ report::PointSetReport run_delaunay_2d(const CampaignOptions& opt, const std::fi
   const auto gen = gen::point_sets();
   rc::Random random(opt.seed ^ 0xd1b54a32d192ed03ull);
   for (int i = 0; i < n; ++i) sets.push_back(gen(random.split(), rc::kNominalSize).value());
-  rep.requested = n;
+  const auto mine = [&](int i) { return i % opt.shards == opt.shard; };
+  for (int i = 0; i < n; ++i) rep.requested += mine(i);
   std::vector<SetRow> rows(sets.size());
   std::atomic<int> next{0};
   const auto start = Clock::now();
   auto worker = [&] {
     for (int i; (i = next++) < static_cast<int>(sets.size());) {
+      if (!mine(i)) continue;
       if (opt.seconds > 0 && std::chrono::duration<double>(Clock::now() - start).count() > opt.seconds) return;
       rows[i] = check_set(sets[i].first, sets[i].second);
       rows[i].run = true;
@@ -110,7 +112,7 @@ report::PointSetReport run_delaunay_2d(const CampaignOptions& opt, const std::fi
   for (auto& th : pool) th.join();
   const double elapsed = std::chrono::duration<double>(Clock::now() - start).count();
   if (opt.progress)
-    std::fprintf(stderr, "[campaign] %-24s %7zu sets in %.1fs\n", rep.name.c_str(), sets.size(), elapsed);
+    std::fprintf(stderr, "[campaign] %-24s %7d sets in %.1fs\n", rep.name.c_str(), rep.requested, elapsed);
   std::vector<double> prod, cgal;
   for (std::size_t i = 0; i < rows.size(); ++i) {
     const SetRow& r = rows[i];

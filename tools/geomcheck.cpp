@@ -1,7 +1,9 @@
 // geomcheck — command-line entry point: campaign, replay, converters.
 #include <CLI/CLI.hpp>
 
+#include <algorithm>
 #include <charconv>
+#include <cstdlib>
 #include <cmath>
 #include <cstdio>
 #include <ctime>
@@ -14,6 +16,7 @@
 #include <vector>
 
 #include "campaign.hpp"
+#include "shard.hpp"
 #include "geomcheck/casefile.hpp"
 #include "geomcheck/fuzz_decode.hpp"
 #include "geomcheck/delaunay_2d.hpp"
@@ -297,7 +300,30 @@ int cmd_convert(bool fuzz, const std::string& query, const std::string& input, c
   return write_out(*f, out);
 }
 
-int cmd_campaign(const CampaignOptions& opt) {
+/// I/N with 0 <= I < N: "" when it is, else what is wrong.
+std::string shard_spec(const std::string& v) {
+  const auto slash = v.find('/');
+  auto digits = [](const std::string& x) {
+    return !x.empty() && x.size() <= 6 && std::all_of(x.begin(), x.end(), [](char ch) { return ch >= '0' && ch <= '9'; });
+  };
+  if (slash == std::string::npos || !digits(v.substr(0, slash)) || !digits(v.substr(slash + 1)))
+    return "shard '" + v + "': expected I/N, e.g. 0/4 (shard I of N, 0-based)";
+  const int i = std::stoi(v.substr(0, slash)), n = std::stoi(v.substr(slash + 1));
+  if (n < 1 || i >= n) return "shard '" + v + "': I must be in 0.." + std::to_string(std::max(0, n - 1)) + " and N >= 1";
+  return "";
+}
+
+int cmd_campaign(CampaignOptions opt, const std::string& shard) {
+  if (!shard.empty()) {
+    // I/N, checked by the option's validator.
+    opt.shard = std::stoi(shard.substr(0, shard.find('/')));
+    opt.shards = std::stoi(shard.substr(shard.find('/') + 1));
+  } else if (const char* i = std::getenv("GTEST_SHARD_INDEX"), *n = std::getenv("GTEST_TOTAL_SHARDS"); i && n) {
+    const std::string env = std::string(i) + "/" + n;
+    if (!shard_spec(env).empty()) throw InputError("GTEST_SHARD_INDEX/GTEST_TOTAL_SHARDS: " + shard_spec(env));
+    opt.shard = std::stoi(i);
+    opt.shards = std::stoi(n);
+  }
   const int failures = run_campaign(opt);
   std::printf("campaign: %s\n", failures ? "FAILURES found (see the report)" : "no failure");
   return failures ? 1 : 0;
@@ -310,6 +336,7 @@ std::string known_variants() {
 }
 
 void add_campaign(CLI::App& app, CampaignOptions& opt, int& rc) {
+  static std::string shard;
   auto* c = app.add_subcommand("campaign", "Differential campaign of every registered query: production against the "
                                            "truth and FCL on the targeted generators; ends in DIR/report.json and "
                                            "DIR/report.html. Exit status 1 when anything failed.");
@@ -329,6 +356,10 @@ void add_campaign(CLI::App& app, CampaignOptions& opt, int& rc) {
   c->add_option("--seeds", opt.seeds, "where the bug-report configurations put to the other engines are "
                                        "(<query>/bugreport-*.case)")
       ->capture_default_str();
+  c->add_option("--shard", shard,
+                "run shard I of N (0-based: the cases i with i % N == I of every query) and also write DIR/shard.json "
+                "for 'geomcheck merge'; default: GTEST_SHARD_INDEX/GTEST_TOTAL_SHARDS when both are set")
+      ->check(shard_spec);
   c->add_flag("--no-progress", [&opt](std::int64_t) { opt.progress = false; }, "no progress lines on stderr");
   c->add_option("--subject,--variant", opt.variant,
                 "run a built-in subject of one query in production's place: a known-wrong variant ('help' lists them)")
@@ -344,8 +375,21 @@ void add_campaign(CLI::App& app, CampaignOptions& opt, int& rc) {
       rc = 0;
       return;
     }
-    rc = cmd_campaign(opt);
+    rc = cmd_campaign(opt, shard);
   });
+}
+
+void add_merge(CLI::App& app, const std::string& command, int& rc) {
+  static std::vector<std::string> dirs;
+  static std::string out = "reports/out", junit;
+  auto* m = app.add_subcommand("merge", "Joins the output folders of the shards of one campaign ('campaign --shard "
+                                        "I/N', N folders) into one report: OUT/report.json and OUT/report.html, the "
+                                        "figures of the unsharded run, and every saved case. Exit status 1 when "
+                                        "anything failed, 2 when a shard is missing, repeated or of another campaign.");
+  m->add_option("dirs", dirs, "the shards' output folders (each holds shard.json)")->required()->check(CLI::ExistingDirectory);
+  m->add_option("--out", out, "the merged report's folder")->capture_default_str();
+  m->add_option("--junit", junit, "also write the merged results as JUnit XML");
+  m->callback([&rc, &command] { rc = merge_shards(dirs, out, junit, command); });
 }
 
 void add_replay(CLI::App& app, int& rc) {
@@ -393,6 +437,7 @@ int main(int argc, char** argv) {
   opt.started = report::utc_now();
   for (int i = 0; i < argc; ++i) opt.command += (i ? " " : "") + std::string(argv[i]);
   add_campaign(app, opt, rc);
+  add_merge(app, opt.command, rc);
   add_replay(app, rc);
   add_converter(app, true, rc);
   add_converter(app, false, rc);

@@ -1,5 +1,6 @@
 // geomcheck — certified convex engine: classification (verdict + signed
 // distance), the double filter, and the rational certificates.
+#include <atomic>
 #include <cmath>
 #include <limits>
 #include <sstream>
@@ -175,6 +176,7 @@ struct Ctx {
   bool early_out = true;  // stop GJK at the first separating plane
   bool certificates = true;
   std::ostringstream note;
+  Q width = 0;  // the distance wanted to this width (0: the verdict suffices)
 };
 
 /// Exact separation: n with h_A(n) + h_B(-n) < 0. Fills the result.
@@ -377,7 +379,10 @@ Round search_round(Ctx& c, DistanceResult& r, std::vector<QVec>& dirs, std::vect
   const ShapeT<T> A = convert<T>(c.A), B = convert<T>(c.B);
   const T sc = from_q<T>(c.scale);
   const T contact = ldexp(sc, -(bits - 8));
-  const GjkOut<T> g = gjk(A, B, contact * contact, 64 + 2 * bits, c.early_out);
+  // A quarter of the wanted width: the certificates' bounds, recomputed
+  // exactly from the search's direction and witnesses, stay within it.
+  const T width = c.width > 0 ? T(from_q<T>(c.width) / 4) : T(0);
+  const GjkOut<T> g = gjk(A, B, contact * contact, 64 + 2 * bits, c.early_out, bits - 6, width);
   const Simplex<T>& s = g.simplex;
   c.note << " gjk" << bits << ":" << g.iterations;
   if (g.status == GjkStatus::Inside) {
@@ -530,15 +535,46 @@ bool filter_round(Ctx& c, DistanceResult& r) {
 
 namespace {
 
+thread_local Stage tl_deepest = Stage::None;
+std::atomic<bool> g_double_double{true};
+void reached(Stage s) {
+  if (static_cast<int>(s) > static_cast<int>(tl_deepest)) tl_deepest = s;
+}
+
+}  // namespace
+
+const char* to_string(Stage s) {
+  switch (s) {
+    case Stage::None: return "closed form";
+    case Stage::Filter: return "interval filter";
+    case Stage::Double: return "doubles";
+    case Stage::DoubleDouble: return "double-double";
+    case Stage::Soft128: return "128 digits";
+    case Stage::Soft384: return "384 digits";
+    case Stage::Touching: return "touching";
+    case Stage::Undecided: return "undecided";
+  }
+  return "?";
+}
+void reset_deepest_stage() { tl_deepest = Stage::None; }
+bool double_double_default() { return g_double_double.load(std::memory_order_relaxed); }
+void set_double_double_default(bool on) { g_double_double = on; }
+Stage deepest_stage() { return tl_deepest; }
+void note_stage(Stage s) { reached(s); }
+
+namespace {
+
 DistanceResult decide(const ConvexShape& a, const ConvexShape& b, const EngineOptions& opt, bool early_out) {
   Ctx c{a, b, Q(0), a.kind == ConvexShape::Kind::Hull || b.kind == ConvexShape::Kind::Hull, early_out,
         opt.certificates, {}};
   DistanceResult r;
   if (opt.filter && filter_round(c, r)) {
     r.note = "filter";
+    reached(Stage::Filter);
     return r;
   }
   c.scale = pair_scale(a, b);
+  if (opt.rel_width > 0) c.width = c.scale * to_q(opt.rel_width);
   if (c.scale == 0) {  // two points at the origin
     r.verdict = Verdict::Touching;
     r.common_point = QVec{0, 0, 0};
@@ -550,10 +586,48 @@ DistanceResult decide(const ConvexShape& a, const ConvexShape& b, const EngineOp
   Q est;
   Round rd = Round::Open;
   try {
+    Stage stage = Stage::Double;
     if (opt.exact_small) rd = search_round<double>(c, r, dirs, pts, est);
-    if (rd != Round::Decided) rd = search_round<HP128>(c, r, dirs, pts, est);
-    if (rd != Round::Decided) rd = search_round<HP384>(c, r, dirs, pts, est);
+    // Double-double decides the verdict; where a width is wanted it must
+    // also reach it, else the software floats search again (and its answer
+    // stays the fallback).
+    std::optional<DistanceResult> dd_answer;
+    if (rd != Round::Decided && opt.double_double && dd::in_range(to_double(c.scale))) {
+      stage = Stage::DoubleDouble;
+      rd = search_round<DD>(c, r, dirs, pts, est);
+      // (An overlap's width is classify's to refine, by penetration().)
+      if (rd == Round::Decided && c.width > 0 && r.verdict == Verdict::Separated &&
+          r.distance.hi - r.distance.lo > c.width) {
+        dd_answer = r;
+        r = DistanceResult{};
+        rd = Round::Open;
+      }
+      // Within rounding of touching: exact touching is tried before the
+      // software floats (which cannot decide a distance of exactly 0).
+      if (rd != Round::Decided && !dd_answer && est < c.scale / Q(mp::mpz_int(1) << 90) &&
+          try_touching(c, dirs, pts, r)) {
+        rd = Round::Decided;
+        stage = Stage::Touching;
+      }
+    }
+    if (rd != Round::Decided) stage = Stage::Soft128, rd = search_round<HP128>(c, r, dirs, pts, est);
+    // Within 2^-112 scale of touching: exact touching before 384 digits.
+    if (rd != Round::Decided && est < c.scale / Q(mp::mpz_int(1) << 112) && try_touching(c, dirs, pts, r)) {
+      rd = Round::Decided;
+      stage = Stage::Touching;
+    }
+    if (rd != Round::Decided) stage = Stage::Soft384, rd = search_round<HP384>(c, r, dirs, pts, est);
+    if (rd != Round::Decided) stage = Stage::Touching;
     if (rd != Round::Decided && try_touching(c, dirs, pts, r)) rd = Round::Decided;
+    if (rd == Round::Decided && dd_answer && dd_answer->verdict == r.verdict &&
+        dd_answer->distance.hi - dd_answer->distance.lo < r.distance.hi - r.distance.lo)
+      r = *dd_answer;
+    if (rd != Round::Decided && dd_answer) {
+      r = *dd_answer;
+      rd = Round::Decided;
+      stage = Stage::DoubleDouble;
+    }
+    if (rd == Round::Decided) reached(stage);
   } catch (const std::domain_error& e) {
     c.note << " unsupported: " << e.what();
   }
@@ -562,6 +636,7 @@ DistanceResult decide(const ConvexShape& a, const ConvexShape& b, const EngineOp
     // the support of A - B along any direction bounds the depth.
     r = DistanceResult{};
     r.verdict = Verdict::Undecided;
+    reached(Stage::Undecided);
     const QVec d = inner_point(a) - inner_point(b);
     const QVec n{1, 0, 0}, m{-1, 0, 0};
     const QInterval h = support_value(a, n) + support_value(b, m);
@@ -581,7 +656,8 @@ DistanceResult classify(const ConvexShape& a, const ConvexShape& b, const Engine
   const Q target = pair_scale(a, b) * to_q(opt.rel_width);
   if (r.distance.hi - r.distance.lo <= target) return r;
   if (r.verdict == Verdict::Overlapping) {
-    const PenetrationResult p = penetration(a, b, opt.rel_width);
+    if (opt.refine_overlap_within && Q(-r.distance.hi) > *opt.refine_overlap_within) return r;
+    const PenetrationResult p = penetration(a, b, opt.rel_width, opt.double_double);
     if (p.overlapping && p.depth.hi - p.depth.lo < r.distance.hi - r.distance.lo) {
       r.distance = {Q(-p.depth.hi), Q(-p.depth.lo)};
       r.note += " depth: " + p.note;

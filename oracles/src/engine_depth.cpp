@@ -285,29 +285,59 @@ bool check_depth(const ConvexShape& a, const ConvexShape& b, const DepthCertific
   return bound && *bound >= lo;
 }
 
-PenetrationResult penetration(const ConvexShape& a, const ConvexShape& b, double rel_width) {
+namespace {
+
+/// A tetrahedron of Minkowski vertices around the origin, searched in T
+/// (GJK, else the portal method, else the tetrahedral probes);
+/// `contact_shift`: GJK stops within 2^-contact_shift * scale of the origin.
+template <class T>
+bool tet_around_origin(const ShapeT<T>& A, const ShapeT<T>& B, const T& sc, int contact_shift, int iter,
+                       std::array<Vert<T>, 4>& tet) {
+  const T contact = ldexp(sc, -contact_shift);
+  const GjkOut<T> g = gjk(A, B, contact * contact, iter);
+  if (g.status == GjkStatus::Inside) {
+    tet = {g.simplex.v[0], g.simplex.v[1], g.simplex.v[2], g.simplex.v[3]};
+    return true;
+  }
+  if (g.status != GjkStatus::Contact) return false;
+  const MprOut<T> m = mpr(A, B, iter);
+  std::vector<Vert<T>> cand(g.simplex.v.begin(), g.simplex.v.end());
+  if (m.status == MprStatus::Hit) cand.insert(cand.end(), m.tet.begin(), m.tet.end());
+  return enclosing_tet(A, B, cand, tet);
+}
+
+}  // namespace
+
+PenetrationResult penetration(const ConvexShape& a, const ConvexShape& b, double rel_width, bool double_double) {
   PenetrationResult out;
   std::ostringstream note;
   const Q scale = pair_scale(a, b);
+  if (double_double && dd::in_range(to_double(scale))) {
+    // First in double-double: taken when EPA converges to the width and its
+    // polytope is certified; else the software floats below, from scratch.
+    const ShapeT<DD> A = convert<DD>(a), B = convert<DD>(b);
+    const DD sc = from_q<DD>(scale);
+    std::array<Vert<DD>, 4> tet;
+    if (tet_around_origin(A, B, sc, 98, 400, tet)) {
+      std::map<std::pair<int, int>, int> edge_face;
+      const Epa<DD> e = epa(A, B, tet, sc * DD(rel_width) / 4, static_cast<double>(sc), 200, edge_face);
+      note << "epa106:" << e.iterations;
+      PenetrationResult r;
+      if (e.ok && e.converged && certify_epa(a, b, e, r)) {
+        r.note = note.str();
+        note_stage(Stage::DoubleDouble);
+        return r;
+      }
+      note << (e.ok && e.converged ? " (not certified) " : " (not converged) ");
+    }
+  }
   const ShapeT<HP128> A = convert<HP128>(a), B = convert<HP128>(b);
   const HP128 sc = from_q<HP128>(scale);
-  // A tetrahedron around the origin, searched in 128 digits (GJK, else the
-  // portal method, else the tetrahedral probes).
+  // A tetrahedron around the origin, searched in 128 digits.
   std::array<Vert<HP128>, 4> tet;
-  bool have = false;
-  const HP128 contact = ldexp(sc, -120);
-  const GjkOut<HP128> g = gjk(A, B, contact * contact, 400);
-  if (g.status == GjkStatus::Inside) {
-    tet = {g.simplex.v[0], g.simplex.v[1], g.simplex.v[2], g.simplex.v[3]};
-    have = true;
-  } else if (g.status == GjkStatus::Contact) {
-    const MprOut<HP128> m = mpr(A, B, 400);
-    std::vector<Vert<HP128>> cand(g.simplex.v.begin(), g.simplex.v.end());
-    if (m.status == MprStatus::Hit) cand.insert(cand.end(), m.tet.begin(), m.tet.end());
-    have = enclosing_tet(A, B, cand, tet);
-  }
-  if (!have) {
-    out.note = "no tetrahedron around the origin (not overlapping, or touching)";
+  if (!tet_around_origin(A, B, sc, 120, 400, tet)) {
+    note << "no tetrahedron around the origin (not overlapping, or touching)";
+    out.note = note.str();
     return out;
   }
   const HP128 tol = sc * HP128(rel_width) / 4;
@@ -340,6 +370,7 @@ PenetrationResult penetration(const ConvexShape& a, const ConvexShape& b, double
       if (e3.ok && certify_epa(a, b, e3, r3)) {
         out = r3;
         done = true;
+        note_stage(Stage::Soft384);
       } else {
         note << " (384: " << (e3.ok ? r3.note : std::string("search failed")) << ")";
       }
@@ -348,6 +379,9 @@ PenetrationResult penetration(const ConvexShape& a, const ConvexShape& b, double
   if (!done && (!e.ok || !certify_epa(a, b, e, out))) {
     note << " polytope not certified: " << (e.ok ? out.note : std::string("search failed"));
     out = PenetrationResult{};
+    note_stage(Stage::Undecided);
+  } else if (!done) {
+    note_stage(Stage::Soft128);
   }
   out.note = note.str();
   return out;
@@ -363,10 +397,50 @@ const char* to_string(ImpactResult::Kind k) {
   return "?";
 }
 
-ImpactResult time_of_impact(const ConvexShape& moving, const QVec& delta, const ConvexShape& b) {
+namespace {
+
+/// Conservative advancement of `moving` along delta towards b in T, from
+/// t = 0: the candidate t (in [0, 1]) around which the caller certifies.
+/// `contact_shift`: contact within 2^-contact_shift * scale.
+template <class T>
+Q advance(const ConvexShape& moving, const QVec& delta, const ConvexShape& b, const Q& scale, int contact_shift,
+          bool& reached, int& steps) {
+  const ShapeT<T> B = convert<T>(b);
+  const V3<T> dlt = from_q<T>(delta);
+  const T sc = from_q<T>(scale);
+  const T contact = ldexp(sc, -contact_shift);
+  T t = 0;
+  for (steps = 0; steps < 200; ++steps) {
+    const ConvexShape at = translated(moving, exact_q(t) * delta);
+    const ShapeT<T> A = convert<T>(at);
+    // A loose GJK (2^-24) is enough: the step uses its lower bound of the
+    // distance, so each step gains about 24 bits and none overshoots.
+    const GjkOut<T> g = gjk(A, B, contact * contact, 400, false, 24);
+    if (g.status == GjkStatus::Inside || g.status == GjkStatus::Contact) { reached = true; break; }
+    using std::sqrt;
+    const V3<T> v = g.simplex.closest;
+    const T vn = sqrt(dot(v, v));
+    const T d = g.vw / sqrt(g.vv);  // lower bound of the distance
+    const T speed = -dot(dlt, v) / vn;
+    if (!(speed > 0)) break;
+    if (d <= contact) { reached = true; break; }
+    const T step = d / speed;
+    t += step;
+    if (t > 1) break;
+  }
+  if (!reached && t <= 1) reached = true;  // stalled: try to certify around t
+  if (t > 1) t = 1;
+  return exact_q(t);
+}
+
+}  // namespace
+
+ImpactResult time_of_impact(const ConvexShape& moving, const QVec& delta, const ConvexShape& b, bool double_double) {
   ImpactResult out;
   std::ostringstream note;
-  const DistanceResult start = classify(moving, b);
+  EngineOptions opt;
+  opt.double_double = double_double;
+  const DistanceResult start = classify(moving, b, opt);
   if (start.verdict == Verdict::Overlapping || start.verdict == Verdict::Touching) {
     out.kind = ImpactResult::Kind::StartsInside;
     out.t = point(Q(0));
@@ -377,53 +451,31 @@ ImpactResult time_of_impact(const ConvexShape& moving, const QVec& delta, const 
     out.note = "start undecided";
     return out;
   }
-  const DistanceResult whole = classify(swept(moving, delta), b);
+  const DistanceResult whole = classify(swept(moving, delta), b, opt);
   if (whole.verdict == Verdict::Separated) {
     out.kind = ImpactResult::Kind::NoHit;
     out.t = point(Q(1));
     out.note = "swept shape separated";
     return out;
   }
-  // Conservative advancement in 128 digits: the distance is convex in t, so
-  // the step d / (approach speed) never passes the first contact.
+  // Conservative advancement: the distance is convex in t, so the step
+  // d / (approach speed) never passes the first contact. In double-double
+  // where the scale allows, else in 128 digits.
   const Q scale = pair_scale(moving, b);
-  const ShapeT<HP128> B = convert<HP128>(b);
-  const V3<HP128> dlt = from_q<HP128>(delta);
-  const HP128 sc = from_q<HP128>(scale);
-  const HP128 contact = ldexp(sc, -110);
-  HP128 t = 0;
   bool reached = false;
   int steps = 0;
-  for (; steps < 200; ++steps) {
-    const ConvexShape at = translated(moving, exact_q(t) * delta);
-    const ShapeT<HP128> A = convert<HP128>(at);
-    // A loose GJK (2^-24) is enough: the step uses its lower bound of the
-    // distance, so each step gains about 24 bits and none overshoots.
-    const GjkOut<HP128> g = gjk(A, B, contact * contact, 400, false, 24);
-    if (g.status == GjkStatus::Inside || g.status == GjkStatus::Contact) { reached = true; break; }
-    using std::sqrt;
-    const V3<HP128> v = g.simplex.closest;
-    const HP128 vn = sqrt(dot(v, v));
-    const HP128 d = g.vw / sqrt(g.vv);  // lower bound of the distance
-    const HP128 speed = -dot(dlt, v) / vn;
-    if (!(speed > 0)) break;
-    if (d <= contact) { reached = true; break; }
-    const HP128 step = d / speed;
-    t += step;
-    if (t > 1) break;
-  }
+  const Q tq = double_double && dd::in_range(to_double(scale))
+                   ? advance<DD>(moving, delta, b, scale, 88, reached, steps)
+                   : advance<HP128>(moving, delta, b, scale, 110, reached, steps);
   note << "advancement:" << steps;
-  if (!reached && t <= 1) reached = true;  // stalled: try to certify around t
-  if (t > 1) t = 1;
   // Certify [t_lo, t_hi] around t, widening on failure.
-  const Q tq = exact_q(t);
   for (int k : {64, 48, 32, 16}) {
     const Q eps = Q(1) / Q(mp::mpz_int(1) << k);
     const Q tlo = tq - eps > 0 ? Q(tq - eps) : Q(0);
     const Q thi = tq + eps < 1 ? Q(tq + eps) : Q(1);
-    const DistanceResult lo = tlo == 0 ? start : classify(swept(moving, tlo * delta), b);
+    const DistanceResult lo = tlo == 0 ? start : classify(swept(moving, tlo * delta), b, opt);
     if (lo.verdict != Verdict::Separated) continue;
-    const DistanceResult hi = classify(translated(moving, thi * delta), b);
+    const DistanceResult hi = classify(translated(moving, thi * delta), b, opt);
     if (hi.verdict != Verdict::Overlapping && hi.verdict != Verdict::Touching) continue;
     out.kind = ImpactResult::Kind::Hit;
     out.t = {tlo, thi};

@@ -1,6 +1,8 @@
 // geomcheck — certified convex engine: the floating-point search (GJK, MPR,
-// EPA), templated on the number type: double for the filter, cpp_bin_float
-// of 128 and 384 binary digits for the high-precision rounds.
+// EPA), templated on the number type: double for the filter, double-double
+// (106 bits, hardware speed, a double's range) for the first high-precision
+// round, cpp_bin_float of 128 and 384 binary digits where that does not
+// decide or the scale is out of the double-double's range.
 //
 // Nothing here is trusted: every answer is a candidate that the callers
 // certify in interval arithmetic or in rationals.
@@ -12,6 +14,7 @@
 #include <array>
 #include <vector>
 
+#include "engine_dd.hpp"
 #include "engine_internal.hpp"
 
 namespace geomcheck::oracle::search {
@@ -24,6 +27,15 @@ template <class T> inline T from_q(const Q& q) { return q.template convert_to<T>
 template <> inline double from_q<double>(const Q& q) { return mpq_get_d(q.backend().data()); }
 inline Q exact_q(double x) { return to_q(x); }
 template <class T> inline Q exact_q(const T& x) { return Q(x); }
+using DD = dd::DD;
+/// hi, then the rest: about 106 bits of q (q within the range of doubles).
+template <> inline DD from_q<DD>(const Q& q) {
+  const double hi = mpq_get_d(q.backend().data());
+  if (!std::isfinite(hi) || hi == 0) return DD(hi);
+  const Q rest = q - to_q(hi);
+  return dd::quick_two_sum(hi, mpq_get_d(rest.backend().data()));
+}
+inline Q exact_q(const DD& x) { return to_q(x.hi) + to_q(x.lo); }
 
 template <class T> constexpr int bits_of() { return std::numeric_limits<T>::digits; }
 
@@ -293,14 +305,21 @@ struct GjkOut {
 
 /// GJK on A - B. `contact` is the squared distance below which the origin is
 /// taken to be on the simplex.
+/// `width` (> 0): also stop once the distance is bracketed that tightly
+/// (|v| - v.w / |v| <= width: GJK converges only linearly on curved shapes,
+/// and a caller that wants the distance to 1e-20 * scale need not wait for
+/// the last bits).
 template <class T>
 GjkOut<T> gjk(const ShapeT<T>& A, const ShapeT<T>& B, const T& contact2, int max_iter, bool early_out = false,
-              int tol_bits = bits_of<T>() - 6) {
+              int tol_bits = bits_of<T>() - 6, const T& width = T(0)) {
   GjkOut<T> out;
   Simplex<T>& s = out.simplex;
   V3<T> v = A.inner - B.inner;
   if (is_zero(v)) v = {T(1), T(0), T(0)};
   const T rel = ldexp(T(1), -tol_bits);
+  const T stall_rel = ldexp(T(1), -(bits_of<T>() - 20));
+  T best_vv = dot(v, v);
+  int stalled = 0;
   for (int it = 0; it < max_iter; ++it) {
     out.iterations = it + 1;
     const Vert<T> x = support_vert(A, B, -v);
@@ -320,6 +339,7 @@ GjkOut<T> gjk(const ShapeT<T>& A, const ShapeT<T>& B, const T& contact2, int max
     if (!s.v.empty()) {
       const T gap = vv - dot(v, x.w);
       if (gap <= rel * vv) { out.status = GjkStatus::Separated; return out; }
+      if (width > 0 && gap > 0 && gap * gap <= width * width * vv) { out.status = GjkStatus::Separated; return out; }
       bool dup = false;
       for (const auto& y : s.v) dup = dup || (y.w.x == x.w.x && y.w.y == x.w.y && y.w.z == x.w.z);
       if (dup) { out.status = GjkStatus::Separated; return out; }
@@ -328,7 +348,17 @@ GjkOut<T> gjk(const ShapeT<T>& A, const ShapeT<T>& B, const T& contact2, int max
     closest_point(s);
     v = s.closest;
     if (s.v.size() == 4) { out.status = GjkStatus::Inside; return out; }
-    if (dot(v, v) <= contact2) { out.status = GjkStatus::Contact; return out; }
+    const T nv = dot(v, v);
+    if (nv <= contact2) { out.status = GjkStatus::Contact; return out; }
+    // Stalled at the precision of T (|v| no longer shrinks: the closest
+    // point's rounding, about eps |w|^2 / |v|, dominates the gap): more
+    // iterations gain nothing; a finer T may.
+    if (it > 0 && !(nv < best_vv * (T(1) - stall_rel))) {
+      if (++stalled >= 8) break;
+    } else {
+      stalled = 0;
+      best_vv = nv;
+    }
   }
   out.status = GjkStatus::MaxIter;
   return out;

@@ -25,7 +25,7 @@
 namespace geomcheck {
 
 // The spec of collide_cylinder_capsule: cylinder/capsule: exact verdict; the true depth while the capsule's segment stays outside the cylinder.
-GEOMCHECK_SPEC(collide_cylinder_capsule, 10000,
+GEOMCHECK_SPEC(collide_cylinder_capsule, 100000,
                (Claims{true, Claims::Depth::Shallow, true, "unit, from the cylinder towards the capsule", "certified engine (capsule = segment + ball): exact verdict, certified signed distance and penetration depth"}),
                &teeth::kCapsuleCapsule)
 

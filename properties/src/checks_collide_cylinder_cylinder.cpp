@@ -35,7 +35,7 @@
 namespace geomcheck {
 
 // The spec of collide_cylinder_cylinder: cylinder/cylinder: exact verdict; a consistent contact (depth = overlap along the normal).
-GEOMCHECK_SPEC(collide_cylinder_cylinder, 10000,
+GEOMCHECK_SPEC(collide_cylinder_cylinder, 100000,
                (Claims{true, Claims::Depth::UpperBound, true, "unit, from the first cylinder towards the second: a consistent contact, not the minimal translation", "certified engine: exact verdict, certified signed distance, EPA penetration depth as a lower bound of the depth"}),
                &teeth::kCylinderNoPlanes, &teeth::kCylinderNoParallelBranch, &teeth::kCylinderPlainFrame)
 

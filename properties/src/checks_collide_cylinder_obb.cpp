@@ -26,7 +26,7 @@
 namespace geomcheck {
 
 // The spec of collide_cylinder_obb: cylinder/oriented box: exact verdict; the penetration depth over the Minkowski patches.
-GEOMCHECK_SPEC(collide_cylinder_obb, 10000,
+GEOMCHECK_SPEC(collide_cylinder_obb, 100000,
                (Claims{true, Claims::Depth::Penetration, true, "unit, from the cylinder towards the box: the minimal translation", "certified engine: exact verdict, certified signed distance, EPA penetration depth enclosure"}),
                &teeth::kBoxAsCapsule, &teeth::kBoxTalkRays)
 

@@ -31,7 +31,7 @@
 namespace geomcheck {
 
 // The spec of collide_cylinder_triangle: cylinder/triangle: exact verdict; the penetration depth over the Minkowski patches.
-GEOMCHECK_SPEC(collide_cylinder_triangle, 10000,
+GEOMCHECK_SPEC(collide_cylinder_triangle, 100000,
                (Claims{true, Claims::Depth::Penetration, true, "unit, from the cylinder towards the triangle: the minimal translation", "certified engine: exact verdict, certified signed distance, EPA penetration depth enclosure"}),
                &teeth::kTriangleNoCapStage)
 

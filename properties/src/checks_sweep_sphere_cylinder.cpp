@@ -32,7 +32,7 @@
 namespace geomcheck {
 
 // The spec of sweep_sphere_cylinder: a moving sphere swept against a cylinder: the first time of contact.
-GEOMCHECK_SPEC(sweep_sphere_cylinder, 10000,
+GEOMCHECK_SPEC(sweep_sphere_cylinder, 100000,
                (Claims{true, Claims::Depth::None, true, "the cylinder's outward surface normal at the contact (zero when the ball starts inside)", "certified engine: the swept ball (a capsule) against the cylinder; t bracketed"}),
                &teeth::kSweepNoCornerStage, &teeth::kSweepTalkRimPoint)
 

@@ -37,14 +37,15 @@ CapsuleTruth capsule_truth(const oracle::ConvexShape& cyl, const QVec& p, const 
   oracle::EngineOptions opt;
   opt.certificates = false;
   const oracle::ConvexShape seg = oracle::make_capsule(p, q, Q(0));
-  oracle::DistanceResult s = oracle::classify(cyl, seg, opt);
   // The distance to 1e-20 * scale where it matters: always outside (GJK to
   // convergence is cheap); inside only when the depth can still be within
-  // the band (r <= 2 band), since that refinement runs EPA.
-  if (s.verdict == Verdict::Separated || ((s.verdict == Verdict::Overlapping) && r <= 2 * band)) {
-    opt.rel_width = 1e-20;
-    s = oracle::classify(cyl, seg, opt);
-  }
+  // the band (r <= 2 band), since that refinement runs EPA. One call.
+  opt.rel_width = 1e-20;
+  if (!(r <= 2 * band)) opt.refine_overlap_within = Q(-1);
+  oracle::DistanceResult s = oracle::classify(cyl, seg, opt);
+  // The capsule itself, below, at the width the segment was refined to.
+  if (!(s.verdict == Verdict::Separated || (s.verdict == Verdict::Overlapping && r <= 2 * band))) opt.rel_width = 0;
+  opt.refine_overlap_within.reset();
   t.core_outside = s.verdict == Verdict::Separated;
   if (t.core_outside) t.core_distance = s.distance;
   t.signed_distance = s.distance - oracle::point(r);
@@ -71,11 +72,11 @@ PolytopeTruth polytope_truth(const oracle::ConvexShape& cyl, const oracle::Conve
   PolytopeTruth t;
   oracle::EngineOptions opt;
   opt.certificates = false;
-  oracle::DistanceResult d = oracle::classify(cyl, shape, opt);
-  if (d.verdict == Verdict::Separated || (d.verdict == Verdict::Overlapping && d.distance.hi >= -2 * band)) {
-    opt.rel_width = 1e-20;
-    d = oracle::classify(cyl, shape, opt);
-  }
+  // Refined to 1e-20 * scale where separated, and where overlapping only if
+  // the overlap may be within 2 band (that refinement runs EPA). One call.
+  opt.rel_width = 1e-20;
+  opt.refine_overlap_within = 2 * band;
+  const oracle::DistanceResult d = oracle::classify(cyl, shape, opt);
   t.verdict = d.verdict;
   t.signed_distance = d.verdict == Verdict::Touching ? oracle::point(Q(0)) : d.distance;
   t.text = std::string(oracle::to_string(t.verdict)) + " signed_distance=" + oracle::to_string(t.signed_distance);

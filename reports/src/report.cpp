@@ -244,9 +244,17 @@ void write_query_section(std::ostream& h, QueryReport& r, const std::filesystem:
     << "<tr><td class='l'>property failures</td><td class='" << (r.check_failures ? "bad" : "ok") << "'>"
     << r.check_failures << "</td><td></td></tr>"
     << "<tr><td class='l'>production time per query</td><td>" << jnum(r.prod_ns) << " ns</td><td></td></tr>"
-    << "<tr><td class='l'>oracle+checks time per case</td><td>" << jnum(r.oracle_us) << " &micro;s</td><td></td></tr>"
+    << "<tr><td class='l'>oracle+checks time per case</td><td>" << jnum(r.oracle_us) << " &micro;s ("
+    << jnum(r.oracle_us > 0 ? 1e6 / r.oracle_us : NAN) << " cases/s per core)</td><td></td></tr>"
     << "</table><table><tr><th class='l'>verdict</th><th>cases</th></tr>";
   for (const auto& [k, v] : r.verdicts) h << "<tr><td class='l'>" << k << "</td><td>" << v << "</td></tr>";
+  if (!r.truth_stages.empty()) {
+    h << "</table><table><tr><th class='l'>truth decided by</th><th>cases</th><th>share</th></tr>";
+    int n = 0;
+    for (const auto& kv : r.truth_stages) n += kv.second;
+    for (const auto& [k, v] : r.truth_stages)
+      h << "<tr><td class='l'>" << k << "</td><td>" << v << "</td><td>" << jnum(n ? double(v) / n : NAN) << "</td></tr>";
+  }
   h << "</table><table><tr><th class='l'>error / scale</th><th>bound</th><th>n</th><th>p50</th><th>p90</th><th>p99</th><th>max</th><th>log10 histogram</th></tr>";
   error_row(h, "depth", r.depth, r.tol.depth);
   error_row(h, "normal", r.normal, r.tol.normal);
@@ -346,6 +354,8 @@ Json query_json(QueryReport& r) {
               {"shrunk", r.fcl_shrunk}, {"cases", r.fcl_cases}};
   q["production_ns_per_query"] = json_num(r.prod_ns);
   q["oracle_us_per_case"] = json_num(r.oracle_us);
+  q["cases_per_second_per_core"] = json_num(r.oracle_us > 0 ? 1e6 / r.oracle_us : NAN);
+  q["truth_stages"] = r.truth_stages;
   q["counterexamples"] = r.counterexamples;
   q["peers"] = Json::array();
   for (QueryReport& p : r.peers) q["peers"].push_back(peer_json(p));

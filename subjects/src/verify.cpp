@@ -32,10 +32,12 @@ std::string replay_prefix(const VerifyOptions& opt) { return opt.replay.empty() 
 
 /// check_all, with a subject that throws failing the case instead of
 /// ending the run.
+/// `known`: the subject's evaluation of c, when it answered (judged instead
+/// of asking the truth again).
 template <class Case, class Impl>
-CheckResult guarded_check(const Case& c, const Impl& subject) {
+CheckResult guarded_check(const Case& c, const Impl& subject, const Evaluation* known = nullptr) {
   try {
-    return check_all(c, subject);
+    return known ? check_all(c, *known, subject) : check_all(c, subject);
   } catch (const std::exception& ex) {
     return Failure{"subject-threw", std::string("the subject threw: ") + ex.what()};
   } catch (...) {
@@ -63,11 +65,14 @@ draw::Answer drawn_answer(const Case& c, const Impl& subject) {
 /// The subject held to the truth on one case; where the subject throws,
 /// the truth alone (evaluated beside production's answer, which is not
 /// shown).
+/// `answered` (when given) tells which.
 template <QueryId Q>
-Evaluation truth_of(const typename QueryTraits<Q>::Case& c, const ImplOf<Q>& subject) {
+Evaluation truth_of(const typename QueryTraits<Q>::Case& c, const ImplOf<Q>& subject, bool* answered = nullptr) {
+  if (answered) *answered = true;
   try {
     return evaluate(c, subject);
   } catch (...) {
+    if (answered) *answered = false;
     Evaluation e = evaluate(c, production_of<Q>());
     e.prod_text = "threw";
     return e;
@@ -400,8 +405,9 @@ VerifyResult run_cases(const ImplOf<Q>& subject, const std::vector<Tagged<typena
   auto check = [&](int i) {
     Outcome o;
     const Case& c = cases[i].first;
-    o.failure = guarded_check(c, subject);
-    o.e = truth_of<Q>(c, subject);
+    bool answered = false;
+    o.e = truth_of<Q>(c, subject, &answered);
+    o.failure = guarded_check(c, subject, answered ? &o.e : nullptr);
     try {
       const auto t0 = std::chrono::steady_clock::now();
       const bool hit = Spec<Q>::hit(c, subject);
@@ -447,8 +453,9 @@ int replay_files(const ImplOf<Q>& subject, const std::vector<std::filesystem::pa
       continue;
     }
     const auto c = to_case<Q>(pr.value);
-    const CheckResult f = guarded_check(c, subject);
-    const Evaluation e = truth_of<Q>(c, subject);
+    bool answered = false;
+    const Evaluation e = truth_of<Q>(c, subject, &answered);
+    const CheckResult f = guarded_check(c, subject, answered ? &e : nullptr);
     std::printf("%s %s\n  %s: %s\n  truth: %s\n", f ? "FAIL" : "PASS", path.string().c_str(), subject.name,
                 e.prod_text.c_str(), e.truth_text.c_str());
     if (f) {

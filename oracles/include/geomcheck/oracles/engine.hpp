@@ -120,6 +120,12 @@ bool check_common_point(const ConvexShape& a, const ConvexShape& b, const QVec& 
 /// Scale of a pair: the largest coordinate magnitude, radius or extent.
 Q pair_scale(const ConvexShape& a, const ConvexShape& b);
 
+/// The default of EngineOptions::double_double and of penetration()'s and
+/// time_of_impact()'s `double_double` (true; false gives the engine as it
+/// was before that round: bench_checks times both in one run).
+bool double_double_default();
+void set_double_double_default(bool on);
+
 struct EngineOptions {
   bool filter = true;        // run the double filter first
   bool exact_small = true;   // re-check the double candidates in rationals
@@ -129,6 +135,15 @@ struct EngineOptions {
   bool certificates = true;
   /// Distance interval wanted, relative to scale (0: the verdict suffices).
   double rel_width = 0;
+  /// Search in double-double (106 bits) before the 128- and 384-digit
+  /// software floats, where the scale allows it (between 2^-100 and 2^100).
+  /// Only the speed depends on it: every answer is certified in rationals.
+  bool double_double = double_double_default();
+  /// With rel_width: refine an overlap's distance (by penetration(), EPA)
+  /// only where the overlap may be at most this deep (-distance.hi <= it;
+  /// negative: never); unset: always. One call then does what a verdict
+  /// call followed by a refining call would.
+  std::optional<Q> refine_overlap_within;
 };
 
 struct DistanceResult {
@@ -169,7 +184,9 @@ struct PenetrationResult {
 };
 /// Penetration depth of overlapping shapes, enclosed to rel_width * scale
 /// where the search can reach it (the enclosure is always certified).
-PenetrationResult penetration(const ConvexShape& a, const ConvexShape& b, double rel_width = 1e-30);
+/// `double_double`: search in double-double first (as EngineOptions).
+PenetrationResult penetration(const ConvexShape& a, const ConvexShape& b, double rel_width = 1e-30,
+                              bool double_double = double_double_default());
 
 struct ImpactResult {
   enum class Kind { NoHit, Hit, StartsInside, Undecided } kind = Kind::Undecided;
@@ -178,8 +195,30 @@ struct ImpactResult {
   std::string note;
 };
 /// First time t in [0, 1] at which A + t*delta meets B, certified.
-ImpactResult time_of_impact(const ConvexShape& moving, const QVec& delta, const ConvexShape& b);
+/// `double_double`: advance in double-double where the scale allows (as
+/// EngineOptions; the certificates are the same).
+ImpactResult time_of_impact(const ConvexShape& moving, const QVec& delta, const ConvexShape& b,
+                            bool double_double = double_double_default());
 
 const char* to_string(ImpactResult::Kind k);
+
+/// The stages of the engine's cascade, cheapest first: what decided a
+/// classify() (and refined its distance), or enclosed a penetration depth.
+enum class Stage : int {
+  None = 0,      ///< no engine call (a closed-form truth)
+  Filter,        ///< interval doubles (the filter)
+  Double,        ///< a search in doubles, certified in rationals
+  DoubleDouble,  ///< a search in double-double, certified in rationals
+  Soft128,       ///< a search in 128-digit software floats, certified in rationals
+  Soft384,       ///< the same in 384 digits
+  Touching,      ///< exact touching, found among snapped candidates
+  Undecided,     ///< no stage decided: a loose certified enclosure
+};
+const char* to_string(Stage s);
+/// Forgets the deepest stage of this thread's engine calls.
+void reset_deepest_stage();
+/// The deepest stage any engine call of this thread reached since
+/// reset_deepest_stage() (a campaign's share of cases per stage).
+Stage deepest_stage();
 
 }  // namespace geomcheck::oracle

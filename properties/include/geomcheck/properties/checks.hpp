@@ -290,9 +290,15 @@ CheckResult judge(QueryId id, const Evaluation& e, const Claims* claims = nullpt
 //   check_all     every check of the query, in order, stopping at the first
 //                 failure: robust, then (valid input only) oracle,
 //                 consistency, symmetry, every metamorphic move, monotone.
+//   check_all(c, e, impl)  the same, given `e`, impl's evaluation of c
+//                 (evaluate(c, impl, peer) for any peer): the oracle check
+//                 judges e, so the truth is not asked for again (a campaign
+//                 evaluates every case for its report anyway).
 #define GEOMCHECK_X(id, kind, A, B, summary)                                                                    \
   CheckResult check_robust(const PairCase<A, B>& c, const ImplOf<QueryId::id>& impl = production_of<QueryId::id>()); \
-  CheckResult check_all(const PairCase<A, B>& c, const ImplOf<QueryId::id>& impl = production_of<QueryId::id>());
+  CheckResult check_all(const PairCase<A, B>& c, const ImplOf<QueryId::id>& impl = production_of<QueryId::id>()); \
+  CheckResult check_all(const PairCase<A, B>& c, const Evaluation& e,                                           \
+                        const ImplOf<QueryId::id>& impl = production_of<QueryId::id>());
 GEOMCHECK_QUERY_LIST(GEOMCHECK_X)
 #undef GEOMCHECK_X
 

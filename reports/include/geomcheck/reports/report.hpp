@@ -71,6 +71,9 @@ struct QueryReport {
   std::map<std::string, int> fcl_by_signature;
   int fcl_shrunk = 0;  ///< saved FCL disagreements made simpler before saving
   double prod_ns = NAN, oracle_us = NAN;
+  /// Valid cases by the deepest stage of the engine's cascade their truth
+  /// needed (oracle::to_string(Stage)).
+  std::map<std::string, int> truth_stages;
   std::vector<std::string> counterexamples;
   std::vector<std::string> drawings;      // production's counterexamples, drawn (first 12)
   std::vector<std::string> fcl_drawings;  // FCL's disagreements beyond the band, drawn (the first 3 saved of each kind)
