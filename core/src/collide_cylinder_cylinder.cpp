@@ -443,8 +443,20 @@ Contact scaled(const Cylinder& a, const Axis& ax_a, const Cylinder& b, const Axi
   if (!slices_meet(f, 0x1p-48 * scene, ys)) return out;
   out.hit = true;
   if (!want_contact) return out;
+  // A pair symmetric under a reflection of the frame (a zero coordinate of
+  // A's centre, with A's axis along or across that coordinate's axis) had
+  // its canonical sign chosen by a toss-up, so that a reflected scene may
+  // run the mirrored numbers: the point is then taken on the mirror plane,
+  // the midpoint of a common point and its mirror image (in both shapes:
+  // they are convex). In y that is the slice y = 0, the widest of both
+  // (where any slice has a common point, it has).
+  if (f.y0 == 0) ys = 0;
   double X, Z;
   f.common_point(ys, X, Z);
+  if (f.sX * f.cZ == 0) {
+    if (f.X0 == 0) X = 0;
+    if (f.Z0 == 0) Z = 0;
+  }
   out.point = f.origin + (X * f.x + ys * f.y + Z * f.z);
   // The normal: the best of the fixed directions -z, -x, -+u_A, -+n_A, -y,
   // the two great circles of side normals (side of A against B's rim or side,

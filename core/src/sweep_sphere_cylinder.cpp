@@ -22,6 +22,17 @@ struct Axis {
 
 // The ball touches the cylinder with its centre at p + v (v measured from
 // p): contact point and outward normal.
+/// The outward normal of the face nearest to p + v (a cap, or the side):
+/// for a centre on the surface to rounding, where the closest point's own
+/// normal is a rounding toss-up.
+Vec3 nearest_face_normal(const Cylinder& cyl, const Axis& a, Vec3 v) {
+  const double ax = dot(v, a.u);
+  const double rho = safe_length(v - ax * a.u);
+  const double cap_gap = std::min(std::fabs(ax), std::fabs(ax - a.len));
+  const double side_gap = std::fabs(cyl.r - rho);
+  return cap_gap <= side_gap ? (2 * ax >= a.len ? a.u : -a.u) : unit_perpendicular_part(v, a.u);
+}
+
 CastHit contact_at(const Cylinder& cyl, const Axis& a, Vec3 v, double t, double noise) {
   CastHit out;
   const ClosestOnCylinder k = closest_on_cylinder(cyl, a.u, a.len, v, noise);
@@ -29,8 +40,9 @@ CastHit contact_at(const Cylinder& cyl, const Axis& a, Vec3 v, double t, double 
   out.t = t;
   out.point = k.point;
   // A centre on the surface by rounding (the ball of radius 0, inside by
-  // rounding): the normal of the nearer cap.
-  out.normal = k.inside ? (2 * dot(v, a.u) >= a.len ? a.u : -a.u) : k.normal;
+  // rounding): the normal of the nearest face (not always a cap: a point
+  // on the side, 1e-17 inside, has the side's normal).
+  out.normal = k.inside ? nearest_face_normal(cyl, a, v) : k.normal;
   return out;
 }
 
@@ -138,9 +150,7 @@ CastHit sweep_scaled(const Sphere& s, Vec3 delta, const Cylinder& cyl, SweepStag
     } else {
       // The centre on the surface to rounding: the face it is nearest to
       // (the stage-1 side/cap flag is a rounding toss-up near a rim).
-      const double cap_gap = std::min(std::fabs(ax), std::fabs(ax - a.len));
-      const double side_gap = std::fabs(cyl.r - rho);
-      out.normal = cap_gap <= side_gap ? (2 * ax >= a.len ? a.u : -a.u) : unit_perpendicular_part(v1, a.u);
+      out.normal = nearest_face_normal(cyl, a, v1);
     }
     return out;
   }
