@@ -404,7 +404,7 @@ namespace {
 /// `contact_shift`: contact within 2^-contact_shift * scale.
 template <class T>
 Q advance(const ConvexShape& moving, const QVec& delta, const ConvexShape& b, const Q& scale, int contact_shift,
-          bool& reached, int& steps) {
+          int& steps) {
   const ShapeT<T> B = convert<T>(b);
   const V3<T> dlt = from_q<T>(delta);
   const T sc = from_q<T>(scale);
@@ -416,19 +416,19 @@ Q advance(const ConvexShape& moving, const QVec& delta, const ConvexShape& b, co
     // A loose GJK (2^-24) is enough: the step uses its lower bound of the
     // distance, so each step gains about 24 bits and none overshoots.
     const GjkOut<T> g = gjk(A, B, contact * contact, 400, false, 24);
-    if (g.status == GjkStatus::Inside || g.status == GjkStatus::Contact) { reached = true; break; }
+    if (g.status == GjkStatus::Inside || g.status == GjkStatus::Contact) break;
     using std::sqrt;
     const V3<T> v = g.simplex.closest;
     const T vn = sqrt(dot(v, v));
     const T d = g.vw / sqrt(g.vv);  // lower bound of the distance
     const T speed = -dot(dlt, v) / vn;
     if (!(speed > 0)) break;
-    if (d <= contact) { reached = true; break; }
+    if (d <= contact) break;
     const T step = d / speed;
     t += step;
     if (t > 1) break;
   }
-  if (!reached && t <= 1) reached = true;  // stalled: try to certify around t
+  // Reached, stalled or past 1: the caller certifies around t either way.
   if (t > 1) t = 1;
   return exact_q(t);
 }
@@ -462,11 +462,10 @@ ImpactResult time_of_impact(const ConvexShape& moving, const QVec& delta, const 
   // d / (approach speed) never passes the first contact. In double-double
   // where the scale allows, else in 128 digits.
   const Q scale = pair_scale(moving, b);
-  bool reached = false;
   int steps = 0;
   const Q tq = double_double && dd::in_range(to_double(scale))
-                   ? advance<DD>(moving, delta, b, scale, 88, reached, steps)
-                   : advance<HP128>(moving, delta, b, scale, 110, reached, steps);
+                   ? advance<DD>(moving, delta, b, scale, 88, steps)
+                   : advance<HP128>(moving, delta, b, scale, 110, steps);
   note << "advancement:" << steps;
   // Certify [t_lo, t_hi] around t, widening on failure.
   for (int k : {64, 48, 32, 16}) {
