@@ -109,16 +109,16 @@ Closest closest(const SegmentInFrame& s, const Cylinder& cyl) {
     add((s.len - s.za) / s.ze);
   }
   const double we2 = dot(s.we, s.we);
-  // The closest approach to the axis line is a stationary point only on the
-  // side piece, between the cap planes. Beyond them it is no kink, and a
-  // nearly axis-parallel S puts it anywhere (its quotient is ill-conditioned)
-  // at a distance that ties with the true minimiser's to rounding: taken,
-  // it tilted the normal of a contact whose optimum sits on a cap plane
-  // (open case collide_cylinder_capsule/0001).
+  // The closest approach to the axis line: a stationary point of the side
+  // piece, and on a cap face (where the distance is flat when S is parallel
+  // to the cap) the point whose normal is the axis. On a rim piece it is no
+  // stationary point, and a nearly axis-parallel S puts it anywhere (its
+  // quotient is ill-conditioned) at a distance that ties with the true
+  // minimiser's to rounding: taken there, it tilted the normal of a contact
+  // whose optimum sits on a cap plane (regression collide_cylinder_capsule/0003).
   if (we2 > 0) {
     const double l = -dot(s.wa, s.we) / we2;
-    const double z = s.za + l * s.ze;
-    if (z >= 0 && z <= s.len) add(l);
+    if (!s.at_rim(l)) add(l);
   }
   // The radius crossings (roots of rho(l) = r) where the line meets the
   // infinite cylinder: that interval's ends (NaN or infinite otherwise).
