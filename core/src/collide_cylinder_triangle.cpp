@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "geomcheck/detail/frame.hpp"
+#include "geomcheck/detail/sign_filters.hpp"
 #include "geomcheck/detail/rim_edge.hpp"
 #include "geomcheck/detail/triangle_stages.hpp"
 
@@ -102,10 +103,8 @@ struct Key {
 // the sum of its terms' magnitudes, and an underflow margin); a reflection
 // leaves that test's outcome as it is.
 int exact_dot_sign(Vec3 w, const Key& k) {
-  const Vec3 d = k.x - k.y;
-  const double v = dot(w, d);
-  const double mag = std::fabs(w[0] * d[0]) + std::fabs(w[1] * d[1]) + std::fabs(w[2] * d[2]);
-  if (std::fabs(v) > 0x1p-50 * mag + 0x1p-1020) return v > 0 ? 1 : -1;
+  const detail::FilterValue f = detail::dot_difference_filter(w, k.x, k.y);
+  if (std::fabs(f.value) > f.bound) return f.value > 0 ? 1 : -1;
   ExactSum<12> s;
   for (int i = 0; i < 3; ++i) s.add_product(w[i], k.x[i]), s.add_product(-w[i], k.y[i]);
   return s.sign();
@@ -123,8 +122,6 @@ void orient_by(Vec3& w, const Key* keys, int nk) {
   }
 }
 
-// The error bound of q . (a x b) in doubles, mq = max_abs(q).
-double triple_bound(double mq, Vec3 a, Vec3 b) { return 0x1p-46 * (mq * max_abs(a) * max_abs(b)); }
 
 // sg * q . (a x b) added to an exact sum: each 2x2 minor of a x b is four
 // exact parts (two products, each split by fma), each part times q_i split
@@ -262,19 +259,19 @@ Vec3 crossing_by_longest_edge(const TriSpace& s, double t_parallel) {
 // nearest of c's triangle point and the crossing of the plane through the
 // longest edge (segment_triangle's), whichever lies nearer the other shape.
 void meet_exactly(const TriSpace& s, const double* w, Closest& c) {
-  const double mq = max_abs(s.Q);
   int sg[3];
   double wb = 0;
   for (int k = 0; k < 3; ++k) {
     const Vec3 a = s.V[k], b = s.V[k == 2 ? 0 : k + 1];
-    const double bound = triple_bound(mq, a, b);
+    const double bound = detail::triple_filter(s.Q, a, b).bound;
     wb += bound;
     sg[k] = std::fabs(w[k]) > bound ? (w[k] > 0 ? 1 : -1) : exact_triple_sign(s.Q, a, b);
   }
   const bool pos = sg[0] >= 0 && sg[1] >= 0 && sg[2] >= 0, neg = sg[0] <= 0 && sg[1] <= 0 && sg[2] <= 0;
   if (!(pos || neg) || (sg[0] == 0 && sg[1] == 0 && sg[2] == 0)) return;
-  const double vv = 0x1p-46 * max_abs(s.V[0]) * max_abs(s.V[1]) * max_abs(s.V[2]);
-  const double t0 = dot(s.V[0], cross(s.V[1], s.V[2])), tq = t0 - (w[0] + w[1] + w[2]);
+  const detail::FilterValue f0 = detail::triple_filter(s.V[0], s.V[1], s.V[2]);
+  const double vv = f0.bound;
+  const double t0 = f0.value, tq = t0 - (w[0] + w[1] + w[2]);
   int sp = t0 > 0 ? 1 : (t0 < 0 ? -1 : 0), sq = tq > 0 ? 1 : (tq < 0 ? -1 : 0);
   if (!(std::fabs(t0) > vv)) sp = exact_triple_sign(s.V[0], s.V[1], s.V[2]);
   if (!(std::fabs(tq) > vv + wb)) {
@@ -316,8 +313,9 @@ Closest segment_triangle(const TriSpace& s) {
   const double mq = max_abs(s.Q);
   for (int k = 0; k < 3; ++k) {
     const Vec3 a = s.V[k], b = s.V[k == 2 ? 0 : k + 1];
-    w[k] = dot(s.Q, cross(a, b));
-    sure = sure && std::fabs(w[k]) > triple_bound(mq, a, b);
+    const detail::FilterValue f = detail::triple_filter(s.Q, a, b);
+    w[k] = f.value;
+    sure = sure && std::fabs(w[k]) > f.bound;
   }
   const bool pos = w[0] >= 0 && w[1] >= 0 && w[2] >= 0, neg = w[0] <= 0 && w[1] <= 0 && w[2] <= 0;
   const double sum = w[0] + w[1] + w[2];

@@ -382,27 +382,21 @@ bool row_shift(double x, double y, int& k) {
   return true;
 }
 
-// One pivot (the last point) of the rescaled filters below; 0 where a
-// difference vector is zero (two equal points: the determinant is 0).
-static int orient2d_rescaled_at(Vec2 a, Vec2 b, Vec2 c) {
+// The rescaled filters' value and bound at one pivot (the last point).
+FilterValue orient2d_rescaled_filter(Vec2 a, Vec2 b, Vec2 c) {
   double ux = a.x - c.x, uy = a.y - c.y, vx = b.x - c.x, vy = b.y - c.y;
-  if ((ux == 0 && uy == 0) || (vx == 0 && vy == 0)) return 0;  // a difference of doubles is 0 only when exact
   int ku, kv;
-  if (!row_shift(ux, uy, ku) || !row_shift(vx, vy, kv)) return 2;
+  if (!row_shift(ux, uy, ku) || !row_shift(vx, vy, kv)) return {0, 0, false};
   ux = std::ldexp(ux, ku), uy = std::ldexp(uy, ku), vx = std::ldexp(vx, kv), vy = std::ldexp(vy, kv);
   const double detleft = ux * vy, detright = uy * vx;
-  const double det = detleft - detright;
-  const double bound = kCcwErrBoundA * (std::fabs(detleft) + std::fabs(detright)) + kRescaledSlack;
-  if (det > bound || -det > bound) return det > 0 ? 1 : -1;
-  return 2;
+  return {detleft - detright, kCcwErrBoundA * (std::fabs(detleft) + std::fabs(detright)) + kRescaledSlack, true};
 }
 
-static int incircle_rescaled_at(Vec2 a, Vec2 b, Vec2 c, Vec2 d) {
+FilterValue incircle_rescaled_filter(Vec2 a, Vec2 b, Vec2 c, Vec2 d) {
   double adx = a.x - d.x, bdx = b.x - d.x, cdx = c.x - d.x;
   double ady = a.y - d.y, bdy = b.y - d.y, cdy = c.y - d.y;
-  if ((adx == 0 && ady == 0) || (bdx == 0 && bdy == 0) || (cdx == 0 && cdy == 0)) return 0;  // a zero row
   int ka, kb, kc;
-  if (!row_shift(adx, ady, ka) || !row_shift(bdx, bdy, kb) || !row_shift(cdx, cdy, kc)) return 2;
+  if (!row_shift(adx, ady, ka) || !row_shift(bdx, bdy, kb) || !row_shift(cdx, cdy, kc)) return {0, 0, false};
   adx = std::ldexp(adx, ka), ady = std::ldexp(ady, ka);
   bdx = std::ldexp(bdx, kb), bdy = std::ldexp(bdy, kb);
   cdx = std::ldexp(cdx, kc), cdy = std::ldexp(cdy, kc);
@@ -417,8 +411,22 @@ static int incircle_rescaled_at(Vec2 a, Vec2 b, Vec2 c, Vec2 d) {
   const double permanent = (std::fabs(bdxcdy) + std::fabs(cdxbdy)) * alift +
                            (std::fabs(cdxady) + std::fabs(adxcdy)) * blift +
                            (std::fabs(adxbdy) + std::fabs(bdxady)) * clift;
-  const double bound = kIccErrBoundA * permanent + kRescaledSlack;
-  if (det > bound || -det > bound) return det > 0 ? 1 : -1;
+  return {det, kIccErrBoundA * permanent + kRescaledSlack, true};
+}
+
+// One pivot (the last point) of the rescaled filters below; 0 where a
+// difference vector is zero (two equal points: the determinant is 0).
+static int orient2d_rescaled_at(Vec2 a, Vec2 b, Vec2 c) {
+  if ((a.x == c.x && a.y == c.y) || (b.x == c.x && b.y == c.y)) return 0;  // a difference of doubles is 0 only when exact
+  const FilterValue f = orient2d_rescaled_filter(a, b, c);
+  if (f.usable && (f.value > f.bound || -f.value > f.bound)) return f.value > 0 ? 1 : -1;
+  return 2;
+}
+
+static int incircle_rescaled_at(Vec2 a, Vec2 b, Vec2 c, Vec2 d) {
+  if ((a.x == d.x && a.y == d.y) || (b.x == d.x && b.y == d.y) || (c.x == d.x && c.y == d.y)) return 0;  // a zero row
+  const FilterValue f = incircle_rescaled_filter(a, b, c, d);
+  if (f.usable && (f.value > f.bound || -f.value > f.bound)) return f.value > 0 ? 1 : -1;
   return 2;
 }
 

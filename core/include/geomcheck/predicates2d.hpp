@@ -61,23 +61,31 @@ int orient2d_exact(Vec2 a, Vec2 b, Vec2 c);
 int incircle_exact(Vec2 a, Vec2 b, Vec2 c, Vec2 d);
 }  // namespace detail
 
-/// Sign of det [b - a, c - a]: +1 when a, b, c turn counter-clockwise, -1
-/// clockwise, 0 collinear (or coincident points). Exact.
-GEOMCHECK_PREDICATE_INLINE int orient2d(Vec2 a, Vec2 b, Vec2 c) {
+namespace detail {
+/// A filter's rounded value and the bound of its rounding error: wherever
+/// `usable` and |value| > bound, the sign of `value` is the exact sign. The
+/// predicates below answer from it there and go to the exact stages
+/// otherwise; tests drive inputs towards the bound (oracles/tests/test_filters.cpp).
+struct FilterValue {
+  double value = 0;
+  double bound = 0;
+  bool usable = true;
+};
+
+/// orient2d's filter: det = (a - c)_x (b - c)_y - (a - c)_y (b - c)_x in
+/// doubles, bound ccwerrboundA * (|detleft| + |detright|); usable when that
+/// sum is at least kFilterFloor (no product underflowed to spoil it).
+GEOMCHECK_PREDICATE_INLINE FilterValue orient2d_filter(Vec2 a, Vec2 b, Vec2 c) {
   const double detleft = (a.x - c.x) * (b.y - c.y);
   const double detright = (a.y - c.y) * (b.x - c.x);
-  const double det = detleft - detright;
   const double detsum = std::fabs(detleft) + std::fabs(detright);
-  const double bound = detail::kCcwErrBoundA * detsum;
-  if (detsum >= detail::kFilterFloor && (det > bound || -det > bound)) return det > 0 ? 1 : -1;
-  return detail::orient2d_exact(a, b, c);
+  return {detleft - detright, kCcwErrBoundA * detsum, detsum >= kFilterFloor};
 }
 
-/// For a, b, c counter-clockwise: +1 when d is strictly inside their
-/// circumcircle, -1 strictly outside, 0 on it (the sign flips for a
-/// clockwise triangle; 0 for collinear a, b, c means d is on their line or
-/// the determinant vanishes). Exact.
-GEOMCHECK_PREDICATE_INLINE int incircle(Vec2 a, Vec2 b, Vec2 c, Vec2 d) {
+/// incircle's filter: the lifted determinant in doubles, bound iccerrboundA
+/// times its permanent; usable when every non-zero difference is at least
+/// kIncircleDiffFloor.
+GEOMCHECK_PREDICATE_INLINE FilterValue incircle_filter(Vec2 a, Vec2 b, Vec2 c, Vec2 d) {
   const double adx = a.x - d.x, bdx = b.x - d.x, cdx = c.x - d.x;
   const double ady = a.y - d.y, bdy = b.y - d.y, cdy = c.y - d.y;
   const double bdxcdy = bdx * cdy, cdxbdy = cdx * bdy;
@@ -88,11 +96,27 @@ GEOMCHECK_PREDICATE_INLINE int incircle(Vec2 a, Vec2 b, Vec2 c, Vec2 d) {
   const double permanent = (std::fabs(bdxcdy) + std::fabs(cdxbdy)) * alift +
                            (std::fabs(cdxady) + std::fabs(adxcdy)) * blift +
                            (std::fabs(adxbdy) + std::fabs(bdxady)) * clift;
-  const double bound = detail::kIccErrBoundA * permanent;
-  if ((det > bound || -det > bound) && detail::incircle_filter_safe(adx) && detail::incircle_filter_safe(ady) &&
-      detail::incircle_filter_safe(bdx) && detail::incircle_filter_safe(bdy) && detail::incircle_filter_safe(cdx) &&
-      detail::incircle_filter_safe(cdy))
-    return det > 0 ? 1 : -1;
+  return {det, kIccErrBoundA * permanent,
+          incircle_filter_safe(adx) && incircle_filter_safe(ady) && incircle_filter_safe(bdx) &&
+              incircle_filter_safe(bdy) && incircle_filter_safe(cdx) && incircle_filter_safe(cdy)};
+}
+}  // namespace detail
+
+/// Sign of det [b - a, c - a]: +1 when a, b, c turn counter-clockwise, -1
+/// clockwise, 0 collinear (or coincident points). Exact.
+GEOMCHECK_PREDICATE_INLINE int orient2d(Vec2 a, Vec2 b, Vec2 c) {
+  const detail::FilterValue f = detail::orient2d_filter(a, b, c);
+  if (f.usable && (f.value > f.bound || -f.value > f.bound)) return f.value > 0 ? 1 : -1;
+  return detail::orient2d_exact(a, b, c);
+}
+
+/// For a, b, c counter-clockwise: +1 when d is strictly inside their
+/// circumcircle, -1 strictly outside, 0 on it (the sign flips for a
+/// clockwise triangle; 0 for collinear a, b, c means d is on their line or
+/// the determinant vanishes). Exact.
+GEOMCHECK_PREDICATE_INLINE int incircle(Vec2 a, Vec2 b, Vec2 c, Vec2 d) {
+  const detail::FilterValue f = detail::incircle_filter(a, b, c, d);
+  if (f.usable && (f.value > f.bound || -f.value > f.bound)) return f.value > 0 ? 1 : -1;
   return detail::incircle_exact(a, b, c, d);
 }
 
@@ -112,6 +136,11 @@ int incircle_expansion(Vec2 a, Vec2 b, Vec2 c, Vec2 d);  ///< 2 = not applicable
 /// in scale or mixing huge and tiny points; 2 = cannot decide.
 int orient2d_rescaled(Vec2 a, Vec2 b, Vec2 c);
 int incircle_rescaled(Vec2 a, Vec2 b, Vec2 c, Vec2 d);
+/// The rescaled filters' value and bound with the last point as the pivot
+/// (its sign is the determinant's); not usable where a difference is not
+/// finite or a difference vector is zero.
+FilterValue orient2d_rescaled_filter(Vec2 a, Vec2 b, Vec2 c);
+FilterValue incircle_rescaled_filter(Vec2 a, Vec2 b, Vec2 c, Vec2 d);
 int orient2d_rational(Vec2 a, Vec2 b, Vec2 c);
 int incircle_rational(Vec2 a, Vec2 b, Vec2 c, Vec2 d);
 }  // namespace detail
