@@ -5,15 +5,37 @@
 # files, regression and seed replays, campaign smoke, CLI), runs them again
 # under ASan+UBSan (preset asan: -O1, fewer cases, no teeth), then builds the
 # fuzz preset (clang, libFuzzer, ASan+UBSan) and runs the bounded fuzz smoke
-# test of every fuzz target over its seeds (20000 runs or 120 s each).
+# test of every fuzz target over its seeds (a fixed run count each).
+#
+# --quick: the default build and every suite of it with a tenth of the
+# cases (2000 per property, 40 per engine property, 2000 per precision
+# query; the teeth keep theirs), no sanitizer or fuzz run. The next full run
+# restores the counts (they are the default preset's).
 set -euo pipefail
 cd "$(dirname "$0")/.."
+quick=0
+for arg in "$@"; do
+  case "$arg" in
+    --quick) quick=1 ;;
+    -h|--help)
+      sed -n '2,/^set -euo/p' "$0" | sed '$d; s/^# \{0,1\}//'
+      echo "usage: bash scripts/test.sh [--quick]"
+      exit 0 ;;
+    *) echo "test.sh: unknown argument '$arg' (try --help)" >&2; exit 2 ;;
+  esac
+done
 bash scripts/install-deps.sh
 jobs=$(nproc)
 phase() { echo "== $1 (at $((SECONDS / 60)) min $((SECONDS % 60)) s)"; }
 phase "default build (g++)"
-cmake --preset default >/dev/null
+if [ "$quick" = 1 ]; then
+  cmake --preset default -DGEOMCHECK_RC_CASES=2000 -DGEOMCHECK_ENGINE_RC_CASES=40 -DGEOMCHECK_PREDICATES_RC_CASES=2000 >/dev/null
+  export GEOMCHECK_PRECISION_CASES=2000
+else
+  cmake --preset default >/dev/null
+fi
 cmake --build --preset default -j "$jobs"
+built=$SECONDS
 seed=$(sed -n 's/^GEOMCHECK_RC_SEED:STRING=//p' build/default/CMakeCache.txt)
 cases=$(sed -n 's/^GEOMCHECK_RC_CASES:STRING=//p' build/default/CMakeCache.txt)
 phase "tests (RapidCheck seed $seed, $cases cases per property; a failure prints its replay command)"
@@ -30,6 +52,11 @@ run_ctest() {  # preset; keeps ctest's closing line for the summary
 }
 status=0
 run_ctest default || status=1
+if [ "$quick" = 1 ]; then
+  echo
+  echo "tests (quick): ${summary[0]} ($((SECONDS / 60)) min $((SECONDS % 60)) s in all, $(((SECONDS - built) / 60)) min $(((SECONDS - built) % 60)) s after the build)"
+  exit "$status"
+fi
 phase "sanitizer build (g++, ASan+UBSan)"
 cmake --preset asan >/dev/null
 cmake --build --preset asan -j "$jobs"
