@@ -9,6 +9,7 @@
 
 #include "bench_pair.hpp"
 #include "geomcheck/collide_cylinder_cylinder.hpp"
+#include "geomcheck/detail/cylinder_pair.hpp"
 
 namespace geomcheck::bench {
 namespace {
@@ -25,7 +26,23 @@ Cylinder random_b(Rng& rng, const Cylinder& a) {
   return {c - half, c + half, rng.uniform(0.1, 1.5)};
 }
 
-const PairBench<Cylinder, oracles::FclCylinderCylinder> kBench{"cylinder/cylinder", random_b, kDepthNote};
+/// Production before 2026-11-27 (one Newton step on each circle, stopped
+/// at a half-angle of 2^-10, no search of the sphere), for the before/after
+/// figures of the same run.
+Contact collide_before(const Cylinder& a, const Cylinder& b) {
+  detail::CylinderPairOptions o;
+  o.newton_steps = 1;
+  o.relative_stop = false;
+  o.rim_steps = 0;
+  return detail::cylinder_pair(a, b, true, o);
+}
+
+PairBench<Cylinder, oracles::FclCylinderCylinder> make_bench() {
+  PairBench<Cylinder, oracles::FclCylinderCylinder> b{"cylinder/cylinder", random_b, kDepthNote};
+  b.collide_before = collide_before;
+  return b;
+}
+const PairBench<Cylinder, oracles::FclCylinderCylinder> kBench = make_bench();
 
 }  // namespace
 }  // namespace geomcheck::bench

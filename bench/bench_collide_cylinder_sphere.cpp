@@ -54,7 +54,8 @@ Bench::Batch make_batch(std::uint64_t seed) {
 /// and the exact oracle on the same pairs: the verdict decided in rationals
 /// and a certified enclosure of the signed distance.
 void register_benchmarks(const Bench::Batch& b) {
-  Bench::register_batch("", b);
+  const Bench plain{"cylinder/sphere", random_sphere, nullptr};
+  plain.register_batch("", b);
   register_each("BM_oracle_collide", b.pairs,
                 [](const Bench::Pair& pr) { return oracle::solve_cylinder_sphere(pr.a, pr.b).verdict; });
 }

@@ -65,6 +65,9 @@ struct PairBench {
   /// undecided (the pose is skipped); null: production's overlap.
   int (*verdict)(const Pair&) = nullptr;
   const char* selected_by = "production";  ///< whose verdict `verdict` is
+  /// An earlier version of production's collide, timed in the same run
+  /// (BM_prod_collide_before_<set>, and its ratio to FCL); null: none.
+  Contact (*collide_before)(const Cylinder& a, const B& b) = nullptr;
 
   /// One random pose: a random cylinder, then B near it.
   Pair random_pair(Rng& rng) const {
@@ -105,10 +108,14 @@ struct PairBench {
   /// BM_prod_overlap, BM_prod_collide, BM_fcl_overlap, BM_fcl_collide and
   /// BM_fcl_collide_adapter (each followed by _<set> unless `set` is empty)
   /// over the batch.
-  static void register_batch(const std::string& set, const Batch& b) {
+  void register_batch(const std::string& set, const Batch& b) const {
     const std::string s = set_suffix(set);
     register_each("BM_prod_overlap" + s, b.pairs, [](const Pair& pr) { return overlap(pr.a, pr.b); });
     register_each("BM_prod_collide" + s, b.pairs, [](const Pair& pr) { return collide(pr.a, pr.b); });
+    if (collide_before) {
+      const auto before = collide_before;
+      register_each("BM_prod_collide_before" + s, b.pairs, [before](const Pair& pr) { return before(pr.a, pr.b); });
+    }
     register_each("BM_fcl_overlap" + s, b.fcl, [](const Prepared& pr) { return oracles::fcl_overlap_prepared(pr); });
     register_each("BM_fcl_collide" + s, b.fcl, [](const Prepared& pr) { return oracles::fcl_collide_prepared(pr); });
     // Reference only: validation + conversion + guarded fcl::collide, per query.
@@ -157,9 +164,13 @@ struct PairBench {
     register_batch("random", in.random);
     register_batch("contact", in.contact);
     CaptureReporter reporter(kPairBatch);
-    return run_and_summarise(argc, argv, reporter,
-                             {fcl_over_prod("overlap", "random"), fcl_over_prod("collide", "random"),
-                              fcl_over_prod("overlap", "contact"), fcl_over_prod("collide", "contact")});
+    std::vector<Ratio> ratios{fcl_over_prod("overlap", "random"), fcl_over_prod("collide", "random"),
+                              fcl_over_prod("overlap", "contact"), fcl_over_prod("collide", "contact")};
+    if (collide_before)
+      for (const char* set : {"random", "contact"})
+        ratios.push_back({std::string("collide fcl/prod-before (") + set + ")",
+                          {std::string("BM_fcl_collide_") + set, std::string("BM_prod_collide_before_") + set}});
+    return run_and_summarise(argc, argv, reporter, ratios);
   }
 };
 

@@ -15,7 +15,7 @@ int main(int argc, char** argv) {
   std::mt19937_64 rng(42);
   std::uniform_real_distribution<double> U(-1, 1), P(0.05, 1);
   int bad = 0, hits = 0, near = 0;
-  double worst_ratio = 0; std::vector<double> ratios;
+  std::vector<double> ratios;
   for (int i = 0; i < n; ++i) {
     Cylinder a{{U(rng), U(rng), U(rng)}, {U(rng), U(rng), U(rng)}, P(rng) * 0.5};
     Cylinder b{{U(rng), U(rng), U(rng)}, {U(rng), U(rng), U(rng)}, P(rng) * 0.5};

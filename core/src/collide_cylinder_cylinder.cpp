@@ -16,10 +16,15 @@ namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
 // Newton on a circle of normals stops when its half-angle step is below
-// this: a turn by less than 2^-9 rad would lower the overlap by about
-// f'' 2^-19 at most, not worth a step (the depth / penetration depth
-// distribution is unchanged at p99).
-constexpr double kStopHalf = 0x1p-10;
+// this (the angle is then rounding),
+constexpr double kStopHalf = 0x1p-40;
+// Or when the step would lower the overlap by less than this fraction of it:
+// the stop is relative to the depth, so that a shallow contact between large
+// cylinders (overlap 4 at radii of 1e9, where an angle of 2^-9 weighs 2000)
+// is searched as far as a deep one.
+constexpr double kStopGain = 0x1p-12;
+// The earlier absolute stop (a half-angle of 2^-10; CylinderPairOptions::relative_stop off).
+constexpr double kStopHalfAbsolute = 0x1p-10;
 
 // -1 where `neg`, else 1, without a branch; multiplying by it is the
 // negation or the identity, bit for bit.
@@ -189,7 +194,8 @@ struct Frame {
     // to +-1/4; a fixed 1/8 downhill where f'' <= 0, and towards P > 0 from
     // the kink S = 0 (cZ = 0 at Q = 1: rim against side). As a fraction, the
     // rotation by it needs one division, not two.
-    void half_step(double P, double Q, double S, double& a, double& b) const {
+    void half_step(double P, double Q, double S, double& a, double& b, double& gain) const {
+      gain = kInf;
       if (!(S > 0)) {
         a = -1, b = 8;
         return;
@@ -201,6 +207,8 @@ struct Frame {
         a = d1 > 0 ? -1 : 1, b = 8;
         return;
       }
+      // What the full Newton step would gain: f'^2 / (2 f'') = d1^2 / (2 d2 S^3).
+      gain = d1 * (d1 / (2 * d2 * S3));
       a = -d1, b = 2 * d2;
       if (!(b > 0x1p-400 && b < 0x1p+400)) a = a / b, b = 1;  // squares kept normal
       if (!(std::fabs(a) <= 0.25 * b)) a = std::copysign(1.0, a), b = 4;
@@ -215,7 +223,7 @@ struct Frame {
     // (halved once otherwise), kept in the quadrant. The rotation by the
     // step is the rational one (tan of half the angle), unit to rounding
     // without a square root.
-    double min(double& P, double& Q, double end_q1, int steps) const {
+    double min(double& P, double& Q, double end_q1, int steps, bool relative_stop) const {
       double S;
       double o = value(P, Q, S);
       // Or an end of the quadrant, if lower (their values are known).
@@ -225,9 +233,11 @@ struct Frame {
         else P = 0, Q = 1, o = end_q1, S = std::sqrt(c2);
       }
       for (int it = 0; it < steps; ++it) {
-        double a, b;
-        half_step(P, Q, S, a, b);
-        if (std::fabs(a) <= kStopHalf * b) break;  // converged (kStopHalf)
+        double a, b, gain;
+        half_step(P, Q, S, a, b, gain);
+        if (relative_stop ? (std::fabs(a) <= kStopHalf * b || gain <= kStopGain * o)
+                          : std::fabs(a) <= kStopHalfAbsolute * b)
+          break;  // converged
         bool moved = false;
         for (int k = 0; k < 2 && !moved; ++k, b *= 2) {
           // The rotation by the angle of half-angle tangent t = a / b:
@@ -238,7 +248,19 @@ struct Frame {
           if (Q2 < 0) P2 = 1, Q2 = 0;
           double S2;
           const double o2 = value(P2, Q2, S2);
-          if (o2 < o) P = P2, Q = Q2, o = o2, S = S2, moved = true;
+          if (o2 < o) {
+            P = P2, Q = Q2, o = o2, S = S2, moved = true;
+            // A full step that was kept, where f is far from quadratic (a
+            // hyperbola's arm, rim against side at a shallow angle), may be
+            // short: the same rotation again while it lowers f (at most 3).
+            for (int j = 0; k == 0 && j < 3 && relative_stop; ++j) {
+              double P3 = P * cr - Q * sr, Q3 = Q * cr + P * sr, S3;
+              if (!(P3 >= 0 && Q3 >= 0)) break;
+              const double o3 = value(P3, Q3, S3);
+              if (!(o3 < o)) break;
+              P = P3, Q = Q3, o = o3, S = S3;
+            }
+          }
         }
         if (!moved) break;
       }
@@ -402,6 +424,125 @@ bool slices_meet(const Frame& f, double tol, double& ybest) {
   return best <= tol;
 }
 
+// The best direction refined on the sphere of directions: from n (frame
+// coordinates in m), safeguarded Newton steps for the overlap along m,
+//   F(m) = hA |m.u_A| + rA |m - (m.u_A) u_A| + hB |m_z| + rB |(m_x, m_y)| + m.C_A,
+// with the signs of m.u_A and m_z held over a step (a step across a sign
+// is evaluated as it is). F is convex and of degree 1 in R^3, so on the
+// sphere its gradient is the tangential part of grad F and its Hessian the
+// tangential part of Hess F less F times the identity. A step is kept only
+// if it lowers F (halved until it does, 30 times at most); the search stops
+// when a step would gain less than kStopGain of F, or after `steps`.
+//
+// The candidates above end on F's kinks: the circles of side normals
+// (m.u_A = 0, m_z = 0) and the axes (where a side's term is a cone). There
+// the search first asks whether F falls off the kink: the slope of F's
+// smooth rest against the kink's own rise (h per radian across a circle,
+// r per radian off an axis). Where it does not (a true minimum of the
+// kink's patch, the common case) the search ends there, after a few dozen
+// operations; where it does, F is followed down that way (a step of 1/4,
+// halved until F is lower) and the Newton steps go on from there: the
+// minimum then lies in the rim x rim patch, off every circle.
+double refine_rims(const Frame& f, Vec3& m, double o, int steps, bool smooth_start_stops = true) {
+  const Vec3 u{f.sX, 0, f.cZ}, C{f.X0, f.y0, f.Z0};
+  auto F = [&](Vec3 v) {
+    const double t = dot(v, u);
+    const Vec3 pa = v - t * u;
+    return f.hA * std::fabs(t) + f.rA * std::sqrt(dot(pa, pa)) + f.hB * std::fabs(v.z) +
+           f.rB * std::sqrt(v.x * v.x + v.y * v.y) + dot(v, C);
+  };
+  constexpr double kKink = 0x1p-30;
+  auto descend = [&](Vec3 w) {  // a step of 1/4 along w, halved until F is lower
+    for (double th = 0.25; th > 0x1p-60; th *= 0.5) {
+      Vec3 m2 = m + th * w;
+      m2 = (1 / std::sqrt(dot(m2, m2))) * m2;
+      const double o2 = F(m2);
+      if (o2 < o) {
+        m = m2, o = o2;
+        return true;
+      }
+    }
+    return false;
+  };
+  for (int it = 0; it < steps; ++it) {
+    const double t = dot(m, u);
+    const bool on_a = std::fabs(t) <= kKink, on_b = std::fabs(m.z) <= kKink;
+    if (on_a && on_b) break;  // two kinks (the common perpendicular): left as found
+    if (on_a) {
+      // Across circle a (|Pa m| = 1 there): F's slope along +-u_A is
+      // +-(the rest of grad F).u_A + hA.
+      const double rb = std::sqrt(m.x * m.x + m.y * m.y);
+      if (!(rb > kKink)) break;
+      const double ga = dot(C, u) + f.rB * (m.x * u.x) / rb + f.hB * std::copysign(1.0, m.z) * u.z;
+      if (!(std::fabs(ga) > f.hA) || !descend((ga > 0 ? -1.0 : 1.0) * u)) break;
+      continue;
+    }
+    if (on_b) {
+      // Across circle b (|m_xy| = 1 there): along +-z, +-(the rest).z + hB.
+      const double ra2 = 1 - t * t;
+      if (!(ra2 > kKink * kKink)) break;
+      const double ra = std::sqrt(ra2);
+      const double gz = C.z + f.hA * std::copysign(1.0, t) * u.z - f.rA * (t * u.z) / ra;
+      if (!(std::fabs(gz) > f.hB) || !descend(Vec3{0, 0, gz > 0 ? -1.0 : 1.0})) break;
+      continue;
+    }
+    const Vec3 pa = m - t * u;
+    const double ra = std::sqrt(dot(pa, pa)), rb = std::sqrt(m.x * m.x + m.y * m.y);
+    const bool axis_a = ra <= kKink, axis_b = rb <= kKink;
+    if (axis_a || axis_b) {
+      if (axis_a && axis_b) break;
+      // Off an axis: every way F rises by r, plus the rest's slope.
+      Vec3 gs = C;
+      if (axis_a) gs = gs + (f.hA * std::copysign(1.0, t)) * u + Vec3{f.rB / rb * m.x, f.rB / rb * m.y, 0};
+      else gs = gs + (f.rA / ra) * pa + Vec3{0, 0, f.hB * std::copysign(1.0, m.z)};
+      gs = gs + (axis_a ? Vec3{0, 0, f.hB * std::copysign(1.0, m.z)} : (f.hA * std::copysign(1.0, t)) * u);
+      const Vec3 gt = gs - dot(gs, m) * m;
+      const double gl = std::sqrt(dot(gt, gt));
+      if (!(gl > (axis_a ? f.rA : f.rB)) || !descend((-1 / gl) * gt)) break;
+      continue;
+    }
+    if (it == 0 && smooth_start_stops) break;
+    const Vec3 qa = (1 / ra) * pa, qb{m.x / rb, m.y / rb, 0};
+    const Vec3 g = (f.hA * std::copysign(1.0, t)) * u + f.rA * qa + Vec3{0, 0, f.hB * std::copysign(1.0, m.z)} +
+                   f.rB * qb + C;
+    const Vec3 e1 = any_perpendicular(m), e2 = cross(m, e1);
+    const double g1 = dot(e1, g), g2 = dot(e2, g);
+    // Hess F (v, w) = rA / ra (v.w - (v.u)(w.u) - (v.qa)(w.qa)) + rB / rb (v_xy.w_xy - (v.qb)(w.qb)).
+    auto hess = [&](Vec3 v, Vec3 w) {
+      return f.rA / ra * (dot(v, w) - dot(v, u) * dot(w, u) - dot(v, qa) * dot(w, qa)) +
+             f.rB / rb * (v.x * w.x + v.y * w.y - dot(v, qb) * dot(w, qb));
+    };
+    const double h11 = hess(e1, e1) - o, h12 = hess(e1, e2), h22 = hess(e2, e2) - o;
+    const double det = h11 * h22 - h12 * h12;
+    double d1, d2, gain;
+    if (h11 > 0 && det > 0) {
+      d1 = -(h22 * g1 - h12 * g2) / det, d2 = -(h11 * g2 - h12 * g1) / det;
+      gain = -0.5 * (g1 * d1 + g2 * d2);
+    } else {
+      const double gl = std::sqrt(g1 * g1 + g2 * g2);
+      if (!(gl > 0)) break;
+      d1 = -0.125 * g1 / gl, d2 = -0.125 * g2 / gl, gain = kInf;
+    }
+    if (!(gain > kStopGain * o)) break;
+    const double dl = std::sqrt(d1 * d1 + d2 * d2);
+    if (dl > 0.25) d1 *= 0.25 / dl, d2 *= 0.25 / dl;
+    // A step across a kink stops on it (the kink's own test decides next).
+    bool moved = false;
+    const double o_before = o;
+    for (int k = 0; k < 4 && !moved; ++k, d1 *= 0.5, d2 *= 0.5) {
+      Vec3 m2 = m + d1 * e1 + d2 * e2;
+      const double t2 = dot(m2, u);
+      if ((t2 > 0) != (t > 0)) m2 = m2 - t2 * u;
+      if ((m2.z > 0) != (m.z > 0)) m2.z = 0;
+      m2 = (1 / std::sqrt(dot(m2, m2))) * m2;
+      const double o2 = F(m2);
+      if (o2 < o) m = m2, o = o2, moved = true;
+    }
+    if (!moved || o_before - o <= kStopGain * 0x1p-8 * o) break;
+  }
+  return o;
+}
+
 Contact scaled(const Cylinder& a, const Axis& ax_a, const Cylinder& b, const Axis& ax_b, bool want_contact,
                const CylinderPairOptions& opt) {
   // The false-positive planes before the frame (step 1): either
@@ -468,14 +609,15 @@ Contact scaled(const Cylinder& a, const Axis& ax_a, const Cylinder& b, const Axi
     best = o[j] < depth ? j : best;
     depth = o[j] < depth ? o[j] : depth;
   }
-  Vec3 n;
+  Vec3 n, m;  // the normal, and in frame coordinates
   const double sa0 = f.a0 >= 0 ? 1.0 : -1.0;
+  const double sn = f.cZ * f.X0 - f.sX * f.Z0 >= 0 ? 1.0 : -1.0;  // nA_signed's sign
   switch (best) {
-    case 0: n = -f.z; break;
-    case 1: n = -f.x; break;
-    case 2: n = -sa0 * f.uA; break;
-    case 3: n = -f.nA_signed(); break;
-    default: n = -f.y; break;
+    case 0: n = -f.z, m = {0, 0, -1}; break;
+    case 1: n = -f.x, m = {-1, 0, 0}; break;
+    case 2: n = -sa0 * f.uA, m = {-sa0 * f.sX, 0, -sa0 * f.cZ}; break;
+    case 3: n = -f.nA_signed(), m = {-sn * f.cZ, 0, sn * f.sX}; break;
+    default: n = -f.y, m = {0, -1, 0}; break;
   }
   {
     const Frame::Circle ca = f.circle_a(), cb = f.circle_b();
@@ -491,13 +633,13 @@ Contact scaled(const Cylinder& a, const Axis& ax_a, const Cylinder& b, const Axi
     double P, Q;
     if (ca.lower_bound() < depth) {
       start(ca, P, Q);
-      const double da = ca.min(P, Q, o[3], opt.newton_steps);
-      if (da < depth) depth = da, n = -(P * f.y + Q * f.nA_signed());
+      const double da = ca.min(P, Q, o[3], opt.newton_steps, opt.relative_stop);
+      if (da < depth) depth = da, n = -(P * f.y + Q * f.nA_signed()), m = {-Q * sn * f.cZ, -P, Q * sn * f.sX};
     }
     if (cb.lower_bound() < depth) {
       start(cb, P, Q);
-      const double db = cb.min(P, Q, o[1], opt.newton_steps);
-      if (db < depth) depth = db, n = -(P * f.y + Q * f.x);
+      const double db = cb.min(P, Q, o[1], opt.newton_steps, opt.relative_stop);
+      if (db < depth) depth = db, n = -(P * f.y + Q * f.x), m = {-Q, -P, 0};
     }
   }
   // Rim against rim: where the common point lies within the best overlap
@@ -509,11 +651,16 @@ Contact scaled(const Cylinder& a, const Axis& ax_a, const Cylinder& b, const Axi
   // m is S(m) + m.C_A (A's centre C_A, B's at the origin), where S is even
   // in m, so the better sign gives S - |m.C_A|. After the circles, whose
   // depths make the test stricter.
+  bool near_both_caps = false;
   if (opt.rim_rim) {
     const double ux = f.sX, uz = f.cZ;  // u_A = (sX, 0, cZ)
     const double wx = X - f.X0, wy = ys - f.y0, wz = Z - f.Z0;
     const double a = wx * ux + wz * uz;
-    if (std::fabs(Z) >= f.hB - depth && std::fabs(a) >= f.hA - depth) {
+    near_both_caps = std::fabs(Z) >= f.hB - depth && std::fabs(a) >= f.hA - depth;
+    if (near_both_caps) {
+      bool have_rr = false, rr_better = false;
+      double o_rr_signed = kInf;
+      Vec3 m_rr{0, 0, 0};
       const double dx = wx - a * ux, dy = wy, dz = wz - a * uz;
       const double tax = -uz * dy, tay = uz * dx - ux * dz, taz = ux * dy;  // u_A x d
       const double tbx = -ys, tby = X;                                       // z x (X, ys, 0)
@@ -528,10 +675,37 @@ Contact scaled(const Cylinder& a, const Axis& ax_a, const Cylinder& b, const Axi
                          f.rB * std::sqrt(mx * mx + my * my);
         const double mc = mx * f.X0 + my * f.y0 + mz * f.Z0;
         const double o_rr = s - std::fabs(mc);
-        if (o_rr < depth) {
-          const double sg = mc > 0 ? -1.0 : 1.0;
-          depth = o_rr, n = (sg * mx) * f.x + (sg * my) * f.y + (sg * mz) * f.z;
-        }
+        const double sg = mc > 0 ? -1.0 : 1.0;
+        have_rr = true, o_rr_signed = o_rr, m_rr = Vec3{sg * mx, sg * my, sg * mz};
+        rr_better = o_rr < depth;
+        if (o_rr < depth) depth = o_rr, n = (sg * mx) * f.x + (sg * my) * f.y + (sg * mz) * f.z, m = m_rr;
+      }
+      // The patch searched from the rim x rim direction too, where it did
+      // not win (the best direction is searched below).
+      if (opt.rim_steps > 0 && have_rr && !rr_better) {
+        Vec3 start = m_rr;
+        const double o_r = refine_rims(f, start, o_rr_signed, opt.rim_steps);
+        if (o_r < depth) depth = o_r, n = start.x * f.x + start.y * f.y + start.z * f.z, m = start;
+      }
+    }
+  }
+  // The best direction refined on the sphere (a few dozen operations where
+  // it is a minimum of its kink's patch, the common case).
+  if (opt.rim_steps > 0) {
+    const double o_r = refine_rims(f, m, depth, opt.rim_steps);
+    if (o_r < depth) depth = o_r, n = m.x * f.x + m.y * f.y + m.z * f.z;
+    // Cylinders meeting end to end (the common point near a cap plane of
+    // each, axes within 1/16 rad of parallel) can hold the minimum beside an
+    // axis direction while the search above ends on a side circle far from
+    // it: there each axis direction is searched from too.
+    if (near_both_caps && f.sX < 0x1p-4) {
+      const Vec3 axes[2] = {{0, 0, -1}, {-sa0 * f.sX, 0, -sa0 * f.cZ}};
+      const double along[2] = {o[0], o[2]};
+      for (int k = 0; k < 2; ++k) {
+        if (!(along[k] > depth)) continue;
+        Vec3 mk = axes[k];
+        const double ok = refine_rims(f, mk, along[k], opt.rim_steps);
+        if (ok < depth) depth = ok, n = mk.x * f.x + mk.y * f.y + mk.z * f.z;
       }
     }
   }

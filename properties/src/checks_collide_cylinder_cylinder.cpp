@@ -3,7 +3,9 @@
 // check_oracle: Agreement with the engine outside the band; the point in both
 // cylinders; the depth never below the certified penetration depth by more
 // than the bound (it is the overlap along the returned normal, an upper bound
-// of the penetration depth, and need not equal it: see the query's header).
+// of the penetration depth, and need not equal it: see the query's header),
+// and never above 1.5 times it (tolerances.hpp, depth_ratio; where it is at
+// least 1e-9 * scale).
 // check_consistency: overlap == collide.hit; unit normal; depth >= 0 equals
 // the overlap along the normal; no NaN.
 // check_symmetry: (A,B) and (B,A): the same verdict (band), the normal flipped
@@ -37,7 +39,8 @@ namespace geomcheck {
 // The spec of collide_cylinder_cylinder: cylinder/cylinder: exact verdict; a consistent contact (depth = overlap along the normal).
 GEOMCHECK_SPEC(collide_cylinder_cylinder, 100000,
                (Claims{true, Claims::Depth::UpperBound, true, "unit, from the first cylinder towards the second: a consistent contact, not the minimal translation", "certified engine: exact verdict, certified signed distance, EPA penetration depth as a lower bound of the depth"}),
-               &teeth::kCylinderNoPlanes, &teeth::kCylinderNoParallelBranch, &teeth::kCylinderPlainFrame)
+               &teeth::kCylinderNoPlanes, &teeth::kCylinderNoParallelBranch, &teeth::kCylinderPlainFrame,
+               &teeth::kCylinderShortSearch)
 
 namespace {
 
@@ -71,7 +74,7 @@ Vec3 common_plane_normal(const CylinderCylinderCase& c) {
 // the point's distance outside either cylinder. The ratio depth / PD where
 // the enclosure is within 1%.
 struct Score {
-  double unit = NAN, depth = NAN, point = NAN, ratio = NAN;
+  double unit = NAN, depth = NAN, point = NAN, ratio = NAN, ratio_lo = NAN;
 };
 Score score_contact(const Contact& k, bool truth_hit, Verdict verdict, const oracle::QCylinder& qa,
                     const oracle::QCylinder& qb, const oracle::ConvexShape& sa, const oracle::ConvexShape& sb,
@@ -90,8 +93,13 @@ Score score_contact(const Contact& k, bool truth_hit, Verdict verdict, const ora
       // penetration depth enclosed within 1% and at least 1e-9 * scale (a
       // rounding-sized depth, a few eps * scale, over a rounding-sized
       // penetration depth is noise).
-      if (depth.lo >= times_scale(1e-9, scale) && (depth.hi - depth.lo) * 100 <= depth.lo)
+      if (depth.lo >= times_scale(1e-9, scale) && (depth.hi - depth.lo) * 100 <= depth.lo) {
         out.ratio = k.depth / oracle::to_double(depth.mid());
+        const Q lo = v / depth.hi;  // depth over the largest penetration depth the enclosure allows
+        double d = oracle::to_double(lo);
+        if (Q(d) > lo) d = std::nextafter(d, 0.0);
+        out.ratio_lo = d;
+      }
     }
   } else {
     out.depth = 0;  // touching: the penetration depth is 0 <= depth
@@ -122,6 +130,7 @@ void hold_to_truth(Evaluation& e, const CylinderCylinderCase& c, const Contact& 
   std::optional<oracle::PenetrationResult> pd;
   const Score m = score_contact(ct, e.truth_hit, truth.verdict, qa, qb, sa, sb, e.scale, pd);
   e.unit_err = m.unit, e.depth_err = m.depth, e.point_err = m.point, e.depth_ratio = m.ratio;
+  e.depth_ratio_lo = m.ratio_lo;
   if (ct.hit && e.truth_hit) {
     if (truth.verdict == Verdict::Touching) score_depth_sides(e, oracle::point(Q(0)), ct.depth);
     else if (pd && pd->overlapping) score_depth_sides(e, pd->depth, ct.depth);

@@ -123,6 +123,12 @@ CheckResult judge(QueryId id, const Evaluation& e, const Claims* claims) {
   const bool point_claimed = !claims || claims->point_in_both;
   if (auto f = over("unit", e.unit_err, tol.unit)) return f;
   if (auto f = judge_depth(id, e, claims, tol.depth, margin)) return f;
+  // A consistent contact's quality (production's claim: the depth at most
+  // depth_ratio times the penetration depth), certainly exceeded.
+  if (!claims && tol.depth_ratio > 0 && e.depth_ratio_lo > tol.depth_ratio)
+    return Failure{"oracle-depth-ratio",
+                   fmt("depth / penetration depth at least %.4g exceeds bound %.3g", e.depth_ratio_lo, tol.depth_ratio) +
+                       "; oracle: " + e.truth_text + "; production: " + e.prod_text};
   if (auto f = over("normal", e.normal_err, tol.normal)) return f;
   if (point_claimed)
     if (auto f = over("point", e.point_err, tol.point)) return f;

@@ -209,6 +209,7 @@ detail::CylinderPairOptions without(int part) {
   if (part == 0) o.false_positive_planes = false;
   if (part == 1) o.parallel_branch = false;
   if (part == 2) o.accurate_frame = false;
+  if (part == 3) o.newton_steps = 1, o.relative_stop = false, o.rim_steps = 0;
   return o;
 }
 }  // namespace
@@ -227,5 +228,10 @@ const CylinderCylinderImpl kCylinderPlainFrame = {
     "cylinder-pair-plain-frame",
     [](const Cylinder& a, const Cylinder& b) { return detail::cylinder_pair(a, b, false, without(2)).hit; },
     [](const Cylinder& a, const Cylinder& b) { return detail::cylinder_pair(a, b, true, without(2)); }};
+
+const CylinderCylinderImpl kCylinderShortSearch = {
+    "cylinder-pair-short-search",
+    [](const Cylinder& a, const Cylinder& b) { return detail::cylinder_pair(a, b, false, without(3)).hit; },
+    [](const Cylinder& a, const Cylinder& b) { return detail::cylinder_pair(a, b, true, without(3)); }};
 
 }  // namespace geomcheck::teeth

@@ -47,17 +47,25 @@
 // `normal` (unit, from A towards B) is the best of the fixed directions
 // (-z, -x, -y, -+u_A, -+n_A towards B), the minima of the overlap on the
 // two great circles of side normals (perpendicular to u_A: A's side
-// against B; perpendicular to u_B: B's side against A), one safeguarded
-// Newton step each, and, where the common point lies within the best
+// against B; perpendicular to u_B: B's side against A), by safeguarded
+// Newton steps on the angle (at most 8, until a step would lower the
+// overlap by less than 2^-12 of it: relative to the depth, so a shallow
+// contact of large cylinders is searched as far as a deep one), and,
+// where the common point lies within the best
 // overlap so far of a cap plane of each cylinder, the rim x rim direction
 // there (perpendicular to both rims' tangents: the common normal of two
-// touching rims, a normal on neither circle); `depth` the overlap of the
+// touching rims, a normal on neither circle); the best of these is then
+// searched on the sphere of directions where the overlap falls off its
+// circle or axis (Newton steps in the rim x rim patch, which holds the
+// minimum of two rims meeting, and of stacked cylinders whose axes are
+// nearly parallel); `depth` the overlap of the
 // shapes along it (h_A(n) + h_B(-n), an upper bound of the penetration
 // depth), and `point` the centre of the two rectangles' common part in the
 // slice found (the corner of one least outside the other when they only
-// touch), a point of both shapes up to rounding. The depth exceeds the
-// penetration depth most where a rim meets the other's side or rim away
-// from the common point.
+// touch), a point of both shapes up to rounding. The depth is at most 1.5
+// times the penetration depth wherever that is at least 1e-9 of the scene
+// (a property holds it: docs/tolerances.md; p99 1.0002 in the default
+// campaign).
 //
 // Scale: the scene is rescaled by an exact power of two when its magnitude
 // leaves [2^-100, 2^100], so every finite input is answered.

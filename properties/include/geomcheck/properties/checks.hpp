@@ -249,6 +249,10 @@ struct Evaluation {
   /// engine's enclosure of it is within 1% (relative) and it is at least
   /// 1e-9 * scale (below that, rounding decides the ratio); NaN otherwise.
   double depth_ratio = NAN;
+  /// Where depth_ratio is measured: depth over the enclosure's upper end,
+  /// rounded down, a certain lower bound of the ratio (what the depth-ratio
+  /// bound of a consistent contact is held to, tolerances.hpp).
+  double depth_ratio_lo = NAN;
   /// Collide queries, where the truth encloses the penetration depth PD
   /// (the shapes overlapping or touching): how far production's depth
   /// certainly lies below PD (depth_short) and above it (depth_over), as

@@ -44,5 +44,11 @@ extern const CylinderCylinderImpl kCylinderNoParallelBranch;
 /// collide_cylinder_cylinder with the plain frame u_B x u_A (the common
 /// perpendicular loses digits as 1 / theta near parallel axes).
 extern const CylinderCylinderImpl kCylinderPlainFrame;
+/// collide_cylinder_cylinder with the normal search it had before the depth
+/// ratio was bounded: one Newton step per circle of side normals, stopped at
+/// a half-angle of 2^-10 rad whatever the depth, no search off the circles
+/// (its depth reached 3.9e6 times the penetration depth; caught by the
+/// depth-ratio bound).
+extern const CylinderCylinderImpl kCylinderShortSearch;
 
 }  // namespace geomcheck::teeth

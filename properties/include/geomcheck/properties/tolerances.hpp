@@ -32,6 +32,10 @@
 //            same for the ball (its gap from the cylinder at t, and its path
 //            up to t certified never that deep inside, by the engine)
 //   unit     | |normal| - 1 | (absolute, not scaled)
+//   depth_ratio  consistent contacts (collide_cylinder_cylinder): depth /
+//            penetration depth, where that is at least 1e-9 * scale and
+//            enclosed within 1% (a ratio, not scaled; 0: no bound). A case
+//            whose depth certainly exceeds it fails like any property.
 // Errors below the resolution of a double output (4 x the smallest
 // subnormal) are not counted: in a subnormal scene no answer is finer.
 #pragma once
@@ -48,6 +52,7 @@ struct Tolerances {
   double point;
   double t;
   double unit;
+  double depth_ratio = 0;
 };
 
 /// Bounds per query id.
@@ -69,10 +74,12 @@ constexpr Tolerances tolerances(QueryId id) {
       // the penetration depth. `depth` bounds only how far it may fall BELOW
       // the certified penetration depth (no direction overlaps less); how
       // far above is reported (depth / penetration depth, Evaluation::
-      // depth_ratio), not bounded. No normal bound (0: not a metric of this
-      // query): consistency holds depth to the overlap along the normal, to
-      // the depth bound.
-      return {/*verdict*/ 1e-14, /*depth*/ 1e-14, /*normal*/ 0, /*point*/ 1e-14, /*t*/ 0, /*unit*/ 1e-14};
+      // depth_ratio) and bounded: at most 1.5 times the penetration depth
+      // (where that is at least 1e-9 * scale: the depth_ratio row). No
+      // normal bound (0: not a metric of this query): consistency holds
+      // depth to the overlap along the normal, to the depth bound.
+      return {/*verdict*/ 1e-14, /*depth*/ 1e-14, /*normal*/ 0, /*point*/ 1e-14, /*t*/ 0, /*unit*/ 1e-14,
+              /*depth_ratio*/ 1.5};
     case QueryId::sweep_sphere_cylinder:
       return {/*verdict*/ 1e-14, /*depth*/ 0, /*normal*/ 1e-14, /*point*/ 1e-12, /*t*/ 1e-12, /*unit*/ 1e-14};
   }
