@@ -665,10 +665,12 @@ Contact scaled(const Cylinder& a, const Axis& ax_a, const Cylinder& b, const Axi
       const double tax = -uz * dy, tay = uz * dx - ux * dz, taz = ux * dy;  // u_A x d
       const double tbx = -ys, tby = X;                                       // z x (X, ys, 0)
       const double nx = -taz * tby, ny = taz * tbx, nz = tax * tby - tay * tbx;
-      const double l2 = nx * nx + ny * ny + nz * nz;
-      if (l2 > 0 && std::isfinite(l2)) {
-        const double il = 1 / std::sqrt(l2);
-        const double mx = nx * il, my = ny * il, mz = nz * il;
+      const double mn = max_abs(Vec3{nx, ny, nz});
+      if (mn > 0 && std::isfinite(mn)) {
+        // Unit even where the square underflows (a rim tangent of subnormal
+        // size: the plain 1 / sqrt(l2) left it 2e-7 off unit; fuzzing).
+        const Vec3 mu = normalized(Vec3{nx, ny, nz});
+        const double mx = mu.x, my = mu.y, mz = mu.z;
         const double t = mx * ux + mz * uz;
         const double rx = mx - t * ux, ry = my, rz = mz - t * uz;
         const double s = f.hA * std::fabs(t) + f.rA * std::sqrt(rx * rx + ry * ry + rz * rz) + f.hB * std::fabs(mz) +
