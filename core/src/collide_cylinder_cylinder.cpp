@@ -270,10 +270,9 @@ struct Frame {
   Circle circle_a() const { return {rA, rB, hB * sX - b0, y0, cZ * cZ, sX * sX}; }
   Circle circle_b() const { return {rB, rA, hA * sX - X0, y0, cZ * cZ, sX * sX}; }
   // A's side normal cZ x - sX z, turned towards A's centre (from B's).
-  Vec3 nA_signed() const {
-    const Vec3 n = cZ * x - sX * z;
-    return cZ * X0 - sX * Z0 >= 0 ? n : -n;
-  }
+  // The sign that turns A's side normal cZ x - sX z towards A's centre.
+  double nA_sign() const { return cZ * X0 - sX * Z0 >= 0 ? 1.0 : -1.0; }
+  Vec3 nA_signed() const { return nA_sign() * (cZ * x - sX * z); }
 
   // A point of both rectangles of slice yy, in (X, Z).
   void common_point(double yy, double& X, double& Z) const {
@@ -442,8 +441,11 @@ bool slices_meet(const Frame& f, double tol, double& ybest) {
 // kink's patch, the common case) the search ends there, after a few dozen
 // operations; where it does, F is followed down that way (a step of 1/4,
 // halved until F is lower) and the Newton steps go on from there: the
-// minimum then lies in the rim x rim patch, off every circle.
-double refine_rims(const Frame& f, Vec3& m, double o, int steps, bool smooth_start_stops = true) {
+// minimum then lies in the rim x rim patch, off every circle. A start off
+// every kink (the rim x rim direction) is taken as it is: Newton from it
+// made the query about 1.6 times slower on contacts for a max depth ratio
+// of 1.09 instead of 1.35 over the campaign's first 20000 cases.
+double refine_rims(const Frame& f, Vec3& m, double o, int steps) {
   const Vec3 u{f.sX, 0, f.cZ}, C{f.X0, f.y0, f.Z0};
   auto F = [&](Vec3 v) {
     const double t = dot(v, u);
@@ -501,7 +503,7 @@ double refine_rims(const Frame& f, Vec3& m, double o, int steps, bool smooth_sta
       if (!(gl > (axis_a ? f.rA : f.rB)) || !descend((-1 / gl) * gt)) break;
       continue;
     }
-    if (it == 0 && smooth_start_stops) break;
+    if (it == 0) break;  // a start off every kink is taken as it is (see above)
     const Vec3 qa = (1 / ra) * pa, qb{m.x / rb, m.y / rb, 0};
     const Vec3 g = (f.hA * std::copysign(1.0, t)) * u + f.rA * qa + Vec3{0, 0, f.hB * std::copysign(1.0, m.z)} +
                    f.rB * qb + C;
@@ -611,7 +613,7 @@ Contact scaled(const Cylinder& a, const Axis& ax_a, const Cylinder& b, const Axi
   }
   Vec3 n, m;  // the normal, and in frame coordinates
   const double sa0 = f.a0 >= 0 ? 1.0 : -1.0;
-  const double sn = f.cZ * f.X0 - f.sX * f.Z0 >= 0 ? 1.0 : -1.0;  // nA_signed's sign
+  const double sn = f.nA_sign();
   switch (best) {
     case 0: n = -f.z, m = {0, 0, -1}; break;
     case 1: n = -f.x, m = {-1, 0, 0}; break;

@@ -29,18 +29,20 @@ struct BoxSpace {
   BoxSpace(const Cylinder& cyl, const Obb& b) : box(&b), e(b.e), r(cyl.r) {
     P = to_box(cyl.p - b.c);
     Q = to_box(cyl.q - b.c);
-    // q - p is exact or nearly so; its box-space image is not when it is
-    // subnormal (a rotation of a 10-bit number keeps 10 bits): the axis is
-    // rotated after an exact power-of-two scaling to [1, 2), and its length
-    // scaled back.
+    // q - p is exact or nearly so; its box-space image is not when its
+    // products with the axes underflow (a rotation of a subnormal 10-bit
+    // number keeps 10 bits): such a tiny axis is rotated after an exact
+    // power-of-two scaling to [1, 2), and its length scaled back (elsewhere
+    // the scaling would change no bit, and is skipped).
     const Vec3 dw = cyl.q - cyl.p;
     const double m = max_abs(dw);
-    int ex = 0;
-    if (m > 0 && std::isfinite(m)) std::frexp(m, &ex);
-    const Vec3 d = to_box(Vec3{std::ldexp(dw.x, 1 - ex), std::ldexp(dw.y, 1 - ex), std::ldexp(dw.z, 1 - ex)});
+    int ex = 1;
+    if (m > 0 && m < 0x1p-500) std::frexp(m, &ex);
+    const Vec3 d =
+        to_box(ex == 1 ? dw : Vec3{std::ldexp(dw.x, 1 - ex), std::ldexp(dw.y, 1 - ex), std::ldexp(dw.z, 1 - ex)});
     const detail::UnitAndLength ul(max_abs(d) > 0 ? d : Vec3{0, 0, 1});
     u = ul.u;
-    len = max_abs(d) > 0 ? std::ldexp(ul.len, ex - 1) : 0.0;
+    len = max_abs(d) > 0 ? (ex == 1 ? ul.len : std::ldexp(ul.len, ex - 1)) : 0.0;
   }
   // The axis segment S(t), t in [0, 1], from the nearer end (exact at both).
   Vec3 S(double t) const { return t <= 0.5 ? P + t * (Q - P) : Q - (1 - t) * (Q - P); }
