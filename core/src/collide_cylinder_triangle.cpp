@@ -496,6 +496,19 @@ Contact collide_scaled(const Cylinder& cyl, const Triangle& tri, detail::TriCapS
   // Side x vertex: the radial direction through each vertex within the best
   // overlap so far of the side, and inside the slab by as much.
   for (int k = 0; k < 3; ++k) detail::consider_side_vertex(s.V[k], s.u, s.len, s.r, best);
+  // A point triangle on the axis line has no edge and no radial direction:
+  // every direction across the axis is alike (the overlap is the radius,
+  // often far below the overlap along the axis), so take one, oriented by
+  // the vertex's offset so that a reflection of the scene reflects it
+  // (open case 0001 of the fuzz smoke; a pick by any_perpendicular alone
+  // is negated by some reflections: regressions 0004, 0005).
+  if (ne == 0) {
+    Vec3 n;
+    if (!detail::radial_direction(s.V[0], s.u, n)) {
+      const Key point_keys[2] = {{s.T[0], s.P0}, {s.Q0, s.P0}};
+      best.both(any_perpendicular(s.u), point_keys, 2);
+    }
+  }
   // Rim x edge. The frame across the axis: f1 towards the vertex farthest
   // from the axis, f2 oriented by the vertices (both reflect with the scene).
   if (ne > 0) {
