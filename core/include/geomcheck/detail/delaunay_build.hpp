@@ -14,6 +14,7 @@
 #pragma once
 
 #include <algorithm>
+#include <array>
 #include <limits>
 #include <cmath>
 #include <cstdint>
@@ -127,11 +128,12 @@ class DelaunayBuilder {
  public:
   static constexpr std::uint32_t kInf = 0xFFFFFFFEu;
   static constexpr std::uint32_t kNone = DelaunayTriangulation::kNone;
-  static constexpr std::size_t kMaxPoints = std::size_t(1) << 30;
+  // m distinct points make 2m - 2 triangles with the ghosts, whose 6m - 6
+  // corners are named by 32-bit indices below kNone: m <= 2^29.
+  static constexpr std::size_t kMaxPoints = std::size_t(1) << 29;
 
   DelaunayTriangulation run(const Vec2* input, std::size_t n) {
     DelaunayTriangulation out;
-    // Marks are 2*stamp+1 with two stamps per point: 2^30 points at most.
     if (n > kMaxPoints)
       throw DelaunayInputError(kMaxPoints, "delaunay_2d: " + std::to_string(n) + " points is more than the " +
                                                std::to_string(kMaxPoints) + " this triangulation can index");
@@ -153,57 +155,24 @@ class DelaunayBuilder {
       if (ay != 0) tiny = std::min(tiny, ay);
     }
     const int shift = normalising_shift(std::max(std::max(-lox, hix), std::max(-loy, hiy)), tiny);
-    // Spatial sort (insertion_key); ties by coordinates, so that the order
-    // is a function of the point set, then by index, so that the first of
-    // equal points is the smallest index.
-    struct Keyed {
-      std::uint64_t key;
-      std::uint32_t index;
-    };
-    std::vector<Keyed> keyed(n), order(n);
-    for (std::size_t i = 0; i < n; ++i)
-      keyed[i] = {insertion_key(hilbert_index(grid_position(input[i].x, lox, hix), grid_position(input[i].y, loy, hiy))),
-                  static_cast<std::uint32_t>(i)};
-    // Counting sort on the top 16 bits of the key, then each bucket sorted
-    // whole (most buckets hold a handful of points); a small set is sorted
-    // whole at once (the same order: the buckets are ranges of the key).
-    {
-      const auto less = [input](const Keyed& a, const Keyed& b) {
-        if (a.key != b.key) return a.key < b.key;
-        const Vec2 p = input[a.index], q = input[b.index];
-        if (p.x != q.x) return p.x < q.x;
-        if (p.y != q.y) return p.y < q.y;
-        return a.index < b.index;
-      };
-      if (n < (std::size_t(1) << 14)) {
-        order = keyed;
-        std::sort(order.begin(), order.end(), less);
-      } else {
-        std::vector<std::uint32_t> start(65537, 0);
-        for (const Keyed& k : keyed) ++start[(k.key >> 48) + 1];
-        for (std::size_t b = 1; b <= 65536; ++b) start[b] += start[b - 1];
-        std::vector<std::uint32_t> fill(start.begin(), start.end() - 1);
-        for (const Keyed& k : keyed) order[fill[k.key >> 48]++] = k;
-        for (std::size_t b = 0; b < 65536; ++b)
-          if (start[b + 1] - start[b] > 1) std::sort(order.begin() + start[b], order.begin() + start[b + 1], less);
-      }
-    }
-    std::vector<Keyed>().swap(keyed);
-    // Merge duplicates (adjacent after the sort).
     out.vertex_of.resize(n);
-    rep_.clear();
-    pts_.clear();
-    rep_.reserve(n);
-    pts_.reserve(n);
-    for (std::size_t k = 0; k < n; ++k) {
-      const std::uint32_t i = order[k].index;
-      if (k == 0 || input[i] != input[rep_.back()]) {
-        rep_.push_back(i);
-        pts_.push_back({scaled(input[i].x, shift), scaled(input[i].y, shift)});
+    {
+      // Merge duplicates (adjacent in the sorted order).
+      const std::vector<Keyed> order = sorted_order(input, n, lox, hix, loy, hiy);
+      rep_.clear();
+      pts_.clear();
+      rep_.reserve(n);
+      pts_.reserve(n);
+      for (std::size_t k = 0; k < n; ++k) {
+        if (k + 16 < n) __builtin_prefetch(&input[order[k + 16].index]);  // the input, in random order
+        const std::uint32_t i = order[k].index;
+        if (k == 0 || input[i] != input[rep_.back()]) {
+          rep_.push_back(i);
+          pts_.push_back({scaled(input[i].x, shift), scaled(input[i].y, shift)});
+        }
+        out.vertex_of[i] = rep_.back();
       }
-      out.vertex_of[i] = rep_.back();
     }
-    std::vector<Keyed>().swap(order);
     const std::uint32_t m = static_cast<std::uint32_t>(pts_.size());
     out.vertex_count = m;
     out.dimension = m == 0 ? DelaunayDimension::empty : (m == 1 ? DelaunayDimension::point : DelaunayDimension::line);
@@ -219,20 +188,75 @@ class DelaunayBuilder {
   }
 
  private:
+  struct Keyed {
+    std::uint64_t key;
+    std::uint32_t index;
+  };
+
+  // The input indices in insertion order: by insertion_key, ties by
+  // coordinates (so that the order is a function of the point set), then
+  // by index (so that the first of equal points is the smallest index).
+  // A counting sort on the key's top bits (the round and the Hilbert
+  // index's leading bits: about eight points a bucket), then each bucket
+  // sorted whole; the buckets are ranges of the key, so the order is that
+  // of the comparison alone.
+  static std::vector<Keyed> sorted_order(const Vec2* input, std::size_t n, double lox, double hix, double loy,
+                                         double hiy) {
+    std::vector<Keyed> keyed(n);
+    for (std::size_t i = 0; i < n; ++i)
+      keyed[i] = {insertion_key(hilbert_index(grid_position(input[i].x, lox, hix), grid_position(input[i].y, loy, hiy))),
+                  static_cast<std::uint32_t>(i)};
+    const auto less = [input](const Keyed& a, const Keyed& b) {
+      if (a.key != b.key) return a.key < b.key;
+      const Vec2 p = input[a.index], q = input[b.index];
+      if (p.x != q.x) return p.x < q.x;
+      if (p.y != q.y) return p.y < q.y;
+      return a.index < b.index;
+    };
+    if (n < 256) {
+      std::sort(keyed.begin(), keyed.end(), less);
+      return keyed;
+    }
+    int bits = 4;
+    while (bits < 16 && (std::size_t(1) << (bits + 3)) < n) ++bits;
+    const int sh = 60 - bits;  // the key: 4 bits of round, then 60 of Hilbert index
+    const std::size_t buckets = std::size_t(16) << bits;
+    std::vector<std::uint32_t> end(buckets + 1, 0);
+    for (const Keyed& k : keyed) ++end[(k.key >> sh) + 1];
+    for (std::size_t b = 1; b <= buckets; ++b) end[b] += end[b - 1];
+    std::vector<Keyed> order(n);
+    for (const Keyed& k : keyed) order[end[k.key >> sh]++] = k;  // end[b]: now the end of bucket b
+    std::vector<Keyed>().swap(keyed);
+    std::uint32_t lo = 0;
+    for (std::size_t b = 0; b < buckets; ++b) {
+      const std::uint32_t hi = end[b];
+      if (hi - lo <= 24) {
+        for (std::uint32_t i = lo + 1; i < hi; ++i) {  // insertion sort
+          const Keyed x = order[i];
+          std::uint32_t j = i;
+          for (; j > lo && less(x, order[j - 1]); --j) order[j] = order[j - 1];
+          order[j] = x;
+        }
+      } else {
+        std::sort(order.begin() + lo, order.begin() + hi, less);
+      }
+      lo = hi;
+    }
+    return order;
+  }
+
   std::vector<Vec2> pts_;          // distinct points, in insertion order
   std::vector<std::uint32_t> rep_; // their input indices
-  // One triangle per 32 bytes: its corners' vertices and neighbours, and a
-  // mark: 2*stamp (in the current cavity), 2*stamp+1 (tested, outside).
-  struct Tri {
-    std::uint32_t v[3], a[3], mark, pad;
-  };
-  std::vector<Tri> tri_;
-  std::uint32_t& vx(std::uint32_t c) { return tri_[c / 3].v[c % 3]; }
-  std::uint32_t vx(std::uint32_t c) const { return tri_[c / 3].v[c % 3]; }
-  std::uint32_t& ax(std::uint32_t c) { return tri_[c / 3].a[c % 3]; }
-  std::uint32_t ax(std::uint32_t c) const { return tri_[c / 3].a[c % 3]; }
-  std::vector<std::uint32_t> fan_corner_, fan_stamp_;  // per vertex (+ inf): the new triangle leaving it
-  std::vector<std::uint32_t> cavity_, stack_, fan_;
+  // Triangles as two arrays laid out like the output (vertices, and the
+  // neighbouring corners), so that they become the output in place; V_ and
+  // A_ index them by corner.
+  using Triple = std::array<std::uint32_t, 3>;
+  static_assert(sizeof(Triple) == 3 * sizeof(std::uint32_t), "corners are contiguous");
+  std::vector<Triple> tv_, ta_;
+  std::uint32_t* V_ = nullptr;
+  std::uint32_t* A_ = nullptr;
+  std::uint32_t nt_ = 0, cap_ = 0;
+  std::vector<std::uint32_t> cavity_, stack_, vstamp_;
   struct Boundary {
     std::uint32_t from, to, outside;
   };
@@ -243,10 +267,7 @@ class DelaunayBuilder {
 
   static std::uint32_t next(std::uint32_t c) { return c % 3 == 2 ? c - 2 : c + 1; }
   static std::uint32_t prev(std::uint32_t c) { return c % 3 == 0 ? c + 2 : c - 1; }
-  bool ghost(std::uint32_t t) const { return tri_[t].v[0] == kInf || tri_[t].v[1] == kInf || tri_[t].v[2] == kInf; }
-  std::uint32_t triangles() const { return static_cast<std::uint32_t>(tri_.size()); }
-  // Index into the per-vertex arrays: the vertex, or the last slot for infinity.
-  std::uint32_t slot(std::uint32_t v) const { return v == kInf ? static_cast<std::uint32_t>(pts_.size()) : v; }
+  bool ghost(std::uint32_t t) const { return V_[3 * t] == kInf || V_[3 * t + 1] == kInf || V_[3 * t + 2] == kInf; }
 
   // p strictly between x and y, all three collinear.
   static bool strictly_between(Vec2 x, Vec2 y, Vec2 p) {
@@ -255,7 +276,7 @@ class DelaunayBuilder {
   }
 
   bool in_conflict(std::uint32_t t, Vec2 p) const {
-    const std::uint32_t a = vx(3 * t), b = vx(3 * t + 1), c = vx(3 * t + 2);
+    const std::uint32_t a = V_[3 * t], b = V_[3 * t + 1], c = V_[3 * t + 2];
     std::uint32_t x, y;
     if (a == kInf) x = b, y = c;
     else if (b == kInf) x = c, y = a;
@@ -271,107 +292,138 @@ class DelaunayBuilder {
   std::uint32_t locate(Vec2 p) {
     std::uint32_t t = last_;
     std::uint32_t entered = kNone;  // the corner of t whose edge we came through
-    const std::uint64_t limit = 2ull * triangles() + 16;
+    const std::uint64_t limit = 2ull * nt_ + 16;
     for (std::uint64_t steps = 0;; ++steps) {
       if (steps > limit) throw DelaunayFailure("delaunay_2d: point location walked in a cycle");
       rng_ ^= rng_ << 13, rng_ ^= rng_ >> 17, rng_ ^= rng_ << 5;
       const std::uint32_t r = rng_ % 3;
       std::uint32_t crossed = kNone;
       for (std::uint32_t k = 0; k < 3; ++k) {
-        const std::uint32_t c = 3 * t + (r + k) % 3;
+        const std::uint32_t i = r + k >= 3 ? r + k - 3 : r + k;
+        const std::uint32_t c = 3 * t + i;
         if (c == entered) continue;
-        if (Pred::orient(pts_[vx(next(c))], pts_[vx(prev(c))], p) < 0) {
+        if (Pred::orient(pts_[V_[next(c)]], pts_[V_[prev(c)]], p) < 0) {
           crossed = c;
           break;
         }
       }
       if (crossed == kNone) return t;
-      entered = ax(crossed);
+      entered = A_[crossed];
       t = entered / 3;
       if (ghost(t)) return t;
     }
   }
 
   std::uint32_t new_triangle() {
-    tri_.push_back(Tri{{0, 0, 0}, {0, 0, 0}, 0, 0});
-    return triangles() - 1;
+    if (nt_ == cap_) throw DelaunayFailure("delaunay_2d: more triangles than 2n - 2");
+    return nt_++;
   }
 
   // Re-triangulates: one triangle (from, to, apex) per boundary edge, in the
-  // slots of `cavity_` and new ones; links the fan and the outside.
-  void fan(std::uint32_t apex) {
-    if (boundary_.size() != cavity_.size() + 2)
-      throw DelaunayFailure("delaunay_2d: the conflict region is not a disc (" + std::to_string(cavity_.size()) +
-                            " triangles, " + std::to_string(boundary_.size()) + " boundary edges)");
-    ++stamp_;
-    fan_.clear();
-    for (std::size_t j = 0; j < boundary_.size(); ++j) {
-      const std::uint32_t t = j < cavity_.size() ? cavity_[j] : new_triangle();
-      fan_.push_back(t);
-      const Boundary& e = boundary_[j];
-      vx(3 * t) = e.from, vx(3 * t + 1) = e.to, vx(3 * t + 2) = apex;
-      ax(3 * t + 2) = e.outside, ax(e.outside) = 3 * t + 2;
-      const std::uint32_t s = slot(e.from);
-      if (fan_stamp_[s] == stamp_) throw DelaunayFailure("delaunay_2d: the conflict region's boundary is not a cycle");
-      fan_stamp_[s] = stamp_, fan_corner_[s] = 3 * t + 1;  // edge (apex, from) is opposite corner 1
-      if (e.from != kInf && e.to != kInf) last_ = t;
+  // slots of `cavity_` and new ones. The boundary is in order around the
+  // cavity (each edge's `to` is the next one's `from`), so each new
+  // triangle's neighbour across (to, apex) is the next one.
+  void fan(std::uint32_t apex, std::size_t nc, std::size_t k) {
+    if (k != nc + 2)
+      throw DelaunayFailure("delaunay_2d: the conflict region is not a disc (" + std::to_string(nc) +
+                            " triangles, " + std::to_string(k) + " boundary edges)");
+    // Every boundary vertex once (a pinched region would give the new
+    // point two edges to one vertex).
+    if (k <= 16) {
+      for (std::size_t i = 1; i < k; ++i)
+        for (std::size_t j = 0; j < i; ++j)
+          if (boundary_[i].from == boundary_[j].from)
+            throw DelaunayFailure("delaunay_2d: the conflict region's boundary is not a simple cycle");
+    } else {
+      ++stamp_;
+      if (vstamp_.empty()) vstamp_.assign(pts_.size() + 1, 0);
+      for (std::size_t i = 0; i < k; ++i) {
+        const Boundary& e = boundary_[i];
+        std::uint32_t& s = vstamp_[e.from == kInf ? pts_.size() : e.from];
+        if (s == stamp_) throw DelaunayFailure("delaunay_2d: the conflict region's boundary is not a simple cycle");
+        s = stamp_;
+      }
     }
-    for (const std::uint32_t t : fan_) {
-      const std::uint32_t s = slot(vx(3 * t + 1));
-      if (fan_stamp_[s] != stamp_) throw DelaunayFailure("delaunay_2d: the conflict region's boundary is not a cycle");
-      const std::uint32_t other = fan_corner_[s];  // edge (to, apex) is opposite corner 0
-      ax(3 * t) = other, ax(other) = 3 * t;
+    if (cavity_.size() < k) cavity_.resize(2 * k);
+    cavity_[nc] = new_triangle();
+    cavity_[nc + 1] = new_triangle();
+    for (std::size_t j = 0; j < k; ++j) {
+      const std::size_t jn = j + 1 == k ? 0 : j + 1;
+      const Boundary& e = boundary_[j];
+      if (e.to != boundary_[jn].from)
+        throw DelaunayFailure("delaunay_2d: the conflict region's boundary is not a cycle");
+      const std::uint32_t t = cavity_[j], tn = cavity_[jn];
+      V_[3 * t] = e.from, V_[3 * t + 1] = e.to, V_[3 * t + 2] = apex;
+      A_[3 * t + 2] = e.outside, A_[e.outside] = 3 * t + 2;
+      A_[3 * t] = 3 * tn + 1, A_[3 * tn + 1] = 3 * t;  // edge (to, apex) is (apex, from) of the next
+      if (e.from != kInf && e.to != kInf) last_ = t;
     }
   }
 
+  // Bowyer-Watson: the cavity grown depth first from the located triangle,
+  // each triangle's edges in counter-clockwise order, so that the boundary
+  // edges come out in order around the cavity. No marks: the cavity of an
+  // exact Delaunay insertion has no interior vertex, so its triangles form
+  // a tree across their shared edges and none is reached twice (an outside
+  // triangle on two boundary edges is tested twice, with the same answer).
+  // A region with a cycle would be explored without end: bounded by the
+  // triangle count.
   void insert(std::uint32_t v) {
     const Vec2 p = pts_[v];
     const std::uint32_t t0 = locate(p);
     if (!ghost(t0))
       for (int i = 0; i < 3; ++i)
-        if (pts_[vx(3 * t0 + i)] == p) throw DelaunayFailure("delaunay_2d: a duplicate point reached insertion");
-    ++stamp_;
-    const std::uint32_t in = 2 * stamp_, out = 2 * stamp_ + 1;
-    cavity_.clear(), boundary_.clear(), stack_.clear();
-    tri_[t0].mark = in;
-    cavity_.push_back(t0), stack_.push_back(t0);
-    while (!stack_.empty()) {
-      const std::uint32_t t = stack_.back();
-      stack_.pop_back();
-      for (std::uint32_t c = 3 * t; c < 3 * t + 3; ++c) {
-        const std::uint32_t o = ax(c), u = o / 3;
-        if (tri_[u].mark == in) continue;
-        if (tri_[u].mark != out && in_conflict(u, p)) {
-          tri_[u].mark = in;
-          cavity_.push_back(u), stack_.push_back(u);
-        } else {
-          tri_[u].mark = out;
-          boundary_.push_back({vx(next(c)), vx(prev(c)), o});
+        if (pts_[V_[3 * t0 + i]] == p) throw DelaunayFailure("delaunay_2d: a duplicate point reached insertion");
+    std::uint32_t* stack = stack_.data();
+    std::size_t sp = 0, nc = 0, nb = 0;
+    cavity_[nc++] = t0;
+    stack[sp++] = 3 * t0 + 2, stack[sp++] = 3 * t0 + 1, stack[sp++] = 3 * t0;
+    while (sp > 0) {
+      const std::uint32_t c = stack[--sp];
+      const std::uint32_t o = A_[c], u = o / 3;
+      if (in_conflict(u, p)) {
+        if (nc == cavity_.size()) {
+          if (nc > nt_)
+            throw DelaunayFailure("delaunay_2d: the conflict region is not a disc (it surrounds a vertex)");
+          cavity_.resize(2 * nc);
         }
+        cavity_[nc++] = u;
+        if (sp + 2 > stack_.size()) stack_.resize(2 * stack_.size()), stack = stack_.data();
+        stack[sp++] = prev(o), stack[sp++] = next(o);  // next(o)'s edge first
+      } else {
+        if (nb == boundary_.size()) boundary_.resize(2 * nb);
+        boundary_[nb++] = {V_[next(c)], V_[prev(c)], o};
       }
     }
-    fan(v);
+    fan(v, nc, nb);
   }
 
   void build(std::uint32_t third) {
     const std::uint32_t m = static_cast<std::uint32_t>(pts_.size());
-    tri_.clear();
-    tri_.reserve(2 * std::size_t(m) + 8);
-    fan_corner_.assign(std::size_t(m) + 1, 0);
-    fan_stamp_.assign(std::size_t(m) + 1, 0);
+    cap_ = 2 * m - 2;  // with the ghosts: 2(m + 1) - 4
+    tv_.assign(cap_, Triple{});
+    ta_.assign(cap_, Triple{});
+    V_ = tv_.data()->data();
+    A_ = ta_.data()->data();
+    nt_ = 0;
     stamp_ = 0;
     // The first triangle, counter-clockwise, and its three ghosts (a fan
     // around the vertex at infinity).
     std::uint32_t a = 0, b = 1, c = third;
     if (Pred::orient(pts_[a], pts_[b], pts_[c]) < 0) std::swap(b, c);
     const std::uint32_t t = new_triangle();
-    vx(0) = a, vx(1) = b, vx(2) = c;
+    V_[0] = a, V_[1] = b, V_[2] = c;
     cavity_.clear(), boundary_.clear();
-    for (std::uint32_t i = 0; i < 3; ++i) boundary_.push_back({vx(prev(i)), vx(next(i)), i});
-    // fan() expects boundary = cavity + 2: one ghost slot comes from the
-    // cavity list, which here is a fresh triangle.
-    cavity_.push_back(new_triangle());
-    fan(kInf);
+    cavity_.assign(64, 0);
+    stack_.assign(64, 0);
+    boundary_.assign(64, Boundary{});
+    // Its edges seen from outside, in order: c->b, b->a, a->c; fan()
+    // expects boundary = cavity + 2: one ghost slot comes from the cavity
+    // list, which here is a fresh triangle.
+    std::size_t nb = 0;
+    for (const std::uint32_t i : {0u, 2u, 1u}) boundary_[nb++] = {V_[prev(i)], V_[next(i)], i};
+    cavity_[0] = new_triangle();
+    fan(kInf, 1, nb);
     last_ = t;
     // Points 2..third-1 (collinear with the first two) go in after the
     // triangle, like the rest.
@@ -381,22 +433,50 @@ class DelaunayBuilder {
     }
   }
 
-  void emit(DelaunayTriangulation& out) const {
-    const std::uint32_t nt = triangles();
-    std::vector<std::uint32_t> index(nt, kNone);
-    std::uint32_t real = 0;
+  // The output in place: the ghosts' slots filled with the last real
+  // triangles (their neighbours' links moved along), the hull edges' links
+  // set to kNone, vertices to input indices, corners to triangles; the two
+  // arrays then become the output.
+  void emit(DelaunayTriangulation& out) {
+    std::vector<Vec2>().swap(pts_);
+    std::vector<std::uint32_t>().swap(vstamp_);
+    const std::uint32_t nt = nt_;
+    std::uint32_t ghosts = 0;
     for (std::uint32_t t = 0; t < nt; ++t)
-      if (!ghost(t)) index[t] = real++;
-    out.triangles.resize(real);
-    out.neighbors.resize(real);
-    out.hull_edges = nt - real;
-    for (std::uint32_t t = 0; t < nt; ++t) {
-      if (index[t] == kNone) continue;
-      for (int i = 0; i < 3; ++i) {
-        out.triangles[index[t]][i] = rep_[vx(3 * t + i)];
-        out.neighbors[index[t]][i] = index[ax(3 * t + i) / 3];
+      if (ghost(t)) {
+        ++ghosts;
+        for (std::uint32_t i = 3 * t; i < 3 * t + 3; ++i)
+          if (V_[i] == kInf) A_[A_[i]] = kNone;  // the real side of the hull edge
       }
+    const std::uint32_t real = nt - ghosts;
+    std::uint32_t src = real;
+    for (std::uint32_t g = 0; g < real; ++g) {
+      if (!ghost(g)) continue;
+      while (src < nt && ghost(src)) ++src;
+      if (src == nt) throw DelaunayFailure("delaunay_2d: ghost count mismatch");
+      for (std::uint32_t i = 0; i < 3; ++i) {
+        V_[3 * g + i] = V_[3 * src + i];
+        const std::uint32_t c = A_[3 * src + i];
+        A_[3 * g + i] = c;
+        if (c != kNone) A_[c] = 3 * g + i;
+      }
+      ++src;
     }
+    for (std::uint32_t i = 0; i < 3 * real; ++i) {
+      V_[i] = rep_[V_[i]];
+      A_[i] = A_[i] == kNone ? kNone : A_[i] / 3;
+    }
+    std::vector<std::uint32_t>().swap(rep_);
+    tv_.resize(real);
+    ta_.resize(real);
+    if (real < tv_.capacity() / 8 * 7) {  // many hull edges: give the slack back
+      tv_.shrink_to_fit();
+      ta_.shrink_to_fit();
+    }
+    V_ = A_ = nullptr;
+    out.triangles = std::move(tv_);
+    out.neighbors = std::move(ta_);
+    out.hull_edges = ghosts;
   }
 };
 
