@@ -164,13 +164,12 @@ class DelaunayBuilder {
       rep_.reserve(n);
       pts_.reserve(n);
       for (std::size_t k = 0; k < n; ++k) {
-        if (k + 16 < n) __builtin_prefetch(&input[order[k + 16].index]);  // the input, in random order
-        const std::uint32_t i = order[k].index;
-        if (k == 0 || input[i] != input[rep_.back()]) {
-          rep_.push_back(i);
-          pts_.push_back({scaled(input[i].x, shift), scaled(input[i].y, shift)});
+        const Keyed& e = order[k];
+        if (k == 0 || e.p != order[k - 1].p) {
+          rep_.push_back(e.index);
+          pts_.push_back({scaled(e.p.x, shift), scaled(e.p.y, shift)});
         }
-        out.vertex_of[i] = rep_.back();
+        out.vertex_of[e.index] = rep_.back();
       }
     }
     const std::uint32_t m = static_cast<std::uint32_t>(pts_.size());
@@ -188,9 +187,10 @@ class DelaunayBuilder {
   }
 
  private:
-  struct Keyed {
+  struct Keyed {  // the point itself too: the sort and the merge read no input in random order
     std::uint64_t key;
     std::uint32_t index;
+    Vec2 p;
   };
 
   // The input indices in insertion order: by insertion_key, ties by
@@ -205,12 +205,11 @@ class DelaunayBuilder {
     std::vector<Keyed> keyed(n);
     for (std::size_t i = 0; i < n; ++i)
       keyed[i] = {insertion_key(hilbert_index(grid_position(input[i].x, lox, hix), grid_position(input[i].y, loy, hiy))),
-                  static_cast<std::uint32_t>(i)};
-    const auto less = [input](const Keyed& a, const Keyed& b) {
+                  static_cast<std::uint32_t>(i), input[i]};
+    const auto less = [](const Keyed& a, const Keyed& b) {
       if (a.key != b.key) return a.key < b.key;
-      const Vec2 p = input[a.index], q = input[b.index];
-      if (p.x != q.x) return p.x < q.x;
-      if (p.y != q.y) return p.y < q.y;
+      if (a.p.x != b.p.x) return a.p.x < b.p.x;
+      if (a.p.y != b.p.y) return a.p.y < b.p.y;
       return a.index < b.index;
     };
     if (n < 256) {
