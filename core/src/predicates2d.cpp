@@ -5,7 +5,21 @@
 #include <initializer_list>
 #include <vector>
 
+// Boost's big integers (the last exact stage) without coverage
+// instrumentation under clang (the fuzz builds): libFuzzer is steered by
+// this file's own branches, not by the limb loops of a third-party
+// multiplication, which would otherwise dominate a fuzz run's time on
+// huge-beside-tiny inputs. The sanitizers stay on.
+#if defined(__clang__)
+#pragma clang diagnostic push
+#pragma clang diagnostic ignored "-Wignored-attributes"
+#pragma clang attribute push(__attribute__((no_sanitize("coverage"))), apply_to = function)
+#endif
 #include <boost/multiprecision/cpp_int.hpp>
+#if defined(__clang__)
+#pragma clang attribute pop
+#pragma clang diagnostic pop
+#endif
 
 namespace geomcheck {
 

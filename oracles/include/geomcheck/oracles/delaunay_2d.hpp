@@ -1,6 +1,6 @@
 // geomcheck — oracles for delaunay_2d: an exact validity checker and CGAL's
 // Delaunay_triangulation_2, both independent of production's predicates
-// (CGAL's exact Epick predicates and GMP rationals throughout).
+// (CGAL's exact Epick predicates, and exact Mpzf sums for the areas).
 //
 // check_delaunay accepts a result exactly when it is a Delaunay
 // triangulation of the input by the semantics of delaunay_2d.hpp:
