@@ -301,8 +301,12 @@ Q snap_grid(const Q& x, long e) {
 }
 QVec snap_grid(const QVec& v, long e) { return {snap_grid(v.x, e), snap_grid(v.y, e), snap_grid(v.z, e)}; }
 
-/// Touching: a common point and n with h_A(n) + h_B(-n) <= 0, both exact.
-bool try_touching(Ctx& c, const std::vector<QVec>& dirs_in, const std::vector<QVec>& points_in, DistanceResult& r) {
+// The directions tried for a touching certificate (and for an undecided
+// pair's lower bound): the searched ones, the shapes' feature directions and
+// their cross products, the coordinate axes and the features crossed with
+// them, the line of centres and its parts across each feature, and the
+// searched directions snapped to doubles and to floats.
+std::vector<QVec> touching_directions(const Ctx& c, const std::vector<QVec>& dirs_in) {
   std::vector<QVec> dirs = dirs_in;
   const auto fa = feature_directions(c.A), fb = feature_directions(c.B);
   dirs.insert(dirs.end(), fa.begin(), fa.end());
@@ -331,6 +335,12 @@ bool try_touching(Ctx& c, const std::vector<QVec>& dirs_in, const std::vector<QV
     dirs.push_back(to_q(u));
     dirs.push_back(to_q(Vec3{static_cast<float>(u.x), static_cast<float>(u.y), static_cast<float>(u.z)}));
   }
+  return dirs;
+}
+
+/// Touching: a common point and n with h_A(n) + h_B(-n) <= 0, both exact.
+bool try_touching(Ctx& c, const std::vector<QVec>& dirs_in, const std::vector<QVec>& points_in, DistanceResult& r) {
+  const std::vector<QVec> dirs = touching_directions(c, dirs_in);
   std::optional<QVec> n_ok;
   for (const QVec& n : dirs) {
     if (is_zero(n)) continue;
@@ -373,6 +383,58 @@ bool try_touching(Ctx& c, const std::vector<QVec>& dirs_in, const std::vector<QV
 
 enum class Round { Decided, Tiny, Open };
 
+// Undecided with the loosest certified enclosure: the inner points bound
+// the distance from above, the support of A - B along any direction bounds
+// the depth.
+DistanceResult loose_enclosure(const Ctx& c) {
+  DistanceResult r;
+  r.verdict = Verdict::Undecided;
+  const QVec d = inner_point(c.A) - inner_point(c.B);
+  const QVec n{1, 0, 0}, m{-1, 0, 0};
+  const QInterval h = support_value(c.A, n) + support_value(c.B, m);
+  r.distance = {Q(-h.hi), sqrt_interval(dot(d, d)).hi};
+  return r;
+}
+
+// An undecided pair's enclosure from what the searches found: any a in A
+// and b in B bound the signed distance from above by |a - b|, and any
+// direction n from below by -(h_A(n) + h_B(-n)) / |n| (the signed distance
+// is the largest such value). Where no certificate exists (a contact at an
+// irrational point, a flat Minkowski difference), the search's directions
+// and witnesses still enclose the distance about as narrowly as the search
+// came near it. A witness the rounding left just outside its shape is
+// pulled towards the shape's inner point by 2^-260, 2^-230, then 2^-210
+// of the way, until it is inside (checked exactly).
+void narrow_undecided(const Ctx& c, const std::vector<QVec>& dirs_in, const std::vector<QVec>& pts, DistanceResult& r) {
+  for (const QVec& n : touching_directions(c, dirs_in)) {
+    if (is_zero(n)) continue;
+    const QInterval h = (support_value(c.A, n) + support_value(c.B, Q(-1) * n)) / sqrt_interval(dot(n, n));
+    if (Q(-h.hi) > r.distance.lo) r.distance.lo = -h.hi;
+  }
+  const QVec ia = inner_point(c.A), ib = inner_point(c.B);
+  for (std::size_t i = 0; i + 1 < pts.size(); i += 2) {  // (witness in A, witness in B) per round
+    for (const int k : {0, 260, 230, 210}) {
+      QVec a = pts[i], b = pts[i + 1];
+      if (k > 0) {
+        const Q t = Q(1) / Q(mp::mpz_int(1) << k);
+        a = a + t * (ia - a);
+        b = b + t * (ib - b);
+      }
+      bool in = false;
+      try {
+        in = (c.trust || contains(c.A, a)) && contains(c.B, b);
+      } catch (const std::exception&) {
+        in = false;
+      }
+      if (!in) continue;
+      const QVec d = a - b;
+      const Q up = sqrt_interval(dot(d, d)).hi;
+      if (up < r.distance.hi) r.distance.hi = up;
+      break;
+    }
+  }
+}
+
 template <class T>
 Round search_round(Ctx& c, DistanceResult& r, std::vector<QVec>& dirs, std::vector<QVec>& pts, Q& dist_est) {
   const int bits = bits_of<T>();
@@ -398,6 +460,10 @@ Round search_round(Ctx& c, DistanceResult& r, std::vector<QVec>& dirs, std::vect
     const QVec n = exact_q(-s.closest);
     dirs.push_back(n);
     if (certify_separation_q(c, n, r, bits)) return Round::Decided;
+  } else if (g.status == GjkStatus::Contact && !s.v.empty()) {
+    // Within contact distance: no separation to certify, but the direction
+    // bounds the depth of an undecided pair (narrow_undecided).
+    dirs.push_back(exact_q(-s.closest));
   }
   r.witness_a.reset();
   r.witness_b.reset();
@@ -551,6 +617,7 @@ const char* to_string(Stage s) {
     case Stage::DoubleDouble: return "double-double";
     case Stage::Soft128: return "128 digits";
     case Stage::Soft384: return "384 digits";
+    case Stage::Soft512: return "512 digits";
     case Stage::Touching: return "touching";
     case Stage::Undecided: return "undecided";
   }
@@ -619,6 +686,20 @@ DistanceResult decide(const ConvexShape& a, const ConvexShape& b, const EngineOp
     if (rd != Round::Decided) stage = Stage::Soft384, rd = search_round<HP384>(c, r, dirs, pts, est);
     if (rd != Round::Decided) stage = Stage::Touching;
     if (rd != Round::Decided && try_touching(c, dirs, pts, r)) rd = Round::Decided;
+    // Still undecided, and the searches so far enclose the distance no
+    // narrower than 2^-200 * scale (384 digits stall near 2^-192 * scale at
+    // a curved contact): 512 digits to 2^-204 * scale, then touching again.
+    if (rd != Round::Decided && !dd_answer) {
+      DistanceResult probe = loose_enclosure(c);
+      narrow_undecided(c, dirs, pts, probe);
+      if (probe.distance.hi - probe.distance.lo > c.scale / Q(mp::mpz_int(1) << 200)) {
+        // The searches stop at a wanted width: here 2^-204 * scale, so that
+        // the enclosure they leave is within 2^-200 * scale.
+        c.width = c.scale / Q(mp::mpz_int(1) << 204);
+        stage = Stage::Soft512, rd = search_round<HP512>(c, r, dirs, pts, est);
+        if (rd != Round::Decided && try_touching(c, dirs, pts, r)) rd = Round::Decided, stage = Stage::Touching;
+      }
+    }
     if (rd == Round::Decided && dd_answer && dd_answer->verdict == r.verdict &&
         dd_answer->distance.hi - dd_answer->distance.lo < r.distance.hi - r.distance.lo)
       r = *dd_answer;
@@ -632,15 +713,10 @@ DistanceResult decide(const ConvexShape& a, const ConvexShape& b, const EngineOp
     c.note << " unsupported: " << e.what();
   }
   if (rd != Round::Decided) {
-    // Loose but certified: the inner points bound the distance from above,
-    // the support of A - B along any direction bounds the depth.
-    r = DistanceResult{};
-    r.verdict = Verdict::Undecided;
+    // Certified: the loose enclosure, narrowed by what the searches found.
+    r = loose_enclosure(c);
     reached(Stage::Undecided);
-    const QVec d = inner_point(a) - inner_point(b);
-    const QVec n{1, 0, 0}, m{-1, 0, 0};
-    const QInterval h = support_value(a, n) + support_value(b, m);
-    r.distance = {Q(-h.hi), sqrt_interval(dot(d, d)).hi};
+    narrow_undecided(c, dirs, pts, r);
     c.note << (rd == Round::Tiny ? " |distance| < 2^-200 scale" : " search did not converge")
            << " (estimate " << to_double(est) << ")";
   }

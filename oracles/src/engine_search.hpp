@@ -22,6 +22,7 @@ namespace geomcheck::oracle::search {
 namespace mp = boost::multiprecision;
 using HP128 = mp::number<mp::cpp_bin_float<128, mp::digit_base_2>, mp::et_off>;
 using HP384 = mp::number<mp::cpp_bin_float<384, mp::digit_base_2>, mp::et_off>;
+using HP512 = mp::number<mp::cpp_bin_float<512, mp::digit_base_2>, mp::et_off>;
 
 template <class T> inline T from_q(const Q& q) { return q.template convert_to<T>(); }
 template <> inline double from_q<double>(const Q& q) { return mpq_get_d(q.backend().data()); }

@@ -469,6 +469,7 @@ struct Stats {
   int pairs = 0;
   int truth_sep = 0, truth_touch = 0, truth_over = 0;
   int undecided_at_contact = 0;
+  int undecided_narrow_checked = 0;  // Undecided results held to the 2^-200 * scale width
   int by_filter = 0;
   int forged_dirs = 0, forged_dirs_rejected = 0;
   int forged_overlap = 0, forged_overlap_rejected = 0;
@@ -480,10 +481,10 @@ struct Stats {
   void print(const char* name) const {
     std::printf(
         "[%s] pairs %d (truth: %d separated, %d touching, %d overlapping), %d decided by the filter, %d undecided at "
-        "exact contact; genuine certificates %d; forged directions %d (%d rejected), forged overlap certificates %d "
+        "exact contact (%d undecided held to 2^-200 * scale wide); genuine certificates %d; forged directions %d (%d rejected), forged overlap certificates %d "
         "(%d rejected), forged common points %d (%d rejected); CGAL direct distances %d; penetration depths %d (%d "
         "wider than 1e-6 relative); engine %.0f ms, CGAL truth %.0f ms, certificate checks %.0f ms\n",
-        name, pairs, truth_sep, truth_touch, truth_over, by_filter, undecided_at_contact, genuine_certs, forged_dirs,
+        name, pairs, truth_sep, truth_touch, truth_over, by_filter, undecided_at_contact, undecided_narrow_checked, genuine_certs, forged_dirs,
         forged_dirs_rejected, forged_overlap, forged_overlap_rejected, forged_points, forged_points_rejected,
         d2_direct_checked, penetrations, penetration_wide, engine_ms, truth_ms, cert_ms);
   }
@@ -506,6 +507,11 @@ void check_result(const DistanceResult& r, const Truth& t, const Q& scale, Stats
   const Q& lo = r.distance.lo;
   const Q& hi = r.distance.hi;
   EXPECT_LE(lo, hi) << "empty distance interval";
+  // Undecided is narrow: its enclosure no wider than 2^-200 * scale.
+  if (r.verdict == Verdict::Undecided) {
+    ++st.undecided_narrow_checked;
+    EXPECT_LE(hi - lo, tiny) << "Undecided with an enclosure wider than 2^-200 * scale";
+  }
   if (!t.intersect) {
     // Signed distance d = sqrt(d2) > 0: lo <= d <= hi.
     const bool contains = (lo <= 0 || lo * lo <= t.d2) && hi >= 0 && t.d2 <= hi * hi;

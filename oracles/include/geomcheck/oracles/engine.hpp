@@ -24,13 +24,20 @@
 //                direction n with h_A(n) + h_B(-n) <= 0 (exactly): the
 //                signed distance is exactly zero.
 //   Undecided    only when the search puts |distance| below 2^-200 * scale
-//                and neither touching certificate could be built.
+//                and neither touching certificate could be built (a contact
+//                at a point with no short binary expansion). The enclosure
+//                is then built from what the searches found (witness pairs
+//                pulled into the shapes: distance <= |a - b|; directions:
+//                signed distance >= -(h_A(n) + h_B(-n)) / |n|), after a
+//                512-digit search where the 384-digit one left it wider
+//                than 2^-200 * scale; EngineHand.UndecidedIsNarrow holds it
+//                to that width.
 //
 // A floating-point filter (GJK in doubles, certificates checked in interval
 // arithmetic on doubles with outward rounding) runs first; the rational
 // machinery runs only where the filter cannot decide. Then the search is
 // repeated in 128 and 384 binary digits (cpp_bin_float), each result again
-// certified in rationals.
+// certified in rationals (and in 512 digits for a pair still undecided).
 //
 // Signed distance: positive = Euclidean distance between the shapes,
 // negative = minus the penetration depth (the shortest translation that
@@ -211,6 +218,8 @@ enum class Stage : int {
   DoubleDouble,  ///< a search in double-double, certified in rationals
   Soft128,       ///< a search in 128-digit software floats, certified in rationals
   Soft384,       ///< the same in 384 digits
+  Soft512,       ///< the same in 512 digits: only for a pair still undecided, whose
+                 ///< enclosure the earlier searches left wider than 2^-200 * scale
   Touching,      ///< exact touching, found among snapped candidates
   Undecided,     ///< no stage decided: a loose certified enclosure
 };
