@@ -460,10 +460,6 @@ Round search_round(Ctx& c, DistanceResult& r, std::vector<QVec>& dirs, std::vect
     const QVec n = exact_q(-s.closest);
     dirs.push_back(n);
     if (certify_separation_q(c, n, r, bits)) return Round::Decided;
-  } else if (g.status == GjkStatus::Contact && !s.v.empty()) {
-    // Within contact distance: no separation to certify, but the direction
-    // bounds the depth of an undecided pair (narrow_undecided).
-    dirs.push_back(exact_q(-s.closest));
   }
   r.witness_a.reset();
   r.witness_b.reset();
