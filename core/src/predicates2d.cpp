@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <initializer_list>
 #include <vector>
 
@@ -193,6 +195,52 @@ int two_products_diff(double p, double q, double r, double s, double* out) {
   two_prod(r, s, b[1], b[0]);
   b[0] = -b[0], b[1] = -b[1];
   return sum_zeroelim(2, a, 2, b, out);
+}
+
+// ---- small grids: the six differences exact and integer multiples of one
+// power of two 2^g, where 2^(g+11) <= max |difference| < 2^(g+12). Divided
+// by 2^g (a power of two: exact unless the result underflows, and an
+// underflowing result is zero or subnormal, so it fails the integer test
+// below or is a zero from a non-zero difference, which is refused) they
+// are integers k below 2^12 in magnitude, so every product is below
+// 2^24, every 2x2 minor and lift below 2^25, every lift times minor below
+// 2^50 and the determinant below 3 * 2^50 < 2^53: all integers that
+// doubles hold exactly, so the determinant of the k's is computed exactly,
+// and its sign (the determinant scaled by 2^-4g) is the answer. Integer
+// grids, the common degenerate input, pass at the cost of a few operations
+// per coordinate (the general check below costs several times more).
+bool incircle_small_grid(Vec2 a, Vec2 b, Vec2 c, Vec2 d, int& sign) {
+  double v[6];
+  const double p[6] = {a.x, a.y, b.x, b.y, c.x, c.y}, q[6] = {d.x, d.y, d.x, d.y, d.x, d.y};
+  double m = 0;
+  for (int i = 0; i < 6; ++i) {
+    double err;
+    two_sum(p[i], -q[i], v[i], err);
+    if (err != 0 || !std::isfinite(v[i])) return false;
+    m = std::max(m, std::fabs(v[i]));
+  }
+  if (m == 0) return false;  // four equal points: left to the general stages
+  std::uint64_t bits;
+  std::memcpy(&bits, &m, sizeof bits);
+  const int biased = static_cast<int>(bits >> 52);  // m >= 0: no sign bit
+  if (biased == 0) return false;                    // subnormal
+  const int g = biased - 1023 - 11;
+  if (g < -1022 || g > 1022) return false;
+  const std::uint64_t scale_bits = static_cast<std::uint64_t>(1023 - g) << 52;
+  double scale;  // 2^-g
+  std::memcpy(&scale, &scale_bits, sizeof scale);
+  double k[6];
+  for (int i = 0; i < 6; ++i) {
+    const double t = v[i] * scale;  // |t| < 2^12
+    const double r = (t + 0x1.8p52) - 0x1.8p52;  // t rounded to an integer (|t| < 2^51)
+    if (r != t || (t == 0 && v[i] != 0)) return false;
+    k[i] = t;
+  }
+  const double adx = k[0], ady = k[1], bdx = k[2], bdy = k[3], cdx = k[4], cdy = k[5];
+  const double alift = adx * adx + ady * ady, blift = bdx * bdx + bdy * bdy, clift = cdx * cdx + cdy * cdy;
+  const double det = alift * (bdx * cdy - cdx * bdy) + blift * (cdx * ady - adx * cdy) + clift * (adx * bdy - bdx * ady);
+  sign = det > 0 ? 1 : (det < 0 ? -1 : 0);
+  return true;
 }
 
 // ---- exact in doubles: the filter's own evaluation, each operation checked
@@ -478,6 +526,7 @@ int orient2d_exact(Vec2 a, Vec2 b, Vec2 c) {
 
 int incircle_exact(Vec2 a, Vec2 b, Vec2 c, Vec2 d) {
   int sd;
+  if (incircle_small_grid(a, b, c, d, sd)) return sd;
   if (incircle_in_doubles(a, b, c, d, sd)) return sd;
   const int sr = incircle_rescaled(a, b, c, d);
   if (sr != 2) return sr;

@@ -280,6 +280,50 @@ TEST(Delaunay2d, HardCases) {
   EXPECT_EQ(geomcheck::delaunay_2d(Points{}).dimension, geomcheck::DelaunayDimension::empty);
 }
 
+TEST(Delaunay2d, GridsAtEveryScaleAndBesideHugePoints) {
+  // Integer grids scaled by powers of two across the range (the exact
+  // in-circle stage for small grids scales differences by a power of two),
+  // alone and beside points 2^+-900 away in scale, where a tiny difference
+  // scaled down underflows; and the lattice points of a circle with its
+  // centre (one conflict region of every triangle).
+  for (const int e : {-1074, -1060, -1000, -953, -700, -300, -60, 0, 40, 300, 700, 960}) {
+    Points p;
+    for (int i = 0; i < 12; ++i)
+      for (int j = 0; j < 12; ++j) p.push_back({std::ldexp(i, e), std::ldexp(j, e)});
+    expect_valid(p, ("grid 12x12 x2^" + std::to_string(e)).c_str());
+    for (int i = 0; i < 4; ++i)
+      for (int j = 0; j < 4; ++j) p.push_back({std::ldexp(i + 1, e > 0 ? -900 : 898), std::ldexp(j, e > 0 ? -900 : 898)});
+    expect_valid(p, ("grid 12x12 x2^" + std::to_string(e) + " beside 4x4 at the other end").c_str());
+  }
+  // The set that caught a small-grid stage taking an underflowed difference for 0.
+  const Points mixed{{0, 0},
+                     {0, 0x0.0000000000002p-1022},
+                     {0, 0x1p+898},
+                     {0x1p-953, 0},
+                     {0x1p+897, 0x1p+897},
+                     {0x0.0000000000002p-1022, 0x0.0000000000004p-1022},
+                     {0x1p+898, 0},
+                     {0x0.0000000000004p-1022, 0x0.0000000000002p-1022},
+                     {0x1p+898, 0x1p+898},
+                     {0x0.0000000000006p-1022, 0},
+                     {0x1.8p+898, 0x1p+897},
+                     {0x1.8p-955, 0x1p-955},
+                     {0x1p+899, 0},
+                     {0x1p-954, 0x1p-956},
+                     {0x1p+927, 0x1p+926}};
+  expect_valid(mixed, "huge, tiny and subnormal grid points");
+  Points circle{{0, 0}};
+  for (int x = -5525; x <= 5525; ++x) {
+    const double y = std::sqrt(5525.0 * 5525.0 - double(x) * x);
+    if (y == std::floor(y)) {
+      circle.push_back({double(x), y});
+      if (y != 0) circle.push_back({double(x), -y});
+    }
+  }
+  ASSERT_GT(circle.size(), 40u);
+  expect_valid(circle, "lattice points of a circle and its centre");
+}
+
 TEST(Delaunay2d, SeedsAndRegressionsReplay) {
   int files = 0;
   for (const char* folder : {"seeds", "regressions"}) {
