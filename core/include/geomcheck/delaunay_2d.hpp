@@ -21,11 +21,15 @@
 // depend on the order of the input, and exact translations and scalings by
 // powers of two (no overflow, no underflow) give the same index triples.
 //
-// Algorithm: spatial sort along a Hilbert curve; Bowyer-Watson insertion
-// (cavity of triangles in conflict, re-triangulated as a fan around the
-// new point) on a triangulation closed by ghost triangles through a vertex
-// at infinity (the hull is updated by the same code); point location by a
-// remembering stochastic visibility walk from the last new triangle.
+// Algorithm: spatial sort along a Hilbert curve in rounds of a biased
+// randomized insertion order (a counting sort on the key's leading bits);
+// Bowyer-Watson insertion (the cavity of triangles in conflict, grown depth
+// first so that its boundary comes out in order, re-triangulated as a fan
+// around the new point) on a triangulation closed by ghost triangles
+// through a vertex at infinity (the hull is updated by the same code);
+// point location by a visibility walk from the last new triangle (which
+// cannot cycle on a Delaunay triangulation). The triangles live in two arrays shaped like the output
+// (vertices, neighbours), compacted in place and moved into the result.
 // Predicates: orient2d and incircle of predicates2d.hpp (exact), so every
 // decision is exact and the structure cannot become inconsistent.
 #pragma once

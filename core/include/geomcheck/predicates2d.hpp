@@ -6,6 +6,9 @@
 //      iccerrboundA, which cover the rounding of the differences as well);
 //      it answers when the computed value is farther from zero than the
 //      bound and nothing overflowed or underflowed;
+//   (then, out of line, evaluations in doubles where they are shown to be
+//   exact: the in-circle differences small integer multiples of one power
+//   of two, or every operation of the filter's evaluation error-free;)
 //   2. the same filter on each difference vector scaled by its own power of
 //      two (and the in-circle lifts by one more), every pivot in turn, with
 //      an absolute slack for underflow, so that a set's scale and
