@@ -165,18 +165,22 @@ class DelaunayBuilder {
     {
       // Merge duplicates (adjacent in the sorted order).
       const std::vector<Keyed> order = sorted_order(input, n, lox, hix, loy, hiy);
-      rep_.clear();
-      pts_.clear();
-      rep_.reserve(n);
-      pts_.reserve(n);
+      rep_.assign(n, 0);
+      pts_.assign(n, Vec2{});
+      std::uint32_t* rep = rep_.data();
+      Vec2* pts = pts_.data();
+      std::size_t m = 0;
       for (std::size_t k = 0; k < n; ++k) {
         const Keyed& e = order[k];
         if (k == 0 || e.p != order[k - 1].p) {
-          rep_.push_back(e.index);
-          pts_.push_back({scaled(e.p.x, shift), scaled(e.p.y, shift)});
+          rep[m] = e.index;
+          pts[m].x = scaled(e.p.x, shift), pts[m].y = scaled(e.p.y, shift);
+          ++m;
         }
-        out.vertex_of[e.index] = rep_.back();
+        out.vertex_of[e.index] = rep[m - 1];
       }
+      rep_.resize(m);
+      pts_.resize(m);
     }
     const std::uint32_t m = static_cast<std::uint32_t>(pts_.size());
     out.vertex_count = m;
