@@ -1,4 +1,5 @@
 #include "geomcheck/collide_cylinder_capsule.hpp"
+#include "geomcheck/collide_many.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -268,6 +269,22 @@ bool overlap(const Cylinder& cyl, const Capsule& cap) {
 
 Contact collide(const Cylinder& cyl, const Capsule& cap) {
   return detail::collide_rescaled(cyl, cap, [](const Cylinder& c, const Capsule& k) { return collide_scaled(c, k); });
+}
+
+void overlap_many(const Cylinder& cyl, const Capsule* b, std::size_t n, bool* out) {
+  if (!is_valid(cyl)) {
+    std::fill(out, out + n, false);
+    return;
+  }
+  for (std::size_t i = 0; i < n; ++i) out[i] = overlap(cyl, b[i]);
+}
+
+void collide_many(const Cylinder& cyl, const Capsule* b, std::size_t n, Contact* out) {
+  if (!is_valid(cyl)) {
+    std::fill(out, out + n, Contact{});
+    return;
+  }
+  for (std::size_t i = 0; i < n; ++i) out[i] = collide(cyl, b[i]);
 }
 
 }  // namespace geomcheck

@@ -1,4 +1,5 @@
 #include "geomcheck/collide_cylinder_obb.hpp"
+#include "geomcheck/collide_many.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -398,6 +399,22 @@ bool overlap(const Cylinder& cyl, const Obb& box) {
 
 Contact collide(const Cylinder& cyl, const Obb& box) {
   return detail::collide_with_stage(cyl, box, detail::ObbCapStage::Exact);
+}
+
+void overlap_many(const Cylinder& cyl, const Obb* b, std::size_t n, bool* out) {
+  if (!is_valid(cyl)) {
+    std::fill(out, out + n, false);
+    return;
+  }
+  for (std::size_t i = 0; i < n; ++i) out[i] = overlap(cyl, b[i]);
+}
+
+void collide_many(const Cylinder& cyl, const Obb* b, std::size_t n, Contact* out) {
+  if (!is_valid(cyl)) {
+    std::fill(out, out + n, Contact{});
+    return;
+  }
+  for (std::size_t i = 0; i < n; ++i) out[i] = collide(cyl, b[i]);
 }
 
 }  // namespace geomcheck

@@ -1,4 +1,5 @@
 #include "geomcheck/collide_cylinder_sphere.hpp"
+#include "geomcheck/collide_many.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -18,7 +19,10 @@ namespace {
 struct Axial {
   Vec3 d, m;
   double dd, t, cr2, en;
-  Axial(const Cylinder& c, const Sphere& s) : d(c.q - c.p), m(s.c - c.p) {
+  Axial(const Cylinder& c, const Sphere& s) : Axial(c.q - c.p, s.c - c.p) {}
+  // From the axis d and the centre's offset m from p (overlap_many forms d
+  // once per batch: the same operations as the constructor above).
+  Axial(const Vec3& axis, const Vec3& offset) : d(axis), m(offset) {
     dd = dot(d, d);
     t = dot(m, d);
     const Vec3 x = cross(m, d);
@@ -212,6 +216,60 @@ struct Rescaled {
 }
 
 }  // namespace
+
+void overlap_many(const Cylinder& cyl, const Sphere* b, std::size_t n, bool* out) {
+  if (!is_valid(cyl)) {
+    std::fill(out, out + n, false);
+    return;
+  }
+  // overlap()'s own arithmetic (Axial: safe, meets), with the axis, d.d and
+  // r^2 d.d formed once and both sides of meets' branch evaluated, so that
+  // the loop has no data-dependent branch. A sphere outside the range where
+  // that arithmetic needs no rescaling (Axial::safe, or a little narrower),
+  // or invalid, is marked and answered by the scalar query in a second pass.
+  const Vec3 p = cyl.p, d = cyl.q - cyl.p;
+  const double dd = dot(d, d), r = cyl.r, rrdd = r * r * dd;
+  const bool axis_safe = dd >= 0x1p-600 && dd <= 0x1p+600 && r <= 0x1p+200;
+  // Element i's verdict by the batch arithmetic; `fast` false where the
+  // scalar query must answer instead.
+  const auto batch = [&](const Sphere& s, bool& fast) {
+    const Vec3 m = s.c - p;
+    const double t = dot(m, d);
+    const Vec3 x = cross(m, d);
+    const double cr2 = dot(x, x);
+    const double en = t < 0 ? -t : (t > dd ? t - dd : 0.0);
+    const bool inside_radius = cr2 <= rrdd;
+    const bool meets_inside = en * en <= s.r * s.r * dd;
+    const double er = std::sqrt(cr2 / dd) - r;
+    const bool meets_outside = en * en / dd + er * er <= s.r * s.r;
+    // Within Axial::safe, and a finite centre (a NaN or infinite coordinate
+    // makes t NaN or infinite).
+    fast = axis_safe & (cr2 <= 0x1p+1000) & (en <= 0x1p+500) & (s.r <= 0x1p+200) & (s.r >= 0) &
+           (std::fabs(t) <= 0x1p+1000);
+    return (inside_radius & meets_inside) | (!inside_radius & meets_outside);
+  };
+  bool all_fast = true;
+  for (std::size_t i = 0; i < n; ++i) {
+    bool fast;
+    const bool hit = batch(b[i], fast);
+    all_fast &= fast;
+    out[i] = fast & hit;
+  }
+  if (all_fast) return;
+  for (std::size_t i = 0; i < n; ++i) {
+    bool fast;
+    batch(b[i], fast);
+    if (!fast) out[i] = overlap(cyl, b[i]);
+  }
+}
+
+void collide_many(const Cylinder& cyl, const Sphere* b, std::size_t n, Contact* out) {
+  if (!is_valid(cyl)) {
+    std::fill(out, out + n, Contact{});
+    return;
+  }
+  for (std::size_t i = 0; i < n; ++i) out[i] = collide(cyl, b[i]);
+}
 
 bool overlap(const Cylinder& cyl, const Sphere& s) {
   if (!is_valid(cyl) || !is_valid(s)) return false;
