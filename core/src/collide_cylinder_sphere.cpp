@@ -5,6 +5,10 @@
 #include <cmath>
 #include <limits>
 
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
 #include "geomcheck/detail/frame.hpp"
 
 namespace geomcheck {
@@ -249,7 +253,51 @@ void overlap_many(const Cylinder& cyl, const Sphere* b, std::size_t n, bool* out
     return (inside_radius & meets_inside) | (!inside_radius & meets_outside);
   };
   bool all_fast = true;
-  for (std::size_t i = 0; i < n; ++i) {
+  std::size_t i = 0;
+#if defined(__SSE2__)
+  // Two spheres at a time: the same operations on each lane as `batch`
+  // (dot and cross in vec3.hpp's order, the same products and quotients),
+  // so every lane's verdict is batch's, bit for bit.
+  {
+    const __m128d px = _mm_set1_pd(p.x), py = _mm_set1_pd(p.y), pz = _mm_set1_pd(p.z);
+    const __m128d dx = _mm_set1_pd(d.x), dy = _mm_set1_pd(d.y), dz = _mm_set1_pd(d.z);
+    const __m128d ddv = _mm_set1_pd(dd), rrddv = _mm_set1_pd(rrdd), rv = _mm_set1_pd(r), zero = _mm_setzero_pd();
+    const __m128d big_cr2 = _mm_set1_pd(0x1p+1000), big_en = _mm_set1_pd(0x1p+500), big_r = _mm_set1_pd(0x1p+200);
+    const __m128d abs_mask = _mm_castsi128_pd(_mm_set1_epi64x(0x7FFFFFFFFFFFFFFFll));
+    const __m128d axis_ok = axis_safe ? _mm_castsi128_pd(_mm_set1_epi64x(-1)) : zero;
+    for (; i + 2 <= n; i += 2) {
+      const Sphere& s0 = b[i];
+      const Sphere& s1 = b[i + 1];
+      const __m128d mx = _mm_sub_pd(_mm_set_pd(s1.c.x, s0.c.x), px);
+      const __m128d my = _mm_sub_pd(_mm_set_pd(s1.c.y, s0.c.y), py);
+      const __m128d mz = _mm_sub_pd(_mm_set_pd(s1.c.z, s0.c.z), pz);
+      const __m128d sr = _mm_set_pd(s1.r, s0.r);
+      const __m128d t = _mm_add_pd(_mm_add_pd(_mm_mul_pd(mx, dx), _mm_mul_pd(my, dy)), _mm_mul_pd(mz, dz));
+      const __m128d xx = _mm_sub_pd(_mm_mul_pd(my, dz), _mm_mul_pd(mz, dy));
+      const __m128d xy = _mm_sub_pd(_mm_mul_pd(mz, dx), _mm_mul_pd(mx, dz));
+      const __m128d xz = _mm_sub_pd(_mm_mul_pd(mx, dy), _mm_mul_pd(my, dx));
+      const __m128d cr2 = _mm_add_pd(_mm_add_pd(_mm_mul_pd(xx, xx), _mm_mul_pd(xy, xy)), _mm_mul_pd(xz, xz));
+      // en = t < 0 ? -t : (t > dd ? t - dd : 0)
+      const __m128d neg = _mm_cmplt_pd(t, zero), beyond = _mm_cmpgt_pd(t, ddv);
+      const __m128d past = _mm_and_pd(beyond, _mm_sub_pd(t, ddv));
+      const __m128d en = _mm_or_pd(_mm_and_pd(neg, _mm_sub_pd(zero, t)), _mm_andnot_pd(neg, past));
+      const __m128d inside = _mm_cmple_pd(cr2, rrddv);
+      const __m128d en2 = _mm_mul_pd(en, en), sr2 = _mm_mul_pd(sr, sr);
+      const __m128d meets_in = _mm_cmple_pd(en2, _mm_mul_pd(sr2, ddv));
+      const __m128d er = _mm_sub_pd(_mm_sqrt_pd(_mm_div_pd(cr2, ddv)), rv);
+      const __m128d meets_out = _mm_cmple_pd(_mm_add_pd(_mm_div_pd(en2, ddv), _mm_mul_pd(er, er)), sr2);
+      const __m128d fast = _mm_and_pd(
+          _mm_and_pd(_mm_and_pd(axis_ok, _mm_cmple_pd(cr2, big_cr2)), _mm_and_pd(_mm_cmple_pd(en, big_en), _mm_cmple_pd(sr, big_r))),
+          _mm_and_pd(_mm_cmpge_pd(sr, zero), _mm_cmple_pd(_mm_and_pd(t, abs_mask), big_cr2)));
+      const __m128d hit = _mm_or_pd(_mm_and_pd(inside, meets_in), _mm_andnot_pd(inside, meets_out));
+      const int f = _mm_movemask_pd(fast), h = _mm_movemask_pd(_mm_and_pd(fast, hit));
+      all_fast &= f == 3;
+      out[i] = (h & 1) != 0;
+      out[i + 1] = (h & 2) != 0;
+    }
+  }
+#endif
+  for (; i < n; ++i) {
     bool fast;
     const bool hit = batch(b[i], fast);
     all_fast &= fast;

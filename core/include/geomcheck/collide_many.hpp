@@ -13,10 +13,11 @@
 // (the contact) flavours over a span. overlap_many(Cylinder, Sphere*) is a
 // batch kernel: the cylinder's axis d = q - p, d.d and r^2 d.d are formed
 // once, then each sphere runs the scalar predicate's own arithmetic on them
-// (the same inline code: collide_cylinder_sphere.cpp), so the verdicts are
-// the scalar ones; a sphere or axis outside the range where that arithmetic
-// is exact enough (the scalar query rescales there) is answered by the
-// scalar query itself. The other list queries call the scalar query per
+// (the same operations in the same order: collide_cylinder_sphere.cpp; two
+// spheres at a time in SSE2 where the target has it), so the verdicts are
+// the scalar ones; a sphere or axis outside the range where the scalar
+// query needs no rescaling, or an invalid sphere, is answered by the scalar
+// query itself. The other list queries call the scalar query per
 // element after validating the cylinder once (their cost is the query's,
 // not the call's).
 //
