@@ -685,7 +685,7 @@ DistanceResult decide(const ConvexShape& a, const ConvexShape& b, const EngineOp
     // Still undecided, and the searches so far enclose the distance no
     // narrower than 2^-200 * scale (384 digits stall near 2^-192 * scale at
     // a curved contact): 512 digits to 2^-204 * scale, then touching again.
-    if (rd != Round::Decided && !dd_answer) {
+    if (rd != Round::Decided && !dd_answer && opt.narrow_undecided) {
       DistanceResult probe = loose_enclosure(c);
       narrow_undecided(c, dirs, pts, probe);
       if (probe.distance.hi - probe.distance.lo > c.scale / Q(mp::mpz_int(1) << 200)) {
@@ -712,7 +712,7 @@ DistanceResult decide(const ConvexShape& a, const ConvexShape& b, const EngineOp
     // Certified: the loose enclosure, narrowed by what the searches found.
     r = loose_enclosure(c);
     reached(Stage::Undecided);
-    narrow_undecided(c, dirs, pts, r);
+    if (opt.narrow_undecided) narrow_undecided(c, dirs, pts, r);
     c.note << (rd == Round::Tiny ? " |distance| < 2^-200 scale" : " search did not converge")
            << " (estimate " << to_double(est) << ")";
   }

@@ -440,6 +440,7 @@ ImpactResult time_of_impact(const ConvexShape& moving, const QVec& delta, const 
   std::ostringstream note;
   EngineOptions opt;
   opt.double_double = double_double;
+  opt.narrow_undecided = false;  // only the verdicts are read below
   const DistanceResult start = classify(moving, b, opt);
   if (start.verdict == Verdict::Overlapping || start.verdict == Verdict::Touching) {
     out.kind = ImpactResult::Kind::StartsInside;

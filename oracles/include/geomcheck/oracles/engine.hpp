@@ -151,6 +151,11 @@ struct EngineOptions {
   /// negative: never); unset: always. One call then does what a verdict
   /// call followed by a refining call would.
   std::optional<Q> refine_overlap_within;
+  /// An undecided pair's enclosure narrowed from the searches (and a
+  /// 512-digit search where 384 digits left it wider than 2^-200 * scale).
+  /// Off for callers that read only the verdict (time_of_impact): the
+  /// enclosure is then the loose one, from the inner points.
+  bool narrow_undecided = true;
 };
 
 struct DistanceResult {
