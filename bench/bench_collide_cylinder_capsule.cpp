@@ -16,14 +16,6 @@ constexpr char kDepthNote[] = "shallow: production's is the minimum, FCL's MPR e
 
 /// A random pose: the capsule's first end within reach + 1.5 of the
 /// cylinder's middle, its segment up to 3 long, radius in [0.05, 1.5].
-Capsule random_capsule(Rng& rng, const Cylinder& a) {
-  Capsule b;
-  b.p = rng.around(a, 1.5);
-  b.q = b.p + rng.uniform(0.0, 3.0) * rng.direction();
-  b.r = rng.uniform(0.05, 1.5);
-  return b;
-}
-
 const PairBench<Capsule, oracles::FclCylinderCapsule> kBench{"cylinder/capsule", random_capsule, kDepthNote};
 
 }  // namespace

@@ -30,15 +30,6 @@ namespace {
 
 using Bench = PairBench<Sphere, oracles::FclCylinderSphere>;
 
-/// A random pose: the sphere's centre within reach + 1.5 of the cylinder's
-/// middle, radius in [0.05, 1.5].
-Sphere random_sphere(Rng& rng, const Cylinder& a) {
-  Sphere b;
-  b.c = rng.around(a, 1.5);
-  b.r = rng.uniform(0.05, 1.5);
-  return b;
-}
-
 /// The batch: half overlapping according to production, shuffled.
 Bench::Batch make_batch(std::uint64_t seed) {
   const Bench draws{"cylinder/sphere", random_sphere, nullptr};  // its poses and verdicts only

@@ -7,6 +7,7 @@
 //   BM_prod_overlap_<B>, BM_prod_collide_<B>   the scalar query per element;
 //   BM_fcl_overlap_<B>, BM_fcl_collide_<B>     FCL per pair (the pairs
 //                          converted once beforehand, fcl_convert.hpp).
+// The shapes are drawn as in the query programs (bench_random.hpp).
 // After the run: ns per element and FCL / list-query ratios (the issue's
 // target: 20x for spheres and capsules).
 //
@@ -30,25 +31,6 @@ namespace geomcheck::bench {
 namespace {
 
 constexpr std::size_t kPairBatch = 4096;
-
-Sphere random_sphere(Rng& rng, const Cylinder& a) { return {rng.around(a, 1.5), rng.uniform(0.05, 1.5)}; }
-Capsule random_capsule(Rng& rng, const Cylinder& a) {
-  Capsule b;
-  b.p = rng.around(a, 1.5);
-  b.q = b.p + rng.uniform(0.0, 3.0) * rng.direction();
-  b.r = rng.uniform(0.05, 1.5);
-  return b;
-}
-Obb random_box(Rng& rng, const Cylinder& a) {
-  const std::array<Vec3, 3> m = rotation_columns(rng.unit_quaternion(0.01));
-  Vec3 a0 = (1 / length(m[0])) * m[0], a1 = m[1] - dot(m[1], a0) * a0;
-  a1 = (1 / length(a1)) * a1;
-  Obb b;
-  b.c = rng.around(a, 1.5);
-  b.axes = {a0, a1, cross(a0, a1)};
-  b.e = {rng.uniform(0.05, 1.5), rng.uniform(0.05, 1.5), rng.uniform(0.05, 1.5)};
-  return b;
-}
 
 template <class B, class Prepared>
 struct ManyBatch {

@@ -120,4 +120,47 @@ auto all_hitting(std::size_t n, Draw&& draw, Verdict&& verdict, std::size_t& dra
   return out;
 }
 
+// ---- the shapes B of the cylinder benchmarks, in random poses near a
+// cylinder (the query programs and bench_collide_many draw the same way) ----
+
+/// A random pose: the sphere's centre within reach + 1.5 of the cylinder's
+/// middle, radius in [0.05, 1.5].
+inline Sphere random_sphere(Rng& rng, const Cylinder& a) {
+  Sphere b;
+  b.c = rng.around(a, 1.5);
+  b.r = rng.uniform(0.05, 1.5);
+  return b;
+}
+
+/// A random pose: the capsule's first end within reach + 1.5 of the
+/// cylinder's middle, its segment up to 3 long, radius in [0.05, 1.5].
+inline Capsule random_capsule(Rng& rng, const Cylinder& a) {
+  Capsule b;
+  b.p = rng.around(a, 1.5);
+  b.q = b.p + rng.uniform(0.0, 3.0) * rng.direction();
+  b.r = rng.uniform(0.05, 1.5);
+  return b;
+}
+
+/// A random rotation (unit quaternion to matrix, then Gram-Schmidt: the
+/// axes are orthonormal to a few ulps, inside the contract).
+inline std::array<Vec3, 3> random_frame(Rng& rng) {
+  const std::array<Vec3, 3> m = rotation_columns(rng.unit_quaternion(0.01));
+  Vec3 a0 = m[0], a1 = m[1];
+  a0 = (1 / length(a0)) * a0;
+  a1 = a1 - dot(a1, a0) * a0;
+  a1 = (1 / length(a1)) * a1;
+  return {a0, a1, cross(a0, a1)};
+}
+
+/// A random pose: the box's centre within reach + 1.5 of the cylinder's
+/// middle, half extents in [0.05, 1.5], a random rotation.
+inline Obb random_box(Rng& rng, const Cylinder& a) {
+  Obb b;
+  b.c = rng.around(a, 1.5);
+  b.axes = random_frame(rng);
+  b.e = {rng.uniform(0.05, 1.5), rng.uniform(0.05, 1.5), rng.uniform(0.05, 1.5)};
+  return b;
+}
+
 }  // namespace geomcheck::bench

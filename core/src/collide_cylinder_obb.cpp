@@ -402,19 +402,11 @@ Contact collide(const Cylinder& cyl, const Obb& box) {
 }
 
 void overlap_many(const Cylinder& cyl, const Obb* b, std::size_t n, bool* out) {
-  if (!is_valid(cyl)) {
-    std::fill(out, out + n, false);
-    return;
-  }
-  for (std::size_t i = 0; i < n; ++i) out[i] = overlap(cyl, b[i]);
+  detail::each_scalar(cyl, b, n, out, [](const Cylinder& c, const Obb& x) { return overlap(c, x); });
 }
 
 void collide_many(const Cylinder& cyl, const Obb* b, std::size_t n, Contact* out) {
-  if (!is_valid(cyl)) {
-    std::fill(out, out + n, Contact{});
-    return;
-  }
-  for (std::size_t i = 0; i < n; ++i) out[i] = collide(cyl, b[i]);
+  detail::each_scalar(cyl, b, n, out, [](const Cylinder& c, const Obb& x) { return collide(c, x); });
 }
 
 }  // namespace geomcheck

@@ -312,11 +312,7 @@ void overlap_many(const Cylinder& cyl, const Sphere* b, std::size_t n, bool* out
 }
 
 void collide_many(const Cylinder& cyl, const Sphere* b, std::size_t n, Contact* out) {
-  if (!is_valid(cyl)) {
-    std::fill(out, out + n, Contact{});
-    return;
-  }
-  for (std::size_t i = 0; i < n; ++i) out[i] = collide(cyl, b[i]);
+  detail::each_scalar(cyl, b, n, out, [](const Cylinder& c, const Sphere& x) { return collide(c, x); });
 }
 
 bool overlap(const Cylinder& cyl, const Sphere& s) {

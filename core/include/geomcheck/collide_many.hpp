@@ -50,6 +50,19 @@ void collide_many(const Cylinder& cyl, const Capsule* b, std::size_t n, Contact*
 /// out[i] = collide(cyl, b[i]) for i < n.
 void collide_many(const Cylinder& cyl, const Obb* b, std::size_t n, Contact* out);
 
+namespace detail {
+/// The list query as a loop over the scalar one, the cylinder validated
+/// once: out[i] = query(cyl, b[i]), or R{} for all when cyl is invalid.
+template <class B, class R, class Query>
+void each_scalar(const Cylinder& cyl, const B* b, std::size_t n, R* out, Query query) {
+  if (!is_valid(cyl)) {
+    for (std::size_t i = 0; i < n; ++i) out[i] = R{};
+    return;
+  }
+  for (std::size_t i = 0; i < n; ++i) out[i] = query(cyl, b[i]);
+}
+}  // namespace detail
+
 /// overlap(cyl, b[i]) for every element of b.
 template <class B>
 std::vector<bool> overlap_many(const Cylinder& cyl, const std::vector<B>& b) {
