@@ -298,13 +298,24 @@ bool incircle_in_doubles(Vec2 a, Vec2 b, Vec2 c, Vec2 d, int& sign) {
 // at most 53 bits; scaled by 2^-emin (the smallest exponent among the
 // inputs) every coordinate is an integer, and the determinants, being
 // homogeneous, keep their signs. Integer arithmetic, no normalisation.
-using Int = boost::multiprecision::cpp_int;
+//
+// Width: a scaled coordinate is below 2^53 * 2^(1024 - 53 + 1126) = 2^2150
+// (the largest exponent against the smallest subnormal's), a difference
+// below 2^2151, a lift or a minor below 2^4303 and the in-circle
+// determinant below 2^8608. The integers keep 8704 bits in place, so no
+// operation allocates; they are boost's arbitrary-precision integers all
+// the same (the fixed-width variant trips an assertion in boost 1.74's
+// subtraction), so a wider value would allocate, not wrap.
+using Int = boost::multiprecision::number<
+    boost::multiprecision::cpp_int_backend<8704, 0, boost::multiprecision::signed_magnitude,
+                                           boost::multiprecision::unchecked, std::allocator<boost::multiprecision::limb_type>>>;
 
 int sign_of(const Int& q) { return q > 0 ? 1 : (q < 0 ? -1 : 0); }
 
 class Scaled {
  public:
   Scaled(std::initializer_list<double> xs) {
+    v_.reserve(xs.size());
     int emin = 0;
     bool any = false;
     for (double x : xs) {
@@ -321,8 +332,10 @@ class Scaled {
       }
       int ex;
       const double f = std::frexp(x, &ex);
-      Int m(static_cast<long long>(std::ldexp(f, 53)));  // exact: |f| in [0.5, 1)
-      v_.push_back(m << (ex - 53 - emin));
+      // The magnitude is shifted, then signed.
+      Int m(static_cast<long long>(std::ldexp(std::fabs(f), 53)));  // exact: |f| in [0.5, 1)
+      m <<= (ex - 53 - emin);
+      v_.push_back(f < 0 ? Int(-m) : m);
     }
   }
   const Int& operator[](std::size_t i) const { return v_[i]; }
