@@ -214,6 +214,39 @@ TEST(collide_cylinder_mesh, bvh_equals_brute_force) {
   });
 }
 
+// The face filter (mesh_face_gap) skips a face only when it is apart by
+// more than its margin, far above its rounding: it must never skip a face
+// the triangle query finds overlapping. Driven by the cylinder/triangle
+// generator's near-degenerate cases (exact touches at caps, rims and sides,
+// nudged by ulps), where the computed gap of an overlapping face comes
+// within rounding of 0. The test prints how close the overlapping faces
+// came to the margin, and holds that they came within 2^-40 of 0: a filter
+// off by more than that (a margin of -2^-40, or a support term left out)
+// would skip some of them and fail here.
+TEST(collide_cylinder_mesh, face_filter_sound) {
+  const double margin = detail::mesh_face_margin();
+  double closest = -INFINITY;
+  int cases = 0, overlapping = 0, above_zero = 0;
+  const auto result = rc::check("face filter", [&] {
+    const auto drawn = *gen::targeted<QueryId::collide_cylinder_triangle>();
+    const Cylinder& cyl = drawn.first.a;
+    const Triangle& t = drawn.first.b;
+    ++cases;
+    if (!overlap(cyl, t)) return;
+    ++overlapping;
+    const double g = detail::mesh_face_gap(cyl, t);
+    closest = std::max(closest, g);
+    above_zero += g > 0;
+    RC_ASSERT(!(g > margin));
+  });
+  std::printf("[property] collide_cylinder_mesh.face_filter_sound: %d cases, %d overlapping; largest gap of an "
+              "overlapping face %.3g (margin %.3g); %d above 0\n",
+              cases, overlapping, closest, margin, above_zero);
+  EXPECT_TRUE(result);
+  EXPECT_GT(overlapping, cases / 10);
+  EXPECT_GT(closest, -0x1p-40) << "no overlapping face came near the filter's threshold";
+}
+
 TEST(collide_cylinder_mesh, deepest_face) {
   run("deepest_face", 5000, true, [](const MeshCase& c, const TriangleMesh& m) -> std::string {
     std::uint32_t idx = 0xffffffffu;

@@ -15,8 +15,11 @@
 // cylinder's bounding capsule, taken conservatively as the axis segment
 // against each box grown by r plus a margin of 2^-30 times the scene's
 // magnitude (a box the capsule meets is never skipped, whatever the
-// rounding). Narrow phase: the triangle query's verdict on every face of
-// every leaf reached; `overlap` stops at the first hit. `collide` bounds the
+// rounding). Then each face of every leaf reached against three directions
+// (the cylinder's axis, the face's normal, across the axis towards the
+// face): a face apart along one of them by more than a margin far above the
+// rounding (mesh_face_gap) is skipped. Narrow phase: the triangle query's
+// verdict on every other face; `overlap` stops at the first hit. `collide` bounds the
 // depth of each overlapping face from above (the overlap along +-u, +-its
 // normal and +-u x each edge, which the triangle query also takes) and runs the full
 // triangle collide in decreasing order of the bound, until the bound falls
@@ -44,6 +47,12 @@ bool overlap(const Cylinder& a, const TriangleMesh& b);
 Contact collide(const Cylinder& a, const TriangleMesh& b, std::uint32_t* triangle = nullptr);
 
 namespace detail {
+/// The face filter's largest gap between the cylinder and the face along
+/// its three directions, relative to each direction's scale (positive:
+/// apart as computed); -inf where it does not apply. A face is skipped
+/// when the gap exceeds mesh_face_margin() (2^-32).
+double mesh_face_gap(const Cylinder& a, const Triangle& t);
+double mesh_face_margin();
 /// The same answers without the hierarchy: every face, in index order.
 bool overlap_brute_force(const Cylinder& a, const TriangleMesh& b);
 Contact collide_brute_force(const Cylinder& a, const TriangleMesh& b, std::uint32_t* triangle = nullptr);
