@@ -164,11 +164,13 @@ bool overlap(const Cylinder& a, const TriangleMesh& b) {
 
 Contact collide(const Cylinder& a, const TriangleMesh& b, std::uint32_t* triangle) {
   if (!is_valid(a) || !is_valid(b)) return {};
-  // The overlapping faces with a cheap upper bound of their depth (the
-  // overlap along +-u, +-the face normal and +-u x each edge), then the full collide in
-  // decreasing order of the bound until the bound falls below the deepest
-  // depth found: the faces skipped cannot be deeper, so the answer is the
-  // brute force's, bit for bit.
+  // The faces the filter keeps, each with a cheap upper bound of its depth
+  // should it overlap (the overlap along +-u, +-the face normal and +-u x
+  // each edge; no verdict yet), then the full collide (verdict and contact)
+  // in decreasing order of the bound until the bound falls below the
+  // deepest depth found: the faces skipped cannot be deeper, so the answer
+  // is the brute force's, bit for bit. Most overlapping faces are never
+  // decided at all.
   struct Cand {
     double bound;
     std::uint32_t index;
@@ -178,7 +180,7 @@ Contact collide(const Cylinder& a, const TriangleMesh& b, std::uint32_t* triangl
   traverse(a, b, [&](std::uint32_t i) {
     const Triangle t = b.triangle(i);
     double bound;
-    if (!filter.separated(t) && detail::overlap_with_depth_bound(a, t, &bound)) cands.push_back({bound, i});
+    if (!filter.separated(t) && detail::depth_bound(a, t, &bound)) cands.push_back({bound, i});
     return false;
   });
   std::sort(cands.begin(), cands.end(), [](const Cand& x, const Cand& y) {

@@ -549,11 +549,10 @@ bool overlap_with_stage(const Cylinder& cyl, const Triangle& tri, TriCapStage st
   return overlap_rescaled(cyl, tri, [&](const Cylinder& c, const Triangle& t) { return decide(TriSpace(c, t), stage).hit; });
 }
 
-bool overlap_with_depth_bound(const Cylinder& cyl, const Triangle& tri, double* bound) {
+bool depth_bound(const Cylinder& cyl, const Triangle& tri, double* bound) {
   if (!is_valid(cyl) || !is_valid(tri)) return false;
   const SceneScale sc(std::max(largest(cyl), largest(tri)));
   const TriSpace s(sc.in(cyl), sc.in(tri));
-  if (!decide(s, TriCapStage::Exact).hit) return false;
   double o = std::min(overlap_along(s, s.u), overlap_along(s, -s.u));
   auto both = [&](Vec3 w) { o = std::min(o, std::min(overlap_along(s, w), overlap_along(s, -w))); };
   if (s.flat()) both(detail::normalized(s.nt));

@@ -19,11 +19,12 @@
 // (the cylinder's axis, the face's normal, across the axis towards the
 // face): a face apart along one of them by more than a margin far above the
 // rounding (mesh_face_gap) is skipped. Narrow phase: the triangle query's
-// verdict on every other face; `overlap` stops at the first hit. `collide` bounds the
-// depth of each overlapping face from above (the overlap along +-u, +-its
-// normal and +-u x each edge, which the triangle query also takes) and runs the full
-// triangle collide in decreasing order of the bound, until the bound falls
-// below the deepest depth found. The answers are therefore bit-identical to
+// verdict on every other face; `overlap` stops at the first hit. `collide`
+// bounds the depth of each face kept from above, should it overlap (the
+// overlap along +-u, +-its normal and +-u x each edge, which the triangle
+// query also takes), and runs the full triangle collide (verdict and
+// contact) in decreasing order of the bound, until the bound falls below
+// the deepest depth found. The answers are therefore bit-identical to
 // the brute force over all faces in index order (`overlap_brute_force`,
 // `collide_brute_force`), which the properties check.
 //

@@ -18,11 +18,13 @@ bool overlap_with_stage(const Cylinder& cyl, const Triangle& tri, TriCapStage st
 /// collide(Cylinder, Triangle) with the given cap stage.
 Contact collide_with_stage(const Cylinder& cyl, const Triangle& tri, TriCapStage stage);
 
-/// overlap(cyl, tri), and where it holds, in *bound a value never below
-/// collide(cyl, tri).depth, bit for bit (the least overlap along +-u, +-the
-/// triangle's normal and +-u x each edge, candidates collide itself takes,
-/// computed and scaled back the same way). The mesh query skips the full
-/// collide of a face whose bound is below the deepest depth already found.
-bool overlap_with_depth_bound(const Cylinder& cyl, const Triangle& tri, double* bound);
+/// For valid shapes (false otherwise), in *bound a value never below
+/// collide(cyl, tri).depth where they overlap, bit for bit (the least
+/// overlap along +-u, +-the triangle's normal and +-u x each edge,
+/// candidates collide itself takes, computed and scaled back the same way;
+/// clamped to >= 0). The verdict is not decided here: the mesh query runs
+/// the full collide in decreasing order of the bound and skips every face
+/// whose bound is below the deepest depth already found.
+bool depth_bound(const Cylinder& cyl, const Triangle& tri, double* bound);
 
 }  // namespace geomcheck::detail
