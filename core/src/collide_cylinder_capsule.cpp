@@ -271,8 +271,133 @@ Contact collide(const Cylinder& cyl, const Capsule& cap) {
   return detail::collide_rescaled(cyl, cap, [](const Cylinder& c, const Capsule& k) { return collide_scaled(c, k); });
 }
 
+namespace {
+
+// overlap_many's filter: a capsule clearly apart from the cylinder or
+// clearly meeting it is decided in doubles, with a margin far above the
+// rounding; every other one (and any outside the filter's range) goes to the
+// scalar query. The scalar verdict is exact outside its band of touching,
+// far inside the margin, so every answer is the scalar one (test_many.cpp
+// holds it, bit for bit, on the targeted generator's touching poses).
+//
+// Meets: a point X = (p_k - p) + t (q_k - p_k) of the capsule's segment,
+// t in [0, 1] (the segment's closest approach to the axis line, and its
+// ends), whose axial excess beyond the caps plus radial excess beyond r is
+// below the capsule's radius less the margin: X is then within that radius
+// of the cylinder (the distance is at most the sum of the two excesses).
+// Apart: a direction m (the axis, across the axis towards X, the common
+// perpendicular of the axis and the segment) along which the capsule's
+// values, m.(ends - p) -+ r_k |m|, all lie above the cylinder's largest,
+// m.d / 2 + |m.d| / 2 + r |m x d| / |d|, or all below its smallest. Every
+// value is a few dozen operations on rounded differences and on the rounded
+// unit axis u = d / |d| (|m x d| / |d| is taken as |m x u|), off by at most
+// about 50 * 2^-53 * M * reach (M = |m|inf or 1, reach = the largest
+// offset from p plus |d|inf, r and r_k); the margin is 2^-32 * M * reach.
+// Used where reach and M lie within [2^-200, 2^200] (no square leaves the
+// normal range but negligible ones) and d.d is at least 2^-500.
+class CapsuleListFilter {
+ public:
+  explicit CapsuleListFilter(const Cylinder& c) : p_(c.p), d_(c.q - c.p), r_(c.r) {
+    const double dd = dot(d_, d_);
+    dmax_ = max_abs(d_);
+    usable_ = dd >= 0x1p-500 && dmax_ <= 0x1p200;
+    dlen_ = std::sqrt(dd);
+    u_ = (1 / dlen_) * d_;
+  }
+  /// 1: the capsule meets the cylinder; 0: it does not; -1: not decided.
+  int decide(const Capsule& k) const {
+    if (!usable_) return -1;
+    if (!is_valid(k)) return 0;  // the scalar query's "no overlap"
+    const Vec3 a = k.p - p_, b = k.q - p_, e = k.q - k.p;
+    const double reach = std::max(max_abs(a), max_abs(b)) + dmax_ + r_ + k.r;
+    if (!(reach >= 0x1p-200 && reach <= 0x1p200)) return -1;
+    const double margin = 0x1p-32 * reach;
+    // A point of the segment (t in [0, 1]): its axial coordinate and radial
+    // offset; within the capsule's radius of the cylinder (1), or the
+    // direction from the cylinder's nearest point to it, for the tests of
+    // separation.
+    struct Point {
+      double ax, rho;  // axial coordinate, radial distance (|radial|)
+      Vec3 radial;
+    };
+    auto at = [&](double t) {
+      const Vec3 x = a + t * e;
+      const double ax = dot(x, u_);
+      const Vec3 radial = x - ax * u_;
+      return Point{ax, std::sqrt(dot(radial, radial)), radial};
+    };
+    auto meets = [&](const Point& x) {
+      const double over = std::max(std::max(-x.ax, x.ax - dlen_), 0.0);
+      const double out = std::max(x.rho - r_, 0.0), reach_k = k.r - margin;
+      return reach_k > 0 && over * over + out * out < reach_k * reach_k;
+    };
+    // Along m, given upper bounds of |m| and of |m x u| (the cylinder's
+    // reach across its axis is r |m x u|; both enlarge an interval, so a
+    // bound from above keeps the test sound).
+    auto apart_with = [&](Vec3 m, double m_len, double mxu_len) {
+      const double M = max_abs(m);
+      if (!(M >= 0x1p-200 && M <= 0x1p200)) return false;
+      const double mm = 0x1p-32 * M * reach;
+      const double ma = dot(m, a), mb = dot(m, b), md = dot(m, d_);
+      const double rk = k.r * m_len;
+      const double h = 0.5 * std::fabs(md) + r_ * mxu_len;
+      return std::min(ma, mb) - rk > 0.5 * md + h + mm || std::max(ma, mb) + rk < 0.5 * md - h - mm;
+    };
+    constexpr double kUp = 1 + 0x1p-48;  // a computed length (or a product with u's) enlarged past its rounding
+    auto apart = [&](Vec3 m) {
+      const Vec3 mu = cross(m, u_);
+      return apart_with(m, kUp * std::sqrt(dot(m, m)), kUp * std::sqrt(dot(mu, mu)));
+    };
+    // The segment's closest approach to the axis line (its middle when
+    // parallel), clamped to the segment.
+    const double de = dot(u_, e), da = dot(u_, a), ee = dot(e, e);
+    const double den = ee - de * de;
+    double t = den > 0x1p-40 * ee ? (de * da - dot(e, a)) / den : 0.5;
+    t = std::clamp(t, 0.0, 1.0);
+    const Point c = at(t);
+    if (meets(c)) return 1;
+    // Across the axis towards that point (|m x u| <= |m| |u|, |u| within
+    // 2^-51 of 1), and along the axis (|d x u| = |d| |u - d / |d|| is below
+    // 2^-50 |d|).
+    if (apart_with(c.radial, kUp * c.rho, kUp * kUp * c.rho) || apart_with(d_, kUp * dlen_, 0x1p-48 * dlen_)) return 0;
+    // The ends, and the crossings of the cap planes (clamped to the segment).
+    Point more[4] = {at(0), at(1), c, c};
+    if (meets(more[0]) || meets(more[1])) return 1;
+    if (de != 0) {
+      more[2] = at(std::clamp(-da / de, 0.0, 1.0));
+      more[3] = at(std::clamp((dlen_ - da) / de, 0.0, 1.0));
+      if (meets(more[2]) || meets(more[3])) return 1;
+    }
+    // From the cylinder's point nearest to each of them (beyond a rim).
+    const Point* pts[5] = {&c, &more[0], &more[1], &more[2], &more[3]};
+    for (const Point* x : pts) {
+      if (!(x->rho > 0)) continue;
+      const Vec3 radial_part = (std::max(x->rho - r_, 0.0) / x->rho) * x->radial;
+      const double axial_part = x->ax < 0 ? x->ax : (x->ax > dlen_ ? x->ax - dlen_ : 0.0);
+      if (apart(radial_part + axial_part * u_)) return 0;
+    }
+    if (apart(cross(d_, e))) return 0;
+    return -1;
+  }
+
+ private:
+  Vec3 p_, d_, u_;
+  double r_, dlen_ = 0, dmax_ = 0;
+  bool usable_ = false;
+};
+
+}  // namespace
+
 void overlap_many(const Cylinder& cyl, const Capsule* b, std::size_t n, bool* out) {
-  detail::each_scalar(cyl, b, n, out, [](const Cylinder& c, const Capsule& x) { return overlap(c, x); });
+  if (!is_valid(cyl)) {
+    for (std::size_t i = 0; i < n; ++i) out[i] = false;
+    return;
+  }
+  const CapsuleListFilter filter(cyl);
+  for (std::size_t i = 0; i < n; ++i) {
+    const int v = filter.decide(b[i]);
+    out[i] = v < 0 ? overlap(cyl, b[i]) : v == 1;
+  }
 }
 
 void collide_many(const Cylinder& cyl, const Capsule* b, std::size_t n, Contact* out) {

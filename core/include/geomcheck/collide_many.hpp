@@ -17,9 +17,12 @@
 // spheres at a time in SSE2 where the target has it), so the verdicts are
 // the scalar ones; a sphere or axis outside the range where the scalar
 // query needs no rescaling, or an invalid sphere, is answered by the scalar
-// query itself. The other list queries call the scalar query per
-// element after validating the cylinder once (their cost is the query's,
-// not the call's).
+// query itself. overlap_many(Cylinder, Capsule*) decides a capsule that is
+// clearly apart or clearly meeting in doubles, with a margin of 2^-32 of
+// the pair's reach (far above the filter's rounding and the scalar query's
+// band of touching), and asks the scalar query for every other one. The
+// other list queries call the scalar query per element after validating
+// the cylinder once (their cost is the query's, not the call's).
 //
 // Bit-identity assumes one floating-point environment for both paths (the
 // default rounding mode; no FMA contraction that differs between the inlined
