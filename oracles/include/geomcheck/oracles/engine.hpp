@@ -36,7 +36,7 @@
 // A floating-point filter (GJK in doubles, certificates checked in interval
 // arithmetic on doubles with outward rounding) runs first; the rational
 // machinery runs only where the filter cannot decide. Then the search is
-// repeated in 128 and 384 binary digits (cpp_bin_float), each result again
+// repeated in about 128 and 384 binary digits (MPFR), each result again
 // certified in rationals (and in 512 digits for a pair still undecided).
 //
 // Signed distance: positive = Euclidean distance between the shapes,
