@@ -401,7 +401,15 @@ void overlap_many(const Cylinder& cyl, const Capsule* b, std::size_t n, bool* ou
 }
 
 void collide_many(const Cylinder& cyl, const Capsule* b, std::size_t n, Contact* out) {
-  detail::each_scalar(cyl, b, n, out, [](const Cylinder& c, const Capsule& x) { return collide(c, x); });
+  if (!is_valid(cyl)) {
+    for (std::size_t i = 0; i < n; ++i) out[i] = Contact{};
+    return;
+  }
+  // A capsule the filter finds clearly apart gets collide's own answer for a
+  // miss, Contact{} (overlap == collide.hit, a property of the query); every
+  // other one the scalar collide.
+  const CapsuleListFilter filter(cyl);
+  for (std::size_t i = 0; i < n; ++i) out[i] = filter.decide(b[i]) == 0 ? Contact{} : collide(cyl, b[i]);
 }
 
 }  // namespace geomcheck

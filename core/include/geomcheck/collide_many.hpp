@@ -20,9 +20,12 @@
 // query itself. overlap_many(Cylinder, Capsule*) decides a capsule that is
 // clearly apart or clearly meeting in doubles, with a margin of 2^-32 of
 // the pair's reach (far above the filter's rounding and the scalar query's
-// band of touching), and asks the scalar query for every other one. The
-// other list queries call the scalar query per element after validating
-// the cylinder once (their cost is the query's, not the call's).
+// band of touching), and asks the scalar query for every other one;
+// collide_many(Cylinder, Capsule*) gives a capsule that filter finds clearly
+// apart collide's answer for a miss (Contact{}) and calls the scalar collide
+// for the rest. The other list queries call the scalar query per element
+// after validating the cylinder once (their cost is the query's, not the
+// call's).
 //
 // Bit-identity assumes one floating-point environment for both paths (the
 // default rounding mode; no FMA contraction that differs between the inlined
