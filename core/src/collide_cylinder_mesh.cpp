@@ -63,14 +63,6 @@ struct BroadPhase {
 // absolute errors, below 2^-1070 per operation, far under the margin);
 // elsewhere the face goes to the triangle query.
 class FaceFilter {
-  // |v| without overflow or underflow of the squares: |v|inf * |v / |v|inf|.
-  static double scaled_length(Vec3 v) {
-    const double m = max_abs(v);
-    if (!(m > 0)) return 0;
-    const Vec3 s{v.x / m, v.y / m, v.z / m};
-    return m * std::sqrt(dot(s, s));
-  }
-
  public:
   explicit FaceFilter(const Cylinder& c) : p_(c.p), d_(c.q - c.p), r_(c.r) {
     const double dd = dot(d_, d_);
@@ -98,7 +90,7 @@ class FaceFilter {
       const double lo = std::min({dot(m, v[0]), dot(m, v[1]), dot(m, v[2])});
       const double hi = std::max({dot(m, v[0]), dot(m, v[1]), dot(m, v[2])});
       const double md = dot(m, d_);
-      const double h = 0.5 * std::fabs(md) + r_ * (scaled_length(cross(m, d_)) / dlen_);
+      const double h = 0.5 * std::fabs(md) + r_ * (detail::safe_length(cross(m, d_)) / dlen_);
       return std::max(lo - (0.5 * md + h), (0.5 * md - h) - hi) / scale;
     };
     double best = along(d_);

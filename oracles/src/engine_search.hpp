@@ -9,7 +9,6 @@
 // certify in interval arithmetic or in rationals.
 #pragma once
 
-#include <boost/multiprecision/cpp_bin_float.hpp>
 #include <boost/multiprecision/mpfr.hpp>
 #include <algorithm>
 #include <cmath>
