@@ -1,6 +1,7 @@
 #include "geomcheck/predicates2d.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -312,10 +313,13 @@ using Int = boost::multiprecision::number<
 
 int sign_of(const Int& q) { return q > 0 ? 1 : (q < 0 ? -1 : 0); }
 
+// The coordinates as integers, in place: no heap block per call (the
+// integers are 1088 bytes each; a vector of them was an allocation of
+// several kilobytes on every call of this stage).
+template <std::size_t N>
 class Scaled {
  public:
-  Scaled(std::initializer_list<double> xs) {
-    v_.reserve(xs.size());
+  explicit Scaled(const double (&xs)[N]) {
     int emin = 0;
     bool any = false;
     for (double x : xs) {
@@ -325,23 +329,22 @@ class Scaled {
       emin = any ? std::min(emin, ex - 53) : ex - 53;
       any = true;
     }
-    for (double x : xs) {
-      if (x == 0) {
-        v_.emplace_back(0);
-        continue;
-      }
+    for (std::size_t i = 0; i < N; ++i) {
+      const double x = xs[i];
+      if (x == 0) continue;  // v_[i] is 0 already
       int ex;
       const double f = std::frexp(x, &ex);
       // The magnitude is shifted, then signed.
-      Int m(static_cast<long long>(std::ldexp(std::fabs(f), 53)));  // exact: |f| in [0.5, 1)
+      Int& m = v_[i];
+      m = static_cast<long long>(std::ldexp(std::fabs(f), 53));  // exact: |f| in [0.5, 1)
       m <<= (ex - 53 - emin);
-      v_.push_back(f < 0 ? Int(-m) : m);
+      if (f < 0) m = -m;
     }
   }
   const Int& operator[](std::size_t i) const { return v_[i]; }
 
  private:
-  std::vector<Int> v_;
+  std::array<Int, N> v_{};
 };
 
 }  // namespace
@@ -404,13 +407,15 @@ int incircle_expansion(Vec2 a, Vec2 b, Vec2 c, Vec2 d) {
 }
 
 int orient2d_rational(Vec2 a, Vec2 b, Vec2 c) {
-  const Scaled s({a.x, a.y, b.x, b.y, c.x, c.y});
+  const double xs[] = {a.x, a.y, b.x, b.y, c.x, c.y};
+  const Scaled<6> s(xs);
   const Int acx = s[0] - s[4], acy = s[1] - s[5], bcx = s[2] - s[4], bcy = s[3] - s[5];
   return sign_of(Int(acx * bcy - acy * bcx));
 }
 
 int incircle_rational(Vec2 a, Vec2 b, Vec2 c, Vec2 d) {
-  const Scaled s({a.x, a.y, b.x, b.y, c.x, c.y, d.x, d.y});
+  const double xs[] = {a.x, a.y, b.x, b.y, c.x, c.y, d.x, d.y};
+  const Scaled<8> s(xs);
   const Int adx = s[0] - s[6], ady = s[1] - s[7], bdx = s[2] - s[6], bdy = s[3] - s[7];
   const Int cdx = s[4] - s[6], cdy = s[5] - s[7];
   const Int alift = adx * adx + ady * ady, blift = bdx * bdx + bdy * bdy, clift = cdx * cdx + cdy * cdy;
