@@ -59,6 +59,16 @@ bool path_meets(const SweepCylinderCase& c, double t, const Q& dr) {
 
 }  // namespace
 
+double exact_first_touch(const SweepCylinderCase& c) {
+  // The gap at a peer's t alone cannot see a t past a first crossing that
+  // was missed: |t_peer - t_exact| needs the first touch itself.
+  const oracle::ImpactResult toi = oracle::time_of_impact(oracle::make_shape(Sphere{c.a.c, c.a.r}),
+                                                          oracle::to_q(c.a.delta), oracle::make_shape(c.b));
+  if (toi.kind == oracle::ImpactResult::Kind::Hit && toi.t.hi - toi.t.lo <= oracle::to_q(1e-12)) return toi.t.mid();
+  if (toi.kind == oracle::ImpactResult::Kind::StartsInside) return 0;
+  return NAN;
+}
+
 void hold_to_truth(Evaluation& e, const SweepCylinderCase& c, const CastHit& h, const double* peer_t) {
   const Tolerances tol = tolerances(kId);
   const oracle::ConvexShape cyl = oracle::make_shape(c.b);
@@ -74,12 +84,6 @@ void hold_to_truth(Evaluation& e, const SweepCylinderCase& c, const CastHit& h, 
   e.disagree = e.prod_hit != e.truth_hit;
   e.near_boundary = !(truth.signed_distance.lo > band || truth.signed_distance.hi < -band);
   if (peer_t && e.truth_hit && *peer_t >= 0 && *peer_t <= 1) {
-    // The exact first touch (engine), for |t_peer - t_true|: the gap alone
-    // cannot see a t past a first crossing that was missed.
-    const oracle::ImpactResult toi =
-        oracle::time_of_impact(oracle::make_shape(Sphere{c.a.c, c.a.r}), oracle::to_q(c.a.delta), cyl);
-    if (toi.kind == oracle::ImpactResult::Kind::Hit && toi.t.hi - toi.t.lo <= oracle::to_q(1e-12)) e.t_true = toi.t.mid();
-    if (toi.kind == oracle::ImpactResult::Kind::StartsInside) e.t_true = 0;
     // The peer's t, by production's yardstick: the ball's gap at t; starting
     // inside (touching included), how far the centre moved before t.
     const oracle::QCylinder qc = oracle::to_q(c.b);

@@ -265,7 +265,7 @@ void write_query_section(std::ostream& h, QueryReport& r, const std::filesystem:
   error_row(h, "FCL point", r.fcl_point, 0);
   error_row(h, "FCL distance", r.fcl_distance, 0);
   error_row(h, "FCL t", r.fcl_t_gap, 0);
-  error_row(h, "FCL |t - t_exact| (absolute)", r.fcl_t, 0);
+  error_row(h, "FCL |t - t_exact| (absolute; sweeps: the first 10,000 cases)", r.fcl_t, 0);
   h << "</table>";
   if (r.depth_is_bound) {
     // The depth is the overlap along the returned normal, not the minimal

@@ -225,7 +225,7 @@ struct Evaluation {
   double normal_err = NAN;
   double point_err = NAN;
   double t_err = NAN;
-  double t_true = NAN;           ///< casts: the oracle's first t (midpoint of its enclosure)
+  double t_true = NAN;           ///< casts: the oracle's first t (midpoint of its enclosure); sweeps: NaN (exact_first_touch)
   double unit_err = NAN;
   std::string extra_failure;     ///< a non-numeric failure found while evaluating
   std::string truth_text;        ///< oracle answer, human readable
@@ -345,6 +345,12 @@ bool obb_in_contract(const Obb& b);
 /// penetration depth is below 1e-9 * scale.
 double depth_ratio(const CylinderCylinderCase& c, const CylinderCylinderImpl& impl = production_of<QueryId::collide_cylinder_cylinder>());
 
+/// Sweeps: the ball's exact first touch of the cylinder, the midpoint of the
+/// engine's time of impact when that is enclosed to 1e-12 (0 when the ball
+/// starts inside); NaN otherwise. Costly (the engine's conservative
+/// advancement, several certified distances): evaluate() does not ask it;
+/// campaigns ask it for FCL's |t - t_exact| on their first cases.
+double exact_first_touch(const SweepCylinderCase& c);
 /// Number of metamorphic moves understood by check_metamorphic (0..kNumMoves-1).
 inline constexpr int kNumMoves = 6;
 const char* move_name(int move);
