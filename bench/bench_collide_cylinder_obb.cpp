@@ -1,5 +1,7 @@
 // Cylinder/box: production against FCL on the same inputs, in one run
-// (bench_pair.hpp: the batches, the benchmarks and the ratios).
+// (bench_pair.hpp: the batches, the benchmarks and the ratios); the pair's
+// second query, penetration_cylinder_obb, on the same batches
+// (BM_prod_penetration_<set>).
 //
 //   bench_collide_cylinder_obb [--benchmark_* flags]
 //   GEOMCHECK_BENCH_SEED=<n> bench_collide_cylinder_obb   (other inputs)
@@ -8,6 +10,7 @@
 
 #include "bench_pair.hpp"
 #include "geomcheck/collide_cylinder_obb.hpp"
+#include "geomcheck/penetration_cylinder_obb.hpp"
 
 namespace geomcheck::bench {
 namespace {
@@ -15,7 +18,12 @@ namespace {
 /// What the two depths are, printed with their differences.
 constexpr char kDepthNote[] = "production's is the minimum, FCL's MPR estimate is not";
 
-const PairBench<Obb, oracles::FclCylinderBox> kBench{"cylinder/box", random_box, kDepthNote};
+PairBench<Obb, oracles::FclCylinderBox> make_bench() {
+  PairBench<Obb, oracles::FclCylinderBox> b{"cylinder/box", random_box, kDepthNote};
+  b.penetration = [](const Cylinder& a, const Obb& x) { return penetration(a, x); };
+  return b;
+}
+const PairBench<Obb, oracles::FclCylinderBox> kBench = make_bench();
 
 }  // namespace
 }  // namespace geomcheck::bench

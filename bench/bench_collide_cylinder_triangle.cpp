@@ -3,7 +3,9 @@
 //   bench_collide_cylinder_triangle [--benchmark_* flags]
 //   GEOMCHECK_BENCH_SEED=<n> bench_collide_cylinder_triangle   (other inputs)
 //
-// The batches, benchmarks and ratios are bench_pair.hpp's. The verdicts
+// The batches, benchmarks and ratios are bench_pair.hpp's; the pair's
+// second query, penetration_cylinder_triangle, is timed on the same batches
+// (BM_prod_penetration_<set>). The verdicts
 // that select the pairs are the certified engine's
 // (oracles/engine.hpp: classify), not production's, so that the inputs are
 // the same whatever the implementation under measurement answers.
@@ -21,6 +23,7 @@
 
 #include "bench_pair.hpp"
 #include "geomcheck/collide_cylinder_triangle.hpp"
+#include "geomcheck/penetration_cylinder_triangle.hpp"
 #include "geomcheck/oracles/engine.hpp"
 
 namespace geomcheck::bench {
@@ -66,7 +69,12 @@ int certified_hit(const Bench::Pair& pr) {
   return v == oracle::Verdict::Separated ? 0 : 1;
 }
 
-const Bench kBench{"cylinder/triangle", random_triangle, kDepthNote, certified_hit, "the certified engine"};
+Bench make_bench() {
+  Bench b{"cylinder/triangle", random_triangle, kDepthNote, certified_hit, "the certified engine"};
+  b.penetration = [](const Cylinder& a, const Triangle& x) { return penetration(a, x); };
+  return b;
+}
+const Bench kBench = make_bench();
 
 }  // namespace
 }  // namespace geomcheck::bench

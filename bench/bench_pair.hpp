@@ -68,6 +68,10 @@ struct PairBench {
   /// An earlier version of production's collide, timed in the same run
   /// (BM_prod_collide_before_<set>, and its ratio to FCL); null: none.
   Contact (*collide_before)(const Cylinder& a, const B& b) = nullptr;
+  /// The pair's second query, production's exact penetration depth
+  /// (penetration_cylinder_<B>), timed in the same run
+  /// (BM_prod_penetration_<set>, and its ratio to FCL's collide); null: none.
+  Contact (*penetration)(const Cylinder& a, const B& b) = nullptr;
 
   /// One random pose: a random cylinder, then B near it.
   Pair random_pair(Rng& rng) const {
@@ -115,6 +119,10 @@ struct PairBench {
     if (collide_before) {
       const auto before = collide_before;
       register_each("BM_prod_collide_before" + s, b.pairs, [before](const Pair& pr) { return before(pr.a, pr.b); });
+    }
+    if (penetration) {
+      const auto pen = penetration;
+      register_each("BM_prod_penetration" + s, b.pairs, [pen](const Pair& pr) { return pen(pr.a, pr.b); });
     }
     register_each("BM_fcl_overlap" + s, b.fcl, [](const Prepared& pr) { return oracles::fcl_overlap_prepared(pr); });
     register_each("BM_fcl_collide" + s, b.fcl, [](const Prepared& pr) { return oracles::fcl_collide_prepared(pr); });
@@ -170,6 +178,10 @@ struct PairBench {
       for (const char* set : {"random", "contact"})
         ratios.push_back({std::string("collide fcl/prod-before (") + set + ")",
                           {std::string("BM_fcl_collide_") + set, std::string("BM_prod_collide_before_") + set}});
+    if (penetration)
+      for (const char* set : {"random", "contact"})
+        ratios.push_back({std::string("penetration fcl-collide/prod (") + set + ")",
+                          {std::string("BM_fcl_collide_") + set, std::string("BM_prod_penetration_") + set}});
     return run_and_summarise(argc, argv, reporter, ratios);
   }
 };

@@ -361,7 +361,7 @@ class QueryRun {
       if (drawn[s.kind]++ < 3) {
         const draw::Answer ans = answer_of(s.small, *impl_);
         rep_.fcl_drawings.push_back(draw::views(
-            s.small.a, s.small.b,
+            s.small,
             html(std::string("case ") + name + ": FCL's " + s.kind + " (" + s.fcl.text + "); oracle: " + s.e.truth_text),
             {fcl_mark(s.small, s.fcl)}, &ans));
       }
@@ -406,7 +406,7 @@ class QueryRun {
     else std::fprintf(stderr, "[campaign] cannot save %s: %s\n", path.string().c_str(), err.c_str());
     const draw::Answer ans = answer_of(small, *impl_);
     const std::string drawing =
-        draw::views(small.a, small.b,
+        draw::views(small,
                     html(std::string("case ") + name + ": " + failure->property + ": " + failure->detail +
                          "; oracle: " + e.truth_text),
                     {}, &ans);

@@ -94,7 +94,7 @@ PeerAnswer peer(const Case& c) {
   else return cast_answer(oracles::fcl_sweep(c.a, c.b), "FCL continuous collision of the ball; no point or normal");
 }
 
-#define GEOMCHECK_X(id, kind, A, B, summary) template PeerAnswer peer(const PairCase<A, B>&);
+#define GEOMCHECK_X(id, kind, A, B, summary) template PeerAnswer peer(const PairCase<A, B, QueryId::id>&);
 GEOMCHECK_QUERY_LIST(GEOMCHECK_X)
 #undef GEOMCHECK_X
 

@@ -100,10 +100,10 @@ std::vector<report::QueryReport> run_peers(int cases, std::uint64_t seed, const 
     opt.summary = false;
     opt.report = false;
     opt.replay = std::string("geomcheck replay --subject ") + s->name + " ";
-    out.push_back(verify(*s, opt).figures);
+    out.push_back(verify<Q>(*s, opt).figures);
     if (bugreports.empty()) continue;
     opt.out = out_dir / "peers" / s->name / "bugreports";
-    const VerifyResult b = verify(*s, bugreports, opt);
+    const VerifyResult b = verify<Q>(*s, bugreports, opt);
     out.back().bugreports = b.cases;
     out.back().bugreports_failed = b.failed_cases;
   }

@@ -81,7 +81,7 @@ struct SubjectAnswerOf<QueryKind::Collide> {
 /// computed, the verdict settled and the subject's and the peer's errors
 /// measured into `e`.
 #define GEOMCHECK_X(id, kind, A, B, summary)                                                          \
-  void hold_to_truth(Evaluation& e, const PairCase<A, B>& c, const SubjectAnswerOf<QueryKind::kind>::type& answer, \
+  void hold_to_truth(Evaluation& e, const PairCase<A, B, QueryId::id>& c, const SubjectAnswerOf<QueryKind::kind>::type& answer, \
                      const PeerAnswerOf<QueryKind::kind>::type* peer);
 GEOMCHECK_QUERY_LIST(GEOMCHECK_X)
 #undef GEOMCHECK_X

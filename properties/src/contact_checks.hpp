@@ -187,7 +187,7 @@ CheckResult argument_order(const Case& c, const Impl& impl) {
   if (&impl != &production_of<query_of_case<Case>>()) return std::nullopt;
   const bool ov = impl.overlap(c.a, c.b);
   const Contact ct = impl.collide(c.a, c.b);
-  const Contact sw = collide(c.b, c.a);
+  const Contact sw = production_contact<query_of_case<Case>>(c.b, c.a);
   const bool sov = overlap(c.b, c.a);
   if (sov != ov || sw.hit != ct.hit || (ct.hit && !(sw.normal == -ct.normal)))
     return Failure{"symmetry-argument-order", describe(ct, ov) + " vs swapped " + describe(sw, sov)};

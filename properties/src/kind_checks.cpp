@@ -66,7 +66,7 @@ CheckResult all(const Case& c, const ImplOfCase<Case>& impl, const Evaluation* k
 }  // namespace
 
 #define GEOMCHECK_X(id, kind, A, B, summary)                                                                   \
-  Evaluation evaluate(const PairCase<A, B>& c, const ImplOf<QueryId::id>& impl,                                \
+  Evaluation evaluate(const PairCase<A, B, QueryId::id>& c, const ImplOf<QueryId::id>& impl,                                \
                       const PeerAnswerOf<QueryKind::kind>::type* peer) {                                       \
     Evaluation e;                                                                                              \
     SubjectAnswerOf<QueryKind::kind>::type answer;                                                             \
@@ -76,16 +76,16 @@ CheckResult all(const Case& c, const ImplOfCase<Case>& impl, const Evaluation* k
     }                                                                                                          \
     return e;                                                                                                  \
   }                                                                                                            \
-  CheckResult check_oracle(const PairCase<A, B>& c, const ImplOf<QueryId::id>& impl) {                         \
+  CheckResult check_oracle(const PairCase<A, B, QueryId::id>& c, const ImplOf<QueryId::id>& impl) {                         \
     return judge(QueryId::id, evaluate(c, impl), impl.claims);                                                 \
   }
 GEOMCHECK_QUERY_LIST(GEOMCHECK_X)
 #undef GEOMCHECK_X
 
 #define GEOMCHECK_X(id, kind, A, B, summary)                                                          \
-  CheckResult check_robust(const PairCase<A, B>& c, const ImplOf<QueryId::id>& impl) { return robust(c, impl); } \
-  CheckResult check_all(const PairCase<A, B>& c, const ImplOf<QueryId::id>& impl) { return all(c, impl); }    \
-  CheckResult check_all(const PairCase<A, B>& c, const Evaluation& e, const ImplOf<QueryId::id>& impl) {     \
+  CheckResult check_robust(const PairCase<A, B, QueryId::id>& c, const ImplOf<QueryId::id>& impl) { return robust(c, impl); } \
+  CheckResult check_all(const PairCase<A, B, QueryId::id>& c, const ImplOf<QueryId::id>& impl) { return all(c, impl); }    \
+  CheckResult check_all(const PairCase<A, B, QueryId::id>& c, const Evaluation& e, const ImplOf<QueryId::id>& impl) {     \
     return all(c, impl, &e);                                                                                 \
   }
 GEOMCHECK_QUERY_LIST(GEOMCHECK_X)

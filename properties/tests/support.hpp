@@ -29,8 +29,8 @@ void showValue(const Capsule& s, std::ostream& os);
 void showValue(const Obb& s, std::ostream& os);
 void showValue(const Triangle& s, std::ostream& os);
 void showValue(const MovingSphere& s, std::ostream& os);
-template <class A, class B>
-void showValue(const PairCase<A, B>& c, std::ostream& os) {
+template <class A, class B, QueryId Q>
+void showValue(const PairCase<A, B, Q>& c, std::ostream& os) {
   showValue(c.a, os);
   os << ", ";
   showValue(c.b, os);

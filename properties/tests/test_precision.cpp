@@ -91,13 +91,11 @@ void check_table() {
   for (int k = 0; k < 6; ++k) expect_in_range(n, kMetric[k], w.v[k], bound_of(t, k), w.where[k]);
 }
 
-TEST(precision, collide_cylinder_sphere) { check_table<QueryId::collide_cylinder_sphere>(); }
-TEST(precision, cast_segment_cylinder) { check_table<QueryId::cast_segment_cylinder>(); }
-TEST(precision, collide_cylinder_capsule) { check_table<QueryId::collide_cylinder_capsule>(); }
-TEST(precision, sweep_sphere_cylinder) { check_table<QueryId::sweep_sphere_cylinder>(); }
-TEST(precision, collide_cylinder_obb) { check_table<QueryId::collide_cylinder_obb>(); }
-TEST(precision, collide_cylinder_triangle) { check_table<QueryId::collide_cylinder_triangle>(); }
-TEST(precision, collide_cylinder_cylinder) { check_table<QueryId::collide_cylinder_cylinder>(); }
+// One test per registered query (its row of tolerances.hpp).
+#define GEOMCHECK_X(id, kind, A, B, summary) \
+  TEST(precision, id) { check_table<QueryId::id>(); }
+GEOMCHECK_QUERY_LIST(GEOMCHECK_X)
+#undef GEOMCHECK_X
 
 }  // namespace
 }  // namespace geomcheck

@@ -456,12 +456,10 @@ std::vector<Mark> oracle_witness(const typename QueryTraits<Q>::Case& c, const V
   else return sweep_witness(c.a, c.b);
 }
 
-template <class A, class B>
-std::string views(const A& a, const B& b, const std::string& title, const std::vector<Mark>& extra,
-                  const Answer* answer) {
-  constexpr QueryId Q = query_of_case<PairCase<A, B>>;
-  const PairCase<A, B> c{a, b};
-  const Figure shapes[2] = {figure(a), figure(b)};
+template <class Case>
+std::string views(const Case& c, const std::string& title, const std::vector<Mark>& extra, const Answer* answer) {
+  constexpr QueryId Q = query_of_case<Case>;
+  const Figure shapes[2] = {figure(c.a), figure(c.b)};
   const Answer ans = answer ? *answer : production_answer<Q>(c);
   std::vector<Mark> marks{{Mark::Kind::PointNormal, ans.hit ? ans.point : kNowhere, ans.normal, 0, "#d00", ans.label}};
   for (const Mark& m : oracle_witness<Q>(c, ans.hit ? &ans.point : nullptr)) marks.push_back(m);
@@ -470,9 +468,10 @@ std::string views(const A& a, const B& b, const std::string& title, const std::v
 }
 
 #define GEOMCHECK_X(id, kind, A, B, summary)                                                                       \
-  template Answer production_answer<QueryId::id>(const PairCase<A, B>&);                                        \
-  template std::vector<Mark> oracle_witness<QueryId::id>(const PairCase<A, B>&, const Vec3*);                   \
-  template std::string views(const A&, const B&, const std::string&, const std::vector<Mark>&, const Answer*);
+  template Answer production_answer<QueryId::id>(const PairCase<A, B, QueryId::id>&);                                        \
+  template std::vector<Mark> oracle_witness<QueryId::id>(const PairCase<A, B, QueryId::id>&, const Vec3*);                   \
+  template std::string views(const PairCase<A, B, QueryId::id>&, const std::string&, const std::vector<Mark>&,  \
+                             const Answer*);
 GEOMCHECK_QUERY_LIST(GEOMCHECK_X)
 #undef GEOMCHECK_X
 

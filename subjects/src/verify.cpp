@@ -103,7 +103,7 @@ bool save_failure(const typename QueryTraits<Q>::Case& c, const ImplOf<Q>& subje
   ans.label = std::string(subject.name) + ": crashed";
   if (with_answer) ans = drawn_answer(c, subject);
   const std::string drawing = draw::views(
-      c.a, c.b, report::html(std::string(name) + ": " + f.property + ": " + f.detail + "; truth: " + e.truth_text), {},
+      c, report::html(std::string(name) + ": " + f.property + ": " + f.detail + "; truth: " + e.truth_text), {},
       &ans);
   report::write_counterexample_page(std::filesystem::path(path).replace_extension(".html"), name, drawing, subject.name,
                                     replay_prefix(opt) + path.string());
@@ -517,19 +517,51 @@ int verify_program(const ImplOf<Q>& subject, int argc, char** argv) {
 
 }  // namespace
 
-#define GEOMCHECK_X(id, kind, A, B, summary)                                                          \
-  VerifyResult verify(const ImplOf<QueryId::id>& subject, const VerifyOptions& opt) {                 \
-    return verify_cases<QueryId::id>(subject, opt);                                                   \
-  }                                                                                                   \
-  VerifyResult verify(const ImplOf<QueryId::id>& subject, const std::vector<std::filesystem::path>& files,  \
-                      const VerifyOptions& opt) {                                                      \
-    return verify_file_cases<QueryId::id>(subject, files, opt);                                       \
-  }                                                                                                   \
-  int replay(const ImplOf<QueryId::id>& subject, const std::vector<std::filesystem::path>& files) {   \
-    return replay_files<QueryId::id>(subject, files);                                                 \
-  }                                                                                                   \
-  int verify(const ImplOf<QueryId::id>& subject, int argc, char** argv) {                             \
-    return verify_program<QueryId::id>(subject, argc, argv);                                          \
+template <QueryId Q>
+VerifyResult verify(const ImplOf<Q>& subject, const VerifyOptions& opt) {
+  return verify_cases<Q>(subject, opt);
+}
+template <QueryId Q>
+VerifyResult verify(const ImplOf<Q>& subject, const std::vector<std::filesystem::path>& files, const VerifyOptions& opt) {
+  return verify_file_cases<Q>(subject, files, opt);
+}
+template <QueryId Q>
+int replay(const ImplOf<Q>& subject, const std::vector<std::filesystem::path>& files) {
+  return replay_files<Q>(subject, files);
+}
+template <QueryId Q>
+int verify(const ImplOf<Q>& subject, int argc, char** argv) {
+  return verify_program<Q>(subject, argc, argv);
+}
+
+// The subject inside a plain overload's argument.
+template <class Impl>
+const Impl& unwrap(const Impl& s) {
+  return s;
+}
+template <QueryId Q>
+const ImplOf<Q>& unwrap(const NamedOnly<Q>& s) {
+  return s.subject;
+}
+
+#define GEOMCHECK_X(id, kind, A, B, summary)                                                                   \
+  template VerifyResult verify<QueryId::id>(const ImplOf<QueryId::id>&, const VerifyOptions&);                \
+  template VerifyResult verify<QueryId::id>(const ImplOf<QueryId::id>&, const std::vector<std::filesystem::path>&, \
+                                            const VerifyOptions&);                                             \
+  template int replay<QueryId::id>(const ImplOf<QueryId::id>&, const std::vector<std::filesystem::path>&);    \
+  template int verify<QueryId::id>(const ImplOf<QueryId::id>&, int, char**);                                 \
+  VerifyResult verify(const PlainSubject<QueryId::id>& subject, const VerifyOptions& opt) {                   \
+    return verify_cases<QueryId::id>(unwrap(subject), opt);                                                           \
+  }                                                                                                           \
+  VerifyResult verify(const PlainSubject<QueryId::id>& subject, const std::vector<std::filesystem::path>& files, \
+                      const VerifyOptions& opt) {                                                              \
+    return verify_file_cases<QueryId::id>(unwrap(subject), files, opt);                                               \
+  }                                                                                                           \
+  int replay(const PlainSubject<QueryId::id>& subject, const std::vector<std::filesystem::path>& files) {     \
+    return replay_files<QueryId::id>(unwrap(subject), files);                                                         \
+  }                                                                                                           \
+  int verify(const PlainSubject<QueryId::id>& subject, int argc, char** argv) {                               \
+    return verify_program<QueryId::id>(unwrap(subject), argc, argv);                                                  \
   }
 GEOMCHECK_QUERY_LIST(GEOMCHECK_X)
 #undef GEOMCHECK_X

@@ -5,7 +5,8 @@
 // order for every B that has them, once for all pairs:
 //   overlap(B, Cylinder)   the same verdict;
 //   collide(B, Cylinder)   the same contact with its normal flipped (from B
-//                          towards the cylinder); depth and point unchanged.
+//                          towards the cylinder); depth and point unchanged;
+//   penetration(B, Cylinder)  likewise.
 // Cylinder/cylinder has no other order, so B = Cylinder is excluded.
 #pragma once
 
@@ -27,6 +28,13 @@ auto overlap(const B& a, const Cylinder& b) -> decltype(overlap(b, a)) {
 template <class B, class... Extra, std::enable_if_t<!std::is_same_v<B, Cylinder>, int> = 0>
 auto collide(const B& a, const Cylinder& b, Extra... extra) -> decltype(flipped(collide(b, a, extra...))) {
   return flipped(collide(b, a, extra...));
+}
+
+/// penetration(B, Cylinder): penetration(Cylinder, B) with the normal
+/// flipped (from B towards the cylinder).
+template <class B, std::enable_if_t<!std::is_same_v<B, Cylinder>, int> = 0>
+auto penetration(const B& a, const Cylinder& b) -> decltype(flipped(penetration(b, a))) {
+  return flipped(penetration(b, a));
 }
 
 }  // namespace geomcheck

@@ -32,7 +32,11 @@
   X(collide_cylinder_triangle, Collide, Cylinder, Triangle,                              \
     "overlap/collide(Cylinder, Triangle): exact verdict; penetration depth over the Minkowski patches") \
   X(collide_cylinder_cylinder, Collide, Cylinder, Cylinder,                              \
-    "overlap/collide(Cylinder, Cylinder): exact verdict; consistent contact (depth = overlap along the normal, an upper bound)")
+    "overlap/collide(Cylinder, Cylinder): exact verdict; consistent contact (depth = overlap along the normal, an upper bound)") \
+  X(penetration_cylinder_obb, Collide, Cylinder, Obb,                                    \
+    "overlap/penetration(Cylinder, Obb): exact verdict; the penetration depth over the Minkowski patches") \
+  X(penetration_cylinder_triangle, Collide, Cylinder, Triangle,                          \
+    "overlap/penetration(Cylinder, Triangle): exact verdict; the penetration depth over the Minkowski patches")
 
 // Queries over a set of points, a family of their own: their case files hold
 // points (corpora/include/geomcheck/pointset_file.hpp), not two shapes.
@@ -50,6 +54,8 @@
 #include "geomcheck/collide_cylinder_obb.hpp"
 #include "geomcheck/collide_cylinder_sphere.hpp"
 #include "geomcheck/collide_cylinder_triangle.hpp"
+#include "geomcheck/penetration_cylinder_obb.hpp"
+#include "geomcheck/penetration_cylinder_triangle.hpp"
 #include "geomcheck/sweep_sphere_cylinder.hpp"
 
 namespace geomcheck {
@@ -67,6 +73,13 @@ enum class QueryId {
   GEOMCHECK_QUERY_LIST(GEOMCHECK_X)
 #undef GEOMCHECK_X
 };
+
+/// Whether Collide query `id` is answered by production's
+/// penetration(a, b) (the exact penetration depth and its direction) rather
+/// than collide(a, b): a second query over the same two shapes.
+constexpr bool answers_penetration(QueryId id) {
+  return id == QueryId::penetration_cylinder_obb || id == QueryId::penetration_cylinder_triangle;
+}
 
 /// Static facts about one query.
 struct QueryInfo {
@@ -123,8 +136,10 @@ inline std::optional<QueryId> query_from_name(std::string_view name) {
   return std::nullopt;
 }
 
-/// A case of a two-shape query: the shapes in the query's argument order.
-template <class A, class B>
+/// A case of query Q: its two shapes in the query's argument order. The
+/// query is part of the type, so that two queries over the same shapes
+/// (collide_cylinder_obb, penetration_cylinder_obb) have cases of their own.
+template <class A, class B, QueryId Q>
 struct PairCase {
   using ShapeA = A;
   using ShapeB = B;
@@ -138,7 +153,7 @@ template <QueryId Q> struct QueryTraits;
   template <> struct QueryTraits<QueryId::id_> {              \
     using ShapeA = A;                                         \
     using ShapeB = B;                                         \
-    using Case = PairCase<A, B>;                              \
+    using Case = PairCase<A, B, QueryId::id_>;                \
     static constexpr QueryId id = QueryId::id_;               \
     static constexpr QueryKind kind = QueryKind::kind_;       \
     static constexpr const char* name = #id_;                 \
@@ -146,12 +161,10 @@ template <QueryId Q> struct QueryTraits;
 GEOMCHECK_QUERY_LIST(GEOMCHECK_X)
 #undef GEOMCHECK_X
 
-/// The query whose case type is Case (a PairCase of its shapes).
+/// The query whose case type is Case.
 template <class Case> struct QueryOfCase;
-#define GEOMCHECK_X(id_, kind_, A, B, summary) \
-  template <> struct QueryOfCase<PairCase<A, B>> { static constexpr QueryId value = QueryId::id_; };
-GEOMCHECK_QUERY_LIST(GEOMCHECK_X)
-#undef GEOMCHECK_X
+template <class A, class B, QueryId Q>
+struct QueryOfCase<PairCase<A, B, Q>> { static constexpr QueryId value = Q; };
 /// The query whose case type is Case.
 template <class Case>
 inline constexpr QueryId query_of_case = QueryOfCase<Case>::value;

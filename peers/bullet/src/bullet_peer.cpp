@@ -398,6 +398,18 @@ PeerSubject<QueryId::collide_cylinder_triangle> peer_bullet<QueryId::collide_cyl
   return collide_peer<QueryId::collide_cylinder_triangle>();
 }
 
+/// Bullet's collide(Cylinder, Obb), held to the exact penetration depth.
+template <>
+PeerSubject<QueryId::penetration_cylinder_obb> peer_bullet<QueryId::penetration_cylinder_obb>() {
+  return collide_peer<QueryId::penetration_cylinder_obb>();
+}
+
+/// Bullet's collide(Cylinder, Triangle), held to the exact penetration depth.
+template <>
+PeerSubject<QueryId::penetration_cylinder_triangle> peer_bullet<QueryId::penetration_cylinder_triangle>() {
+  return collide_peer<QueryId::penetration_cylinder_triangle>();
+}
+
 /// Bullet's collide(Cylinder, Cylinder).
 template <>
 PeerSubject<QueryId::collide_cylinder_cylinder> peer_bullet<QueryId::collide_cylinder_cylinder>() {

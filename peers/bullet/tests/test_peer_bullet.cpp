@@ -327,7 +327,7 @@ TEST(PeerBullet, DISABLED_Verify500EveryQuery) {
     opt.quiet = true;
     opt.report = false;
     opt.out = std::string(::testing::TempDir()) + "geomcheck-peer-bullet-500";
-    const VerifyResult r = verify(*p.subject, opt);
+    const VerifyResult r = verify<Q>(*p.subject, opt);
     EXPECT_EQ(r.cases, 500);
     std::printf("Bullet %s, %d cases: %d failing\n", info(Q).name, r.cases, r.failures);
     for (const auto& [property, n] : r.by_property) std::printf("  %-40s %d\n", property.c_str(), n);

@@ -210,8 +210,8 @@ bool representable(const Obb& b) {
 }
 bool representable(const Segment& s) { return is_valid(s); }
 
-template <class A, class B>
-bool expresses_pair(const PairCase<A, B>& c) {
+template <class A, class B, QueryId Q>
+bool expresses_pair(const PairCase<A, B, Q>& c) {
   return representable(c.a) && representable(c.b);
 }
 

@@ -428,4 +428,20 @@ PeerSubject<QueryId::collide_cylinder_cylinder> peer_ode<QueryId::collide_cylind
       false);
 }
 
+/// ODE's subject of penetration_cylinder_obb (ode.hpp): the box's contact
+/// above, held to the exact penetration depth.
+template <>
+PeerSubject<QueryId::penetration_cylinder_obb> peer_ode<QueryId::penetration_cylinder_obb>() {
+  return collide_subject<QueryId::penetration_cylinder_obb>(
+      peer_ode<QueryId::collide_cylinder_obb>().subject->claims->normal, false);
+}
+
+/// ODE's subject of penetration_cylinder_triangle (ode.hpp): the triangle's
+/// contact above, held to the exact penetration depth.
+template <>
+PeerSubject<QueryId::penetration_cylinder_triangle> peer_ode<QueryId::penetration_cylinder_triangle>() {
+  return collide_subject<QueryId::penetration_cylinder_triangle>(
+      peer_ode<QueryId::collide_cylinder_triangle>().subject->claims->normal, false);
+}
+
 }  // namespace geomcheck::peers

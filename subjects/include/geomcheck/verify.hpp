@@ -65,6 +65,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -161,9 +162,12 @@ bool rapidcheck(const Subject<Q>& subject) {
   });
 }
 
-// For every registered query Q, as plain overloads on its subject type
-// ImplOf<Q> (a Subject<Q> converts), so that they link the same from any
-// compiler:
+// For every registered query Q, as templates naming it (verify<Q>(subject,
+// opt), ...), and as plain overloads on its subject type ImplOf<Q> (a
+// Subject<Q> converts), so that they link the same from any compiler. Two
+// queries over the same shapes share a subject type (penetration_cylinder_obb
+// and collide_cylinder_obb): the plain overloads are the pair's collide
+// query's, and the other is verified by naming it.
 //   VerifyResult verify(subject, const VerifyOptions& opt)
 //       holds `subject` to every property on opt.cases targeted cases (see
 //       the header comment); prints a summary and returns the counts;
@@ -176,12 +180,32 @@ bool rapidcheck(const Subject<Q>& subject) {
 //   int verify(subject, argc, argv)
 //       the whole program: options from the command line (see the header
 //       comment), then verify() or replay(); the exit status.
+template <QueryId Q>
+VerifyResult verify(const ImplOf<Q>& subject, const VerifyOptions& opt);
+template <QueryId Q>
+VerifyResult verify(const ImplOf<Q>& subject, const std::vector<std::filesystem::path>& files, const VerifyOptions& opt);
+template <QueryId Q>
+int replay(const ImplOf<Q>& subject, const std::vector<std::filesystem::path>& files);
+template <QueryId Q>
+int verify(const ImplOf<Q>& subject, int argc, char** argv);
+
+/// The subject type the plain overloads of query Q take: ImplOf<Q>, or, for
+/// a query answered by penetration() (whose subject type is its pair's
+/// collide query's), a wrapper no subject converts to implicitly
+/// (NamedOnly<Q>{subject}; or name the query: verify<Q>(subject, ...)).
+template <QueryId Q>
+struct NamedOnly {
+  const ImplOf<Q>& subject;
+};
+template <QueryId Q>
+using PlainSubject = std::conditional_t<answers_penetration(Q), NamedOnly<Q>, ImplOf<Q>>;
+
 #define GEOMCHECK_X(id, kind, A, B, summary)                                                          \
-  VerifyResult verify(const ImplOf<QueryId::id>& subject, const VerifyOptions& opt);                  \
-  VerifyResult verify(const ImplOf<QueryId::id>& subject, const std::vector<std::filesystem::path>& files, \
+  VerifyResult verify(const PlainSubject<QueryId::id>& subject, const VerifyOptions& opt);            \
+  VerifyResult verify(const PlainSubject<QueryId::id>& subject, const std::vector<std::filesystem::path>& files, \
                       const VerifyOptions& opt);                                                         \
-  int replay(const ImplOf<QueryId::id>& subject, const std::vector<std::filesystem::path>& files);    \
-  int verify(const ImplOf<QueryId::id>& subject, int argc, char** argv);
+  int replay(const PlainSubject<QueryId::id>& subject, const std::vector<std::filesystem::path>& files); \
+  int verify(const PlainSubject<QueryId::id>& subject, int argc, char** argv);
 GEOMCHECK_QUERY_LIST(GEOMCHECK_X)
 #undef GEOMCHECK_X
 

@@ -131,18 +131,29 @@ using SweepSphereCylinderImpl = ImplOf<QueryId::sweep_sphere_cylinder>;
 using CylinderObbImpl = ImplOf<QueryId::collide_cylinder_obb>;
 using CylinderTriangleImpl = ImplOf<QueryId::collide_cylinder_triangle>;
 using CylinderCylinderImpl = ImplOf<QueryId::collide_cylinder_cylinder>;
+using PenetrationObbImpl = ImplOf<QueryId::penetration_cylinder_obb>;  ///< the same type as CylinderObbImpl
+using PenetrationTriangleImpl = ImplOf<QueryId::penetration_cylinder_triangle>;  ///< as CylinderTriangleImpl
 
+
+/// Production's contact of Collide query Q, its shapes in either order:
+/// collide(x, y), or penetration(x, y) for the queries that answer it
+/// (answers_penetration, registry.hpp).
+template <QueryId Q, class X, class Y>
+Contact production_contact(const X& x, const Y& y) {
+  if constexpr (answers_penetration(Q)) return penetration(x, y);
+  else return collide(x, y);
+}
 
 /// Production's subject of query Q, made from its entry points in core/
-/// (overlap and collide, cast, or sweep, found by the shapes' types; every
-/// query's header comes with registry.hpp).
+/// (overlap and collide or penetration, cast, or sweep, found by the shapes'
+/// types; every query's header comes with registry.hpp).
 template <QueryId Q>
 const ImplOf<Q>& production_of() {
   using A = typename QueryTraits<Q>::ShapeA;
   using B = typename QueryTraits<Q>::ShapeB;
   if constexpr (QueryTraits<Q>::kind == QueryKind::Collide) {
     static const ImplOf<Q> subject{"production", [](const A& a, const B& b) { return overlap(a, b); },
-                                   [](const A& a, const B& b) { return collide(a, b); }};
+                                   [](const A& a, const B& b) { return production_contact<Q>(a, b); }};
     return subject;
   } else if constexpr (QueryTraits<Q>::kind == QueryKind::Cast) {
     static const ImplOf<Q> subject{"production", [](const A& a, const B& b) { return cast(a, b); }};
@@ -206,6 +217,8 @@ using SweepCylinderCase = QueryTraits<QueryId::sweep_sphere_cylinder>::Case;
 using CylinderObbCase = QueryTraits<QueryId::collide_cylinder_obb>::Case;
 using CylinderTriangleCase = QueryTraits<QueryId::collide_cylinder_triangle>::Case;
 using CylinderCylinderCase = QueryTraits<QueryId::collide_cylinder_cylinder>::Case;
+using PenetrationObbCase = QueryTraits<QueryId::penetration_cylinder_obb>::Case;
+using PenetrationTriangleCase = QueryTraits<QueryId::penetration_cylinder_triangle>::Case;
 
 /// Production held against the oracle on one case: everything a report or a
 /// check needs. Errors are multiples of `scale`; NaN where not applicable.
@@ -299,9 +312,9 @@ CheckResult judge(QueryId id, const Evaluation& e, const Claims* claims = nullpt
 //                 judges e, so the truth is not asked for again (a campaign
 //                 evaluates every case for its report anyway).
 #define GEOMCHECK_X(id, kind, A, B, summary)                                                                    \
-  CheckResult check_robust(const PairCase<A, B>& c, const ImplOf<QueryId::id>& impl = production_of<QueryId::id>()); \
-  CheckResult check_all(const PairCase<A, B>& c, const ImplOf<QueryId::id>& impl = production_of<QueryId::id>()); \
-  CheckResult check_all(const PairCase<A, B>& c, const Evaluation& e,                                           \
+  CheckResult check_robust(const PairCase<A, B, QueryId::id>& c, const ImplOf<QueryId::id>& impl = production_of<QueryId::id>()); \
+  CheckResult check_all(const PairCase<A, B, QueryId::id>& c, const ImplOf<QueryId::id>& impl = production_of<QueryId::id>()); \
+  CheckResult check_all(const PairCase<A, B, QueryId::id>& c, const Evaluation& e,                                           \
                         const ImplOf<QueryId::id>& impl = production_of<QueryId::id>());
 GEOMCHECK_QUERY_LIST(GEOMCHECK_X)
 #undef GEOMCHECK_X
@@ -325,15 +338,15 @@ template <> struct PeerAnswerOf<QueryKind::Cast> { using type = double; };
 template <> struct PeerAnswerOf<QueryKind::Sweep> { using type = double; };
 
 #define GEOMCHECK_X(id, kind, A, B, summary)                                                                     \
-  Evaluation evaluate(const PairCase<A, B>& c, const ImplOf<QueryId::id>& impl = production_of<QueryId::id>(),    \
+  Evaluation evaluate(const PairCase<A, B, QueryId::id>& c, const ImplOf<QueryId::id>& impl = production_of<QueryId::id>(),    \
                       const PeerAnswerOf<QueryKind::kind>::type* peer = nullptr);                               \
-  CheckResult check_oracle(const PairCase<A, B>& c, const ImplOf<QueryId::id>& impl = production_of<QueryId::id>()); \
-  CheckResult check_consistency(const PairCase<A, B>& c,                                                        \
+  CheckResult check_oracle(const PairCase<A, B, QueryId::id>& c, const ImplOf<QueryId::id>& impl = production_of<QueryId::id>()); \
+  CheckResult check_consistency(const PairCase<A, B, QueryId::id>& c,                                                        \
                                 const ImplOf<QueryId::id>& impl = production_of<QueryId::id>());               \
-  CheckResult check_symmetry(const PairCase<A, B>& c, const ImplOf<QueryId::id>& impl = production_of<QueryId::id>()); \
-  CheckResult check_metamorphic(const PairCase<A, B>& c, int move,                                              \
+  CheckResult check_symmetry(const PairCase<A, B, QueryId::id>& c, const ImplOf<QueryId::id>& impl = production_of<QueryId::id>()); \
+  CheckResult check_metamorphic(const PairCase<A, B, QueryId::id>& c, int move,                                              \
                                 const ImplOf<QueryId::id>& impl = production_of<QueryId::id>());               \
-  CheckResult check_monotone(const PairCase<A, B>& c, const ImplOf<QueryId::id>& impl = production_of<QueryId::id>());
+  CheckResult check_monotone(const PairCase<A, B, QueryId::id>& c, const ImplOf<QueryId::id>& impl = production_of<QueryId::id>());
 GEOMCHECK_QUERY_LIST(GEOMCHECK_X)
 #undef GEOMCHECK_X
 

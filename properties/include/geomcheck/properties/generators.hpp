@@ -33,10 +33,26 @@ rc::Gen<Tagged<typename QueryTraits<Q>::Case>> targeted();
 template <QueryId Q>
 rc::Gen<typename QueryTraits<Q>::Case> wild();
 #define GEOMCHECK_X(id, kind, A, B, summary)                                  \
-  template <> rc::Gen<Tagged<PairCase<A, B>>> targeted<QueryId::id>(); \
-  template <> rc::Gen<PairCase<A, B>> wild<QueryId::id>();
+  template <> rc::Gen<Tagged<PairCase<A, B, QueryId::id>>> targeted<QueryId::id>(); \
+  template <> rc::Gen<PairCase<A, B, QueryId::id>> wild<QueryId::id>();
 GEOMCHECK_QUERY_LIST(GEOMCHECK_X)
 #undef GEOMCHECK_X
+
+/// Query `From`'s targeted cases as cases of query `To` over the same two
+/// shapes (the same modes and shrinking): for a second query of a pair.
+template <QueryId To, QueryId From>
+rc::Gen<Tagged<typename QueryTraits<To>::Case>> targeted_as() {
+  return rc::gen::map(targeted<From>(), [](const Tagged<typename QueryTraits<From>::Case>& t) {
+    return Tagged<typename QueryTraits<To>::Case>{{t.first.a, t.first.b}, t.second};
+  });
+}
+/// Query `From`'s wild cases as cases of query `To` over the same shapes.
+template <QueryId To, QueryId From>
+rc::Gen<typename QueryTraits<To>::Case> wild_as() {
+  return rc::gen::map(wild<From>(), [](const typename QueryTraits<From>::Case& c) {
+    return typename QueryTraits<To>::Case{c.a, c.b};
+  });
+}
 
 // --- point sets (delaunay_2d) -----------------------------------------------
 /// Uniform points in [-scale, scale)^2 (any count, 53 random bits each).

@@ -68,6 +68,10 @@ constexpr Tolerances tolerances(QueryId id) {
       return {/*verdict*/ 1e-14, /*depth*/ 1e-14, /*normal*/ 1e-14, /*point*/ 1e-14, /*t*/ 0, /*unit*/ 1e-14};
     case QueryId::collide_cylinder_triangle:
       return {/*verdict*/ 1e-14, /*depth*/ 1e-14, /*normal*/ 1e-14, /*point*/ 1e-14, /*t*/ 0, /*unit*/ 1e-14};
+    case QueryId::penetration_cylinder_obb:
+      return {/*verdict*/ 1e-14, /*depth*/ 1e-14, /*normal*/ 1e-14, /*point*/ 1e-14, /*t*/ 0, /*unit*/ 1e-14};
+    case QueryId::penetration_cylinder_triangle:
+      return {/*verdict*/ 1e-14, /*depth*/ 1e-14, /*normal*/ 1e-14, /*point*/ 1e-14, /*t*/ 0, /*unit*/ 1e-14};
     case QueryId::collide_cylinder_cylinder:
       // The contact is consistent, not minimal (see the query's header):
       // depth is the overlap along the returned normal, an upper bound of

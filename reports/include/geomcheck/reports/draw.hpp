@@ -50,13 +50,13 @@ struct Mark {
 template <QueryId Q>
 std::vector<Mark> oracle_witness(const typename QueryTraits<Q>::Case& c, const Vec3* hint = nullptr);
 
-/// Three views of shapes A (blue) and B (orange), production's answer
-/// (red), the oracle's witness (green) and `extra` marks, fitted to all of
-/// them; `title` heads the figure. Non-finite coordinates are left out (a
-/// figure with nothing finite says so).
+/// Three views of a case's shapes A (blue) and B (orange), production's
+/// answer (red), the oracle's witness (green) and `extra` marks, fitted to
+/// all of them; `title` heads the figure. Non-finite coordinates are left
+/// out (a figure with nothing finite says so).
 /// `answer`: the implementation's answer drawn in red (default: production's).
-template <class A, class B>
-std::string views(const A& a, const B& b, const std::string& title, const std::vector<Mark>& extra = {},
+template <class Case>
+std::string views(const Case& c, const std::string& title, const std::vector<Mark>& extra = {},
                   const Answer* answer = nullptr);
 
 }  // namespace geomcheck::draw

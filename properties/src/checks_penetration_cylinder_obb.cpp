@@ -1,0 +1,29 @@
+// geomcheck — the checks of penetration_cylinder_obb (declared for every query in checks.hpp).
+//
+// What each check means for a cylinder and a box is written once, for this
+// query and collide_cylinder_obb, in box_checks.hpp.
+#include <cmath>
+
+#include "box_checks.hpp"
+#include "geomcheck/penetration_cylinder_obb.hpp"
+#include "geomcheck/properties/checks.hpp"
+#include "geomcheck/properties/teeth.hpp"
+
+namespace geomcheck {
+
+// The spec of penetration_cylinder_obb: cylinder/oriented box: exact verdict; the penetration depth over the Minkowski patches.
+GEOMCHECK_SPEC(penetration_cylinder_obb, 100000,
+               (Claims{true, Claims::Depth::Penetration, true, "unit, from the cylinder towards the box: the minimal translation", "certified engine: exact verdict, certified signed distance, EPA penetration depth enclosure"}),
+               &teeth::kBoxAsCapsule, &teeth::kBoxTalkRays)
+
+void hold_to_truth(Evaluation& e, const PenetrationObbCase& c, const Contact& ct, const Contact* peer) {
+  box_checks::hold_to_truth(e, c, ct, peer);
+}
+CheckResult check_consistency(const PenetrationObbCase& c, const PenetrationObbImpl& impl) { return box_checks::consistency(c, impl); }
+CheckResult check_symmetry(const PenetrationObbCase& c, const PenetrationObbImpl& impl) { return box_checks::symmetry(c, impl); }
+CheckResult check_metamorphic(const PenetrationObbCase& c, int move, const PenetrationObbImpl& impl) {
+  return box_checks::metamorphic(c, move, impl);
+}
+CheckResult check_monotone(const PenetrationObbCase& c, const PenetrationObbImpl& impl) { return box_checks::monotone(c, impl); }
+
+}  // namespace geomcheck
