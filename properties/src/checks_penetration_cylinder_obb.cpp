@@ -16,14 +16,19 @@ GEOMCHECK_SPEC(penetration_cylinder_obb, 100000,
                (Claims{true, Claims::Depth::Penetration, true, "unit, from the cylinder towards the box: the minimal translation", "certified engine: exact verdict, certified signed distance, EPA penetration depth enclosure"}),
                &teeth::kBoxAsCapsule, &teeth::kBoxTalkRays)
 
-void hold_to_truth(Evaluation& e, const PenetrationObbCase& c, const Contact& ct, const Contact* peer) {
+namespace {
+using Case = QueryTraits<kId>::Case;
+using Impl = ImplOf<kId>;
+}  // namespace
+
+void hold_to_truth(Evaluation& e, const Case& c, const Contact& ct, const Contact* peer) {
   box_checks::hold_to_truth(e, c, ct, peer);
 }
-CheckResult check_consistency(const PenetrationObbCase& c, const PenetrationObbImpl& impl) { return box_checks::consistency(c, impl); }
-CheckResult check_symmetry(const PenetrationObbCase& c, const PenetrationObbImpl& impl) { return box_checks::symmetry(c, impl); }
-CheckResult check_metamorphic(const PenetrationObbCase& c, int move, const PenetrationObbImpl& impl) {
+CheckResult check_consistency(const Case& c, const Impl& impl) { return box_checks::consistency(c, impl); }
+CheckResult check_symmetry(const Case& c, const Impl& impl) { return box_checks::symmetry(c, impl); }
+CheckResult check_metamorphic(const Case& c, int move, const Impl& impl) {
   return box_checks::metamorphic(c, move, impl);
 }
-CheckResult check_monotone(const PenetrationObbCase& c, const PenetrationObbImpl& impl) { return box_checks::monotone(c, impl); }
+CheckResult check_monotone(const Case& c, const Impl& impl) { return box_checks::monotone(c, impl); }
 
 }  // namespace geomcheck

@@ -16,14 +16,19 @@ GEOMCHECK_SPEC(penetration_cylinder_triangle, 100000,
                (Claims{true, Claims::Depth::Penetration, true, "unit, from the cylinder towards the triangle: the minimal translation", "certified engine: exact verdict, certified signed distance, EPA penetration depth enclosure"}),
                &teeth::kTriangleNoCapStage)
 
-void hold_to_truth(Evaluation& e, const PenetrationTriangleCase& c, const Contact& ct, const Contact* peer) {
+namespace {
+using Case = QueryTraits<kId>::Case;
+using Impl = ImplOf<kId>;
+}  // namespace
+
+void hold_to_truth(Evaluation& e, const Case& c, const Contact& ct, const Contact* peer) {
   triangle_checks::hold_to_truth(e, c, ct, peer);
 }
-CheckResult check_consistency(const PenetrationTriangleCase& c, const PenetrationTriangleImpl& impl) { return triangle_checks::consistency(c, impl); }
-CheckResult check_symmetry(const PenetrationTriangleCase& c, const PenetrationTriangleImpl& impl) { return triangle_checks::symmetry(c, impl); }
-CheckResult check_metamorphic(const PenetrationTriangleCase& c, int move, const PenetrationTriangleImpl& impl) {
+CheckResult check_consistency(const Case& c, const Impl& impl) { return triangle_checks::consistency(c, impl); }
+CheckResult check_symmetry(const Case& c, const Impl& impl) { return triangle_checks::symmetry(c, impl); }
+CheckResult check_metamorphic(const Case& c, int move, const Impl& impl) {
   return triangle_checks::metamorphic(c, move, impl);
 }
-CheckResult check_monotone(const PenetrationTriangleCase& c, const PenetrationTriangleImpl& impl) { return triangle_checks::monotone(c, impl); }
+CheckResult check_monotone(const Case& c, const Impl& impl) { return triangle_checks::monotone(c, impl); }
 
 }  // namespace geomcheck

@@ -48,7 +48,9 @@
 //     Only edges that pass within the best overlap so far of the rim circle
 //     are searched (a minimal translation on such a patch moves that edge
 //     onto the rim), and none whose own points lie that deep inside.
-// `depth` is always the overlap of the shapes along `normal`.
+// `depth` is always the overlap of the shapes along `normal`. The same
+// depth is also a query of its own, penetration(Cylinder, Obb)
+// (penetration_cylinder_obb.hpp).
 //
 // Scale: the scene is rescaled by an exact power of two when its magnitude
 // leaves [2^-100, 2^100], so every finite input is answered.

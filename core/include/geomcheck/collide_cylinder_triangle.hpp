@@ -45,7 +45,9 @@
 //     the tips of the rim's projection), for
 //     edges passing within the best overlap so far of the rim circle (the
 //     search shared with collide_cylinder_obb, detail/rim_edge.hpp).
-// `depth` is always the overlap of the shapes along `normal`.
+// `depth` is always the overlap of the shapes along `normal`. The same
+// depth is also a query of its own, penetration(Cylinder, Triangle)
+// (penetration_cylinder_triangle.hpp).
 //
 // Reflections of the scene give bit-identical answers, except where the
 // cylinder's axis lies exactly in the triangle's plane: there the scene is

@@ -2,9 +2,10 @@
 // cylinder (A) and a triangle (B), and its direction.
 //
 // A query of its own beside collide_cylinder_triangle, over the same two
-// shapes: collide answers a consistent contact fast (its depth the overlap
-// along its normal, an upper bound); penetration answers the minimum over
-// every Minkowski patch, the closed roots of the curved ones included.
+// shapes: the minimum over every Minkowski patch, the closed roots of the
+// curved ones included, asked and verified by that name (its own cases,
+// checks, case files, fuzz target and report rows). collide(Cylinder, B)
+// answers the same contact, bit for bit.
 //
 // Semantics: as collide_cylinder_triangle.hpp (closed solids, touching counts,
 // the same overlap and the same contact point); `overlap` is that query's.

@@ -131,8 +131,6 @@ using SweepSphereCylinderImpl = ImplOf<QueryId::sweep_sphere_cylinder>;
 using CylinderObbImpl = ImplOf<QueryId::collide_cylinder_obb>;
 using CylinderTriangleImpl = ImplOf<QueryId::collide_cylinder_triangle>;
 using CylinderCylinderImpl = ImplOf<QueryId::collide_cylinder_cylinder>;
-using PenetrationObbImpl = ImplOf<QueryId::penetration_cylinder_obb>;  ///< the same type as CylinderObbImpl
-using PenetrationTriangleImpl = ImplOf<QueryId::penetration_cylinder_triangle>;  ///< as CylinderTriangleImpl
 
 
 /// Production's contact of Collide query Q, its shapes in either order:
@@ -217,8 +215,6 @@ using SweepCylinderCase = QueryTraits<QueryId::sweep_sphere_cylinder>::Case;
 using CylinderObbCase = QueryTraits<QueryId::collide_cylinder_obb>::Case;
 using CylinderTriangleCase = QueryTraits<QueryId::collide_cylinder_triangle>::Case;
 using CylinderCylinderCase = QueryTraits<QueryId::collide_cylinder_cylinder>::Case;
-using PenetrationObbCase = QueryTraits<QueryId::penetration_cylinder_obb>::Case;
-using PenetrationTriangleCase = QueryTraits<QueryId::penetration_cylinder_triangle>::Case;
 
 /// Production held against the oracle on one case: everything a report or a
 /// check needs. Errors are multiples of `scale`; NaN where not applicable.
