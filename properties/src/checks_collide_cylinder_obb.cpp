@@ -23,14 +23,6 @@ bool obb_in_contract(const Obb& b) {
   return true;
 }
 
-void hold_to_truth(Evaluation& e, const CylinderObbCase& c, const Contact& ct, const Contact* peer) {
-  box_checks::hold_to_truth(e, c, ct, peer);
-}
-CheckResult check_consistency(const CylinderObbCase& c, const CylinderObbImpl& impl) { return box_checks::consistency(c, impl); }
-CheckResult check_symmetry(const CylinderObbCase& c, const CylinderObbImpl& impl) { return box_checks::symmetry(c, impl); }
-CheckResult check_metamorphic(const CylinderObbCase& c, int move, const CylinderObbImpl& impl) {
-  return box_checks::metamorphic(c, move, impl);
-}
-CheckResult check_monotone(const CylinderObbCase& c, const CylinderObbImpl& impl) { return box_checks::monotone(c, impl); }
+GEOMCHECK_PAIR_CHECKS(box_checks)
 
 }  // namespace geomcheck

@@ -16,14 +16,6 @@ GEOMCHECK_SPEC(collide_cylinder_triangle, 100000,
                (Claims{true, Claims::Depth::Penetration, true, "unit, from the cylinder towards the triangle: the minimal translation", "certified engine: exact verdict, certified signed distance, EPA penetration depth enclosure"}),
                &teeth::kTriangleNoCapStage)
 
-void hold_to_truth(Evaluation& e, const CylinderTriangleCase& c, const Contact& ct, const Contact* peer) {
-  triangle_checks::hold_to_truth(e, c, ct, peer);
-}
-CheckResult check_consistency(const CylinderTriangleCase& c, const CylinderTriangleImpl& impl) { return triangle_checks::consistency(c, impl); }
-CheckResult check_symmetry(const CylinderTriangleCase& c, const CylinderTriangleImpl& impl) { return triangle_checks::symmetry(c, impl); }
-CheckResult check_metamorphic(const CylinderTriangleCase& c, int move, const CylinderTriangleImpl& impl) {
-  return triangle_checks::metamorphic(c, move, impl);
-}
-CheckResult check_monotone(const CylinderTriangleCase& c, const CylinderTriangleImpl& impl) { return triangle_checks::monotone(c, impl); }
+GEOMCHECK_PAIR_CHECKS(triangle_checks)
 
 }  // namespace geomcheck

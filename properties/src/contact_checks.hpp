@@ -241,3 +241,24 @@ CheckResult bit_identical(const Case&, const MovedAnswers& a) {
 }
 
 }  // namespace geomcheck
+
+/// Defines query kId's hold_to_truth and its four own checks as calls of the
+/// templates of namespace geomcheck::`ns` (box_checks.hpp,
+/// triangle_checks.hpp: the checks of a pair of shapes, written once for its
+/// queries). Used after GEOMCHECK_SPEC, inside namespace geomcheck.
+#define GEOMCHECK_PAIR_CHECKS(ns)                                                                              \
+  void hold_to_truth(Evaluation& e, const QueryTraits<kId>::Case& c, const Contact& ct, const Contact* peer) { \
+    ns::hold_to_truth(e, c, ct, peer);                                                                         \
+  }                                                                                                            \
+  CheckResult check_consistency(const QueryTraits<kId>::Case& c, const ImplOf<kId>& impl) {                  \
+    return ns::consistency(c, impl);                                                                           \
+  }                                                                                                            \
+  CheckResult check_symmetry(const QueryTraits<kId>::Case& c, const ImplOf<kId>& impl) {                     \
+    return ns::symmetry(c, impl);                                                                              \
+  }                                                                                                            \
+  CheckResult check_metamorphic(const QueryTraits<kId>::Case& c, int move, const ImplOf<kId>& impl) {        \
+    return ns::metamorphic(c, move, impl);                                                                     \
+  }                                                                                                            \
+  CheckResult check_monotone(const QueryTraits<kId>::Case& c, const ImplOf<kId>& impl) {                     \
+    return ns::monotone(c, impl);                                                                              \
+  }

@@ -74,13 +74,6 @@ enum class QueryId {
 #undef GEOMCHECK_X
 };
 
-/// Whether Collide query `id` is answered by production's
-/// penetration(a, b) (the exact penetration depth and its direction) rather
-/// than collide(a, b): a second query over the same two shapes.
-constexpr bool answers_penetration(QueryId id) {
-  return id == QueryId::penetration_cylinder_obb || id == QueryId::penetration_cylinder_triangle;
-}
-
 /// Static facts about one query.
 struct QueryInfo {
   QueryId id;
@@ -100,6 +93,18 @@ inline constexpr std::size_t kNumQueries = sizeof(kQueries) / sizeof(kQueries[0]
 
 /// The info row of a query id.
 constexpr const QueryInfo& info(QueryId id) { return kQueries[static_cast<std::size_t>(id)]; }
+
+/// Whether Collide query `id` is answered by production's
+/// penetration(a, b) (the exact penetration depth and its direction) rather
+/// than collide(a, b): read off the id, whose first word names the entry
+/// point (penetration_cylinder_obb beside collide_cylinder_obb).
+constexpr bool answers_penetration(QueryId id) {
+  constexpr char kVerb[] = "penetration_";
+  const char* name = info(id).name;
+  for (std::size_t i = 0; kVerb[i] != 0; ++i)
+    if (name[i] != kVerb[i]) return false;
+  return true;
+}
 
 /// The two families of queries.
 enum class QueryFamily {

@@ -5,14 +5,6 @@
 
 namespace geomcheck::gen {
 
-template <>
-rc::Gen<Tagged<QueryTraits<QueryId::penetration_cylinder_obb>::Case>> targeted<QueryId::penetration_cylinder_obb>() {
-  return targeted_as<QueryId::penetration_cylinder_obb, QueryId::collide_cylinder_obb>();
-}
-
-template <>
-rc::Gen<QueryTraits<QueryId::penetration_cylinder_obb>::Case> wild<QueryId::penetration_cylinder_obb>() {
-  return wild_as<QueryId::penetration_cylinder_obb, QueryId::collide_cylinder_obb>();
-}
+GEOMCHECK_GENERATORS_AS(penetration_cylinder_obb, collide_cylinder_obb)
 
 }  // namespace geomcheck::gen

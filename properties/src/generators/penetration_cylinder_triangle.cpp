@@ -5,14 +5,6 @@
 
 namespace geomcheck::gen {
 
-template <>
-rc::Gen<Tagged<QueryTraits<QueryId::penetration_cylinder_triangle>::Case>> targeted<QueryId::penetration_cylinder_triangle>() {
-  return targeted_as<QueryId::penetration_cylinder_triangle, QueryId::collide_cylinder_triangle>();
-}
-
-template <>
-rc::Gen<QueryTraits<QueryId::penetration_cylinder_triangle>::Case> wild<QueryId::penetration_cylinder_triangle>() {
-  return wild_as<QueryId::penetration_cylinder_triangle, QueryId::collide_cylinder_triangle>();
-}
+GEOMCHECK_GENERATORS_AS(penetration_cylinder_triangle, collide_cylinder_triangle)
 
 }  // namespace geomcheck::gen

@@ -53,6 +53,17 @@ rc::Gen<typename QueryTraits<To>::Case> wild_as() {
     return typename QueryTraits<To>::Case{c.a, c.b};
   });
 }
+/// Defines query `to`'s targeted and wild generators as query `from`'s
+/// (targeted_as, wild_as); used inside namespace geomcheck::gen.
+#define GEOMCHECK_GENERATORS_AS(to, from)                                                       \
+  template <>                                                                                   \
+  rc::Gen<Tagged<QueryTraits<QueryId::to>::Case>> targeted<QueryId::to>() {                     \
+    return targeted_as<QueryId::to, QueryId::from>();                                           \
+  }                                                                                             \
+  template <>                                                                                   \
+  rc::Gen<QueryTraits<QueryId::to>::Case> wild<QueryId::to>() {                                 \
+    return wild_as<QueryId::to, QueryId::from>();                                               \
+  }
 
 // --- point sets (delaunay_2d) -----------------------------------------------
 /// Uniform points in [-scale, scale)^2 (any count, 53 random bits each).
