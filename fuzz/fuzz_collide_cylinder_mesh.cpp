@@ -10,14 +10,13 @@
 //         a power of two; faces from the remaining bytes (index up to the
 //         vertex count: out of range sometimes), repeated indices and
 //         duplicate faces common.
-// Checks, both modes: invalid input (non-finite vertex, index out of range,
-// invalid cylinder) gives no hit; the hierarchy's overlap and collide equal
-// the brute force over every face bit for bit (face index included); the
-// contact is the deepest face's own triangle answer (smallest index on
-// ties); collide(mesh, cylinder) is the flipped collide(cylinder, mesh).
-// Structured mode also runs every collide_cylinder_triangle property
-// against the exact oracle (check_all) on the reported face. A failure
-// prints the mesh and aborts; the crash input replays with this binary.
+// Checks (mesh_checks.hpp), both modes: check_mesh_consistency (invalid
+// input gives no hit; the hierarchy's overlap and collide equal the brute
+// force bit for bit, face index included; the contact is the deepest face's
+// own triangle answer; collide(mesh, cylinder) is the flipped answer).
+// Structured mode also holds the answer to the truth face by face
+// (check_mesh_all). A failure prints the case as a mesh file (geomcheck
+// replay reads it) and aborts; the crash input replays with this binary.
 #include <fuzzer/FuzzedDataProvider.h>
 
 #include <cmath>
@@ -31,7 +30,8 @@
 #include "geomcheck/collide_cylinder_mesh.hpp"
 #include "geomcheck/collide_cylinder_triangle.hpp"
 #include "geomcheck/fuzz_decode.hpp"
-#include "geomcheck/properties/checks.hpp"
+#include "geomcheck/mesh_file.hpp"
+#include "geomcheck/properties/mesh_checks.hpp"
 
 namespace {
 using namespace geomcheck;
@@ -43,22 +43,15 @@ struct MeshInput {
 };
 
 [[noreturn]] void fail(const MeshInput& in, const std::string& what, const char* mode) {
-  std::fprintf(stderr, "\n==== geomcheck collide_cylinder_mesh property failed (mode=%s): %s\n", mode, what.c_str());
-  std::fprintf(stderr, "cylinder p=(%a, %a, %a) q=(%a, %a, %a) r=%a\n", in.cyl.p.x, in.cyl.p.y, in.cyl.p.z, in.cyl.q.x,
-               in.cyl.q.y, in.cyl.q.z, in.cyl.r);
-  for (std::size_t i = 0; i < in.v.size(); ++i)
-    std::fprintf(stderr, "v%zu (%a, %a, %a)\n", i, in.v[i].x, in.v[i].y, in.v[i].z);
-  for (std::size_t i = 0; i < in.f.size(); ++i) std::fprintf(stderr, "f%zu %u %u %u\n", i, in.f[i][0], in.f[i][1], in.f[i][2]);
-  std::fprintf(stderr, "====\n");
+  MeshFile f;
+  f.cylinder = in.cyl, f.vertices = in.v, f.faces = in.f;
+  f.found_by = std::string("fuzz_collide_cylinder_mesh (") + mode + " mode)";
+  f.note = what;
+  std::fprintf(stderr,
+               "\n==== geomcheck collide_cylinder_mesh property failed (mode=%s): %s\n---- case file (save it as "
+               "FILE.case; geomcheck replay FILE.case replays it):\n%s====\n",
+               mode, what.c_str(), write_mesh_file(f).c_str());
   std::abort();
-}
-
-bool same(const Contact& a, const Contact& b) {
-  if (a.hit != b.hit) return false;
-  if (!a.hit) return true;
-  auto eq = [](double x, double y) { return x == y || (std::isnan(x) && std::isnan(y)); };
-  return eq(a.depth, b.depth) && eq(a.normal.x, b.normal.x) && eq(a.normal.y, b.normal.y) &&
-         eq(a.normal.z, b.normal.z) && eq(a.point.x, b.point.x) && eq(a.point.y, b.point.y) && eq(a.point.z, b.point.z);
 }
 
 MeshInput decode(const std::uint8_t* data, std::size_t size, bool& structured) {
@@ -100,39 +93,10 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const MeshInput in = decode(data, size, structured);
   const char* mode = structured ? "structured" : "raw";
   const TriangleMesh mesh(in.v, in.f);
-  const bool o = overlap(in.cyl, mesh);
-  std::uint32_t idx = 0xffffffffu, idx_b = 0xffffffffu, idx_s = 0xffffffffu;
-  const Contact k = collide(in.cyl, mesh, &idx);
-  if (o != detail::overlap_brute_force(in.cyl, mesh)) fail(in, "overlap differs from the brute force", mode);
-  if (!same(k, detail::collide_brute_force(in.cyl, mesh, &idx_b)) || idx != idx_b)
-    fail(in, "collide differs from the brute force", mode);
-  if (k.hit != o) fail(in, "collide.hit differs from overlap", mode);
-  const Contact s = collide(mesh, in.cyl, &idx_s);
-  if (s.hit != k.hit || idx_s != idx || (k.hit && !(s.normal == -k.normal && s.depth == k.depth && s.point == k.point)))
-    fail(in, "collide(mesh, cylinder) is not the flipped collide(cylinder, mesh)", mode);
-  const bool valid_input = is_valid(in.cyl) && mesh.valid();
-  if (!valid_input) {
-    if (o) fail(in, "invalid input gives a hit", mode);
-    return 0;
-  }
-  // The deepest face (smallest index on ties), its own answer.
-  bool any = false;
-  double deepest = -INFINITY;
-  std::uint32_t first = 0xffffffffu;
-  for (std::uint32_t f = 0; f < mesh.size(); ++f) {
-    const Triangle t = mesh.triangle(f);
-    if (!overlap(in.cyl, t)) continue;
-    any = true;
-    const double d = collide(in.cyl, t).depth;
-    if (d > deepest) deepest = d, first = f;
-  }
-  if (any != o) fail(in, "mesh verdict is not 'some face overlaps'", mode);
-  if (!o) return 0;
-  if (idx != first) fail(in, "reported face " + std::to_string(idx) + ", deepest " + std::to_string(first), mode);
-  if (!same(k, collide(in.cyl, mesh.triangle(idx)))) fail(in, "contact differs from the face's own", mode);
-  if (!std::isfinite(k.depth) || !is_finite(k.normal) || !is_finite(k.point)) fail(in, "non-finite contact", mode);
-  if (structured)
-    if (auto f = check_all(CylinderTriangleCase{in.cyl, mesh.triangle(idx)}))
-      fail(in, "face " + std::to_string(idx) + ": " + f->property + ": " + f->detail, mode);
+  // Structured inputs are also held to the truth face by face (the engine
+  // on every face whose box meets the cylinder's); raw ones, mostly far
+  // apart or invalid, to the exact consistency checks.
+  const CheckResult f = structured ? check_mesh_all(in.cyl, mesh) : check_mesh_consistency(in.cyl, mesh);
+  if (f) fail(in, f->property + ": " + f->detail, mode);
   return 0;
 }

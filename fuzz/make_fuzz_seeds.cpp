@@ -1,8 +1,11 @@
 // geomcheck — turns the seed case files into libFuzzer seed inputs:
 // corpora/seeds/<query>/*.case -> OUT/<query>/<name> (both fuzz modes), the
 // point sets of corpora/seeds/delaunay_2d/*.case -> OUT/delaunay_2d/<name>.raw
-// (fuzz_input_from_point_set), every case file as-is into OUT/casefile/, and
-// every point-set file as-is into OUT/pointset_file/.
+// (fuzz_input_from_point_set), the meshes of corpora/seeds/<mesh query>/*.case
+// small enough for its fuzz target's raw mode -> OUT/<mesh query>/<name>.raw
+// (fuzz_input_from_mesh), every case file as-is into OUT/casefile/, every
+// point-set file as-is into OUT/pointset_file/ and every mesh file as-is
+// into OUT/mesh_file/.
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -10,6 +13,7 @@
 
 #include "geomcheck/casefile.hpp"
 #include "geomcheck/fuzz_decode.hpp"
+#include "geomcheck/mesh_file.hpp"
 #include "geomcheck/pointset_file.hpp"
 
 namespace fs = std::filesystem;
@@ -25,6 +29,9 @@ int main(int argc, char** argv) {
   fs::create_directories(out / geomcheck::kDelaunayQueryName);
   fs::create_directories(out / "casefile");
   fs::create_directories(out / "pointset_file");
+  fs::create_directories(out / "mesh_file");
+  for (const auto& q : geomcheck::kAllQueries)
+    if (q.family == geomcheck::QueryFamily::Mesh) fs::create_directories(out / q.name);
   for (const auto& e : fs::recursive_directory_iterator(in)) {
     if (!e.is_regular_file() || e.path().extension() != geomcheck::kCaseFileExtension) continue;
     fs::copy_file(e.path(), out / "casefile" / e.path().filename(), fs::copy_options::overwrite_existing);
@@ -40,6 +47,16 @@ int main(int argc, char** argv) {
       const std::string bytes = geomcheck::fuzz_input_from_point_set(r.value.points);
       std::ofstream f(out / geomcheck::kDelaunayQueryName / (e.path().stem().string() + ".raw"), std::ios::binary);
       f.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+      ++n;
+      continue;
+    }
+    if (const auto m = geomcheck::parse_mesh_file(text.str()); m.ok()) {
+      // A mesh query: the parser's seed, and (when small) the raw input of its fuzz target.
+      fs::copy_file(e.path(), out / "mesh_file" / e.path().filename(), fs::copy_options::overwrite_existing);
+      if (const auto bytes = geomcheck::fuzz_input_from_mesh(m.value)) {
+        std::ofstream f(out / m.value.query / (e.path().stem().string() + ".raw"), std::ios::binary);
+        f.write(bytes->data(), static_cast<std::streamsize>(bytes->size()));
+      }
       ++n;
       continue;
     }

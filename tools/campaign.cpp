@@ -1,4 +1,5 @@
 #include "campaign.hpp"
+#include "geomcheck/properties/mesh_checks.hpp"
 
 #include <algorithm>
 #include <atomic>
@@ -443,6 +444,10 @@ std::vector<std::pair<std::string, std::string>> campaign_variants() {
     constexpr QueryId Q = decltype(q)::value;
     for (const auto* v : Spec<Q>::variants()) out.emplace_back(v->name, info(Q).name);
   });
+#define GEOMCHECK_X(id, summary) \
+  for (const MeshImpl* v : mesh_variants()) out.emplace_back(v->name, #id);
+  GEOMCHECK_MESH_QUERY_LIST(GEOMCHECK_X)
+#undef GEOMCHECK_X
   return out;
 }
 
@@ -452,7 +457,8 @@ int run_campaign(const CampaignOptions& opt) {
   fs::create_directories(out_dir);
   const int threads = opt.threads > 0 ? opt.threads : std::max(1u, std::thread::hardware_concurrency());
   const std::string per_query = opt.cases > 0 ? std::to_string(opt.cases) + " cases per query"
-                                              : std::string("100000 cases per query (10000 point sets)");
+                                              : "100000 cases per query (" + std::to_string(kDelaunayDefaultSets) + " point sets, " +
+                                                    std::to_string(kMeshDefaultCases) + " meshes)";
   std::fprintf(stderr, "[campaign] seed %llu, %s, %d threads, output %s\n", static_cast<unsigned long long>(opt.seed),
                per_query.c_str(), threads, out_dir.string().c_str());
   if (opt.shards > 1)
@@ -484,6 +490,13 @@ int run_campaign(const CampaignOptions& opt) {
   if (opt.variant.empty() && wanted(#id)) point_sets.push_back(run_##id(opt, out_dir, threads));
   GEOMCHECK_POINTSET_QUERY_LIST(GEOMCHECK_X)
 #undef GEOMCHECK_X
+  // The mesh family: production, or its own known-wrong variants.
+  std::vector<report::MeshReport> meshes;
+#define GEOMCHECK_X(id, summary)                                                \
+  if (wanted(#id) && (opt.variant.empty() || mesh_subject(opt.variant)))        \
+    meshes.push_back(run_##id(opt, out_dir, threads));
+  GEOMCHECK_MESH_QUERY_LIST(GEOMCHECK_X)
+#undef GEOMCHECK_X
 
   report::RunInfo run;
   run.seed = opt.seed;
@@ -503,15 +516,16 @@ int run_campaign(const CampaignOptions& opt) {
   if (!opt.variant.empty()) run.rerun += " --variant " + opt.variant;
   run.under_test = opt.variant.empty() ? "production" : opt.variant + " (a known-wrong variant)";
   if (opt.shards > 1) {
-    write_shard(out_dir / "shard.json", opt, run, reps, point_sets);  // the run's rerun: all shards
+    write_shard(out_dir / "shard.json", opt, run, reps, point_sets, meshes);  // the run's rerun: all shards
     run.rerun += " --shard " + std::to_string(opt.shard) + "/" + std::to_string(opt.shards);
   }
-  report::write_json(out_dir / "report.json", run, reps, point_sets);
-  report::write_html(out_dir / "report.html", run, reps, point_sets);
-  if (!opt.junit.empty()) report::write_junit(opt.junit, run, reps, point_sets);
+  report::write_json(out_dir / "report.json", run, reps, point_sets, meshes);
+  report::write_html(out_dir / "report.html", run, reps, point_sets, meshes);
+  if (!opt.junit.empty()) report::write_junit(opt.junit, run, reps, point_sets, meshes);
   int beyond = 0;
   for (const QueryReport& r : reps) beyond += r.beyond + r.check_failures;
   for (const report::PointSetReport& r : point_sets) beyond += r.failures;
+  for (const report::MeshReport& r : meshes) beyond += r.failures;
   std::fprintf(stderr, "[campaign] wrote %s and %s\n", (out_dir / "report.json").string().c_str(),
                (out_dir / "report.html").string().c_str());
   return beyond;

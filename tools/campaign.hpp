@@ -55,6 +55,14 @@ inline constexpr int kDelaunayDefaultSets = 10000;
 /// delaunay_2d's part of a campaign (tools/campaign_pointset.cpp).
 report::PointSetReport run_delaunay_2d(const CampaignOptions& opt, const std::filesystem::path& out_dir, int threads);
 
+/// Meshes of a default campaign of collide_cylinder_mesh.
+inline constexpr int kMeshDefaultCases = 2000;
+/// collide_cylinder_mesh's part of a campaign (tools/campaign_mesh.cpp): the
+/// production subject, or the known-wrong variant opt.variant when it is one
+/// of the mesh query's (mesh_variants()).
+report::MeshReport run_collide_cylinder_mesh(const CampaignOptions& opt, const std::filesystem::path& out_dir,
+                                             int threads);
+
 /// Runs the campaign; returns the number of disagreements beyond the band
 /// (0 = production verified on every case run).
 int run_campaign(const CampaignOptions& opt);

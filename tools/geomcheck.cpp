@@ -21,7 +21,9 @@
 #include "geomcheck/fuzz_decode.hpp"
 #include "geomcheck/delaunay_2d.hpp"
 #include "geomcheck/oracles/delaunay_2d.hpp"
+#include "geomcheck/mesh_file.hpp"
 #include "geomcheck/pointset_file.hpp"
+#include "geomcheck/properties/mesh_checks.hpp"
 #include "geomcheck/properties/checks.hpp"
 #include "geomcheck/properties/spec.hpp"
 #include "geomcheck/properties/tolerances.hpp"
@@ -141,11 +143,53 @@ Replayed replay_point_set(const fs::path& path, bool quiet) {
   return pass ? Replayed::Passed : Replayed::Failed;
 }
 
+// Replays one mesh file: every check of mesh_checks.hpp on the subject
+// (production or a known-wrong variant of the mesh query), and the filed
+// verdict (if any) is the truth's, the strongest of the faces'.
+Replayed replay_mesh(const fs::path& path, bool quiet, const std::string& subject) {
+  const MeshParseResult pr = load_mesh_file(path);
+  if (!pr.ok()) return unreadable(path, pr.error);
+  const MeshFile& f = pr.value;
+  const MeshImpl* impl = mesh_subject(subject.empty() ? "production" : subject);
+  if (!impl) return unreadable(path, "no subject '" + subject + "' of query " + f.query);
+  const TriangleMesh mesh = mesh_of(f);
+  MeshTruth truth;
+  const CheckResult failure = check_mesh_all(f.cylinder, mesh, *impl, &truth);
+  const std::string truth_word = truth.valid ? oracle::to_string(truth.verdict) : "invalid";
+  const bool verdict_ok = f.oracle_verdict.empty() || f.oracle_verdict == truth_word;
+  const bool pass = !failure && verdict_ok;
+  if (quiet && pass) {
+    std::printf("PASS %s\n", path.string().c_str());
+    return Replayed::Passed;
+  }
+  std::uint32_t face = 0xffffffffu;
+  const Contact k = impl->collide(f.cylinder, mesh, &face);
+  std::printf("%s %s\n  query: %s\n  subject: %s\n  cylinder: p=(%.17g, %.17g, %.17g) q=(%.17g, %.17g, %.17g) r=%.17g\n"
+              "  mesh: %zu vertices, %zu faces%s\n",
+              pass ? "PASS" : "FAIL", path.string().c_str(), f.query.c_str(), impl->name, f.cylinder.p.x,
+              f.cylinder.p.y, f.cylinder.p.z, f.cylinder.q.x, f.cylinder.q.y, f.cylinder.q.z, f.cylinder.r,
+              f.vertices.size(), f.faces.size(), mesh.valid() ? "" : " (invalid: a non-finite vertex or an index out of range)");
+  if (!f.found_by.empty()) std::printf("  found by: %s\n", f.found_by.c_str());
+  if (k.hit)
+    std::printf("  %s: hit, face %u, depth %.17g, normal (%.17g, %.17g, %.17g), point (%.17g, %.17g, %.17g)\n", impl->name,
+                face, k.depth, k.normal.x, k.normal.y, k.normal.z, k.point.x, k.point.y, k.point.z);
+  else
+    std::printf("  %s: no hit\n", impl->name);
+  std::printf("  truth: %s (faces separated by their boxes %d, decided by the engine %d)\n", truth_word.c_str(),
+              truth.faces_by_box, truth.faces_by_engine);
+  if (!f.oracle_verdict.empty())
+    std::printf("  filed oracle verdict: %s%s\n", f.oracle_verdict.c_str(), verdict_ok ? "" : "  <-- the truth differs");
+  std::printf("  checks: %s\n", failure ? (failure->property + ": " + failure->detail).c_str() : "all pass");
+  return pass ? Replayed::Passed : Replayed::Failed;
+}
+
 // Replays one case: passed when every check passes and the filed verdict
 // (if any) is the truth's; a verdict filed on invalid input is wrong (the
 // only truth there is "invalid": no hit).
 Replayed replay_one(const fs::path& path, bool quiet, const std::string& subject) {
-  if (family_of(declared_query(path)) == QueryFamily::PointSet) return replay_point_set(path, quiet);
+  const auto family = family_of(declared_query(path));
+  if (family == QueryFamily::PointSet) return replay_point_set(path, quiet);
+  if (family == QueryFamily::Mesh) return replay_mesh(path, quiet, subject);
   const ParseResult pr = load_case(path);
   if (!pr.ok()) return unreadable(path, pr.error);
   const CaseFile& f = pr.value;
@@ -245,6 +289,9 @@ int cmd_replay(const std::vector<std::string>& args, bool quiet, const std::stri
 
 QueryId need_query(const std::string& s) {
   const auto q = query_from_name(s);
+  if (!q && family_of(s))
+    throw InputError("query '" + s + "' is of the " + family_name(*family_of(s)) +
+                     " family: its fuzz target prints the failing case as a case file itself; replay that file");
   if (!q) {
     std::string known;
     for (const auto& i : kQueries) known += std::string(" ") + i.name;
@@ -398,7 +445,8 @@ void add_replay(CLI::App& app, int& rc) {
   static std::string subject;
   auto* r = app.add_subcommand("replay", "Replays case files (or every *.case under a directory): production, the "
                                          "truth and FCL side by side, the verdict margin and every check. A point-set "
-                                         "file (query delaunay_2d) is held to the exact checker and CGAL. Exit status "
+                                         "file (query delaunay_2d) is held to the exact checker and CGAL; a mesh file "
+                                         "(collide_cylinder_mesh) to the brute force and the engine face by face. Exit status "
                                          "1 when a check fails, 2 when a file cannot be read or parsed.");
   r->add_flag("--quiet", quiet, "one line per passing case");
   r->add_option("--subject,--variant", subject,
@@ -441,11 +489,10 @@ int main(int argc, char** argv) {
   add_replay(app, rc);
   add_converter(app, true, rc);
   add_converter(app, false, rc);
-  app.add_subcommand("queries", "Lists the registered queries: id, family (a pair of shapes, or a point set), what "
-                                "production answers.")
+  app.add_subcommand("queries", "Lists the registered queries: id, family (a pair of shapes, a point set, or a "
+                                "cylinder and a mesh), what production answers.")
       ->callback([] {
-        for (const auto& q : kAllQueries)
-          std::printf("%-26s %-9s %s\n", q.name, q.family == QueryFamily::Pair ? "pair" : "point-set", q.summary);
+        for (const auto& q : kAllQueries) std::printf("%-26s %-9s %s\n", q.name, family_name(q.family), q.summary);
       });
   std::string names;
   bool known = false;

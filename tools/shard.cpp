@@ -17,11 +17,12 @@ namespace {
 namespace fs = std::filesystem;
 using Json = nlohmann::ordered_json;
 using report::PointSetReport;
+using report::MeshReport;
 using report::QueryReport;
 using report::Series;
 
 /// The layout of shard.json (bumped on any change: merge refuses others).
-constexpr int kShardFormat = 1;
+constexpr int kShardFormat = 2;
 
 /// A string that lives as long as the program (Claims hold const char*).
 const char* intern(const std::string& s) {
@@ -211,6 +212,27 @@ void fields(IO& io, PointSetReport& r) {
 }
 
 template <class IO>
+void fields(IO& io, MeshReport& r) {
+  io("name", r.name);
+  io("summary", r.summary);
+  io("under_test", r.under_test);
+  io("requested", r.requested);
+  io("stopped_by_time", r.stopped_by_time);
+  io("meshes", r.meshes);
+  io("faces", r.faces);
+  io("modes", r.modes);
+  io("verdicts", r.verdicts);
+  io("failures", r.failures);
+  io("failures_by_property", r.failures_by_property);
+  io("faces_by_box", r.faces_by_box);
+  io("faces_by_engine", r.faces_by_engine);
+  io("production_us", r.production_us);
+  io("brute_force_us", r.brute_force_us);
+  io("seconds", r.seconds);
+  io("counterexamples", r.counterexamples);
+}
+
+template <class IO>
 void fields(IO& io, report::RunInfo& r) {
   io("version", r.version);
   io("started", r.started);
@@ -305,6 +327,23 @@ void merge_into(PointSetReport& a, const PointSetReport& b) {
   add(a.counterexamples, b.counterexamples);
 }
 
+void merge_into(MeshReport& a, const MeshReport& b) {
+  a.requested += b.requested;
+  a.stopped_by_time = a.stopped_by_time || b.stopped_by_time;
+  a.meshes += b.meshes;
+  a.faces += b.faces;
+  add(a.modes, b.modes);
+  add(a.verdicts, b.verdicts);
+  a.failures += b.failures;
+  add(a.failures_by_property, b.failures_by_property);
+  a.faces_by_box += b.faces_by_box;
+  a.faces_by_engine += b.faces_by_engine;
+  a.production_us += b.production_us;
+  a.brute_force_us += b.brute_force_us;
+  a.seconds = std::max(a.seconds, b.seconds);  // the shards run side by side
+  add(a.counterexamples, b.counterexamples);
+}
+
 /// A path written by a shard whose output was `was`, now under `now`.
 std::string moved(const std::string& p, const fs::path& was, const fs::path& now) {
   const fs::path rel = fs::path(p).lexically_normal().lexically_relative(was.lexically_normal());
@@ -328,6 +367,7 @@ struct Shard {
   report::RunInfo run;
   std::vector<QueryReport> reps;
   std::vector<PointSetReport> point_sets;
+  std::vector<MeshReport> meshes;
 };
 
 /// Every file of a shard's folder but its own reports, copied into out.
@@ -342,7 +382,8 @@ void copy_saved(const fs::path& from, const fs::path& out) {
 }  // namespace
 
 void write_shard(const fs::path& file, const CampaignOptions& opt, const report::RunInfo& run,
-                 const std::vector<QueryReport>& reps, const std::vector<PointSetReport>& point_sets) {
+                 const std::vector<QueryReport>& reps, const std::vector<PointSetReport>& point_sets,
+                 const std::vector<MeshReport>& meshes) {
   Json j = Json::object();
   j["geomcheck_shard"] = kShardFormat;
   j["shard"] = opt.shard;
@@ -359,6 +400,7 @@ void write_shard(const fs::path& file, const CampaignOptions& opt, const report:
   j["run"] = std::move(r);
   w("reports", reps);
   w("point_sets", point_sets);
+  w("meshes", meshes);
   std::ofstream f(file);
   f << j.dump(1) << "\n";
   if (!f) std::fprintf(stderr, "[campaign] cannot write %s\n", file.string().c_str());
@@ -388,6 +430,7 @@ int merge_shards(const std::vector<std::string>& dirs, const std::string& out_ar
       fields(rr, s.run);
       r("reports", s.reps);
       r("point_sets", s.point_sets);
+      r("meshes", s.meshes);
       if (fs::exists(out) && fs::equivalent(out, s.dir))
         throw std::runtime_error("the output folder " + out.string() + " is one of the shards' folders");
       shards.push_back(std::move(s));
@@ -427,6 +470,7 @@ int merge_shards(const std::vector<std::string>& dirs, const std::string& out_ar
   fs::create_directories(out);
   std::vector<QueryReport> reps;
   std::vector<PointSetReport> point_sets;
+  std::vector<MeshReport> meshes;
   report::RunInfo run = shards[seen[0]].run;
   for (int i = 0; i < n; ++i) {  // in shard order
     Shard& s = shards[seen[i]];
@@ -434,28 +478,32 @@ int merge_shards(const std::vector<std::string>& dirs, const std::string& out_ar
     copy_saved(s.dir, out);
     for (QueryReport& r : s.reps) move_paths(r, was, out);
     for (PointSetReport& p : s.point_sets) move_paths(p.counterexamples, was, out);
+    for (MeshReport& m : s.meshes) move_paths(m.counterexamples, was, out);
     if (i == 0) {
       reps = std::move(s.reps);
       point_sets = std::move(s.point_sets);
+      meshes = std::move(s.meshes);
       continue;
     }
-    if (s.reps.size() != reps.size() || s.point_sets.size() != point_sets.size()) {
+    if (s.reps.size() != reps.size() || s.point_sets.size() != point_sets.size() || s.meshes.size() != meshes.size()) {
       std::fprintf(stderr, "geomcheck merge: %s ran other queries than shard 0\n", s.dir.string().c_str());
       return 2;
     }
     for (std::size_t q = 0; q < reps.size(); ++q) merge_into(reps[q], s.reps[q]);
     for (std::size_t q = 0; q < point_sets.size(); ++q) merge_into(point_sets[q], s.point_sets[q]);
+    for (std::size_t q = 0; q < meshes.size(); ++q) merge_into(meshes[q], s.meshes[q]);
     run.started = std::min(run.started, s.run.started);
   }
   for (QueryReport& r : reps)
     if (r.peers.empty()) r.first.clear();  // no engine built: nothing to set beside (as unsharded)
   run.command = command;
-  report::write_json(out / "report.json", run, reps, point_sets);
-  report::write_html(out / "report.html", run, reps, point_sets);
-  if (!junit.empty()) report::write_junit(junit, run, reps, point_sets);
+  report::write_json(out / "report.json", run, reps, point_sets, meshes);
+  report::write_html(out / "report.html", run, reps, point_sets, meshes);
+  if (!junit.empty()) report::write_junit(junit, run, reps, point_sets, meshes);
   int failures = 0;
   for (const QueryReport& r : reps) failures += r.beyond + r.check_failures;
   for (const PointSetReport& p : point_sets) failures += p.failures;
+  for (const MeshReport& m : meshes) failures += m.failures;
   std::fprintf(stderr, "[merge] %d shards merged into %s and %s\n", n, (out / "report.json").string().c_str(),
                (out / "report.html").string().c_str());
   std::printf("merge: %s\n", failures ? "FAILURES found (see the report)" : "no failure");

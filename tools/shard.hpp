@@ -23,7 +23,8 @@ namespace geomcheck {
 
 /// Writes a shard's reports to `file` (JSON, exact: doubles round-trip).
 void write_shard(const std::filesystem::path& file, const CampaignOptions& opt, const report::RunInfo& run,
-                 const std::vector<report::QueryReport>& reps, const std::vector<report::PointSetReport>& point_sets);
+                 const std::vector<report::QueryReport>& reps, const std::vector<report::PointSetReport>& point_sets,
+                 const std::vector<report::MeshReport>& meshes);
 
 /// `geomcheck merge`: reads DIR/shard.json of every directory, checks they
 /// are the N distinct shards of one campaign, copies their saved cases into

@@ -58,6 +58,8 @@ class Parser : public detail::LineParser<Parser, CaseFile> {
     if (id == kDelaunayQueryName)
       return fail(n, "query " + std::string(kDelaunayQueryName) +
                          " is a point-set case (see pointset_file.hpp: parse it with parse_point_set)");
+    if (family_of(id) == QueryFamily::Mesh)
+      return fail(n, "query " + std::string(id) + " is a mesh case (see mesh_file.hpp: parse it with parse_mesh_file)");
     const auto q = query_from_name(id);
     if (!q) return fail(n, "unknown query " + quote_token(id) + " (known: " + known_query_list() + ")");
     file_.query = *q;

@@ -1,9 +1,11 @@
 // geomcheck — the text core of both case-file formats (declared in
 // geomcheck/detail/text_format.hpp), the NUMBER writer and reader of
 // casefile.hpp, and the loading and saving of files of either format
-// (load_case, save_case, load_point_set, save_point_set).
+// (load_case, save_case, load_point_set, save_point_set, load_mesh_file,
+// save_mesh_file).
 #include "geomcheck/detail/text_format.hpp"
 
+#include "geomcheck/mesh_file.hpp"
 #include "geomcheck/pointset_file.hpp"
 
 #include <algorithm>
@@ -506,6 +508,14 @@ bool save_case(const std::filesystem::path& path, const CaseFile& c, std::string
 
 bool save_point_set(const std::filesystem::path& path, const PointSetFile& f, std::string& error) {
   return save_file(path, f, point_set_error(f), &write_point_set, error);
+}
+
+MeshParseResult load_mesh_file(const std::filesystem::path& path) {
+  return load_file(path, kMaxMeshFileBytes, &parse_mesh_file);
+}
+
+bool save_mesh_file(const std::filesystem::path& path, const MeshFile& f, std::string& error) {
+  return save_file(path, f, mesh_file_error(f), &write_mesh_file, error);
 }
 
 }  // namespace geomcheck

@@ -410,10 +410,13 @@ TEST(Corpus, SeedsParseAndMatchTheirQuery) {
   EXPECT_GE(per_query["collide_cylinder_sphere"], 8);
   EXPECT_GE(per_query["cast_segment_cylinder"], 8);
   EXPECT_GE(per_query["collide_cylinder_cylinder"], 8);
-  // Every seed folder is a registered query's, or the Delaunay query's
-  // point sets (their own format and test: test_pointset_file).
+  // Every seed folder is a registered pair query's, or another family's
+  // (point sets, meshes: their own formats and tests, test_pointset_file and
+  // test_mesh_file).
   for (const auto& dir : fs::directory_iterator(kCorpora / "seeds")) {
-    if (!dir.is_directory() || dir.path().filename() == "delaunay_2d") continue;
+    if (!dir.is_directory()) continue;
+    const auto family = family_of(dir.path().filename().string());
+    if (family && *family != QueryFamily::Pair) continue;
     EXPECT_TRUE(query_from_name(dir.path().filename().string()).has_value())
         << "seeds folder of an unknown query: " << dir.path();
   }
@@ -454,8 +457,9 @@ TEST(Corpus, RegressionsParseAndMatchTheirQuery) {
   if (fs::is_directory(root)) {
     for (const auto& dir : fs::directory_iterator(root)) {
       if (!dir.is_directory()) continue;
-      // Point sets of the Delaunay query have their own format and test (test_pointset_file).
-      if (dir.path().filename() == "delaunay_2d") continue;
+      // Point sets and meshes have their own formats and tests (test_pointset_file, test_mesh_file).
+      const auto family = family_of(dir.path().filename().string());
+      if (family && *family != QueryFamily::Pair) continue;
       const auto q = query_from_name(dir.path().filename().string());
       EXPECT_TRUE(q.has_value()) << "regressions folder of an unknown query: " << dir.path();
       for (const auto& f : case_files(dir.path())) {

@@ -1,5 +1,7 @@
 #include "geomcheck/reports/draw.hpp"
 
+#include "geomcheck/collide_cylinder_mesh.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -474,5 +476,35 @@ std::string views(const Case& c, const std::string& title, const std::vector<Mar
                              const Answer*);
 GEOMCHECK_QUERY_LIST(GEOMCHECK_X)
 #undef GEOMCHECK_X
+
+std::string mesh_views(const Cylinder& cyl, const TriangleMesh& mesh, const std::string& title) {
+  Figure faces;
+  const double size = std::max(max_abs(cyl.q - cyl.p), cyl.r);
+  const double grow = std::isfinite(size) ? 2 * size : 0;
+  std::size_t drawn = 0;
+  std::uint32_t face = 0xffffffffu;
+  const Contact k = collide(cyl, mesh, &face);
+  for (std::size_t i = 0; mesh.valid() && i < mesh.size() && drawn < 400; ++i) {
+    const Triangle t = mesh.triangle(i);
+    bool near = true;
+    for (int c = 0; c < 3 && near; ++c) {
+      auto at = [c](Vec3 v) { return c == 0 ? v.x : c == 1 ? v.y : v.z; };
+      const double lo = std::min(at(cyl.p), at(cyl.q)) - cyl.r - grow, hi = std::max(at(cyl.p), at(cyl.q)) + cyl.r + grow;
+      near = !(std::max({at(t.a), at(t.b), at(t.c)}) < lo || std::min({at(t.a), at(t.b), at(t.c)}) > hi);
+    }
+    if (!near && i != face) continue;
+    faces.hulls.push_back({t.a, t.b, t.c});
+    faces.lines.push_back({{t.a, t.b, t.c}, true});
+    ++drawn;
+  }
+  const Figure shapes[2] = {figure(cyl), faces};
+  const Answer ans = answer_of(k, "production");
+  std::vector<Mark> marks{{Mark::Kind::PointNormal, ans.hit ? ans.point : kNowhere, ans.normal, 0, "#d00",
+                           ans.label + (k.hit ? ", face " + std::to_string(face) : std::string())}};
+  if (k.hit && face < mesh.size())
+    for (const Mark& m : collide_witness(cyl, mesh.triangle(face), &ans.point)) marks.push_back(m);
+  return render(shapes, marks,
+                title + " (" + std::to_string(drawn) + " of " + std::to_string(mesh.size()) + " faces drawn)");
+}
 
 }  // namespace geomcheck::draw

@@ -413,6 +413,51 @@ void write_point_set_section(std::ostream& h, const PointSetReport& r) {
   }
 }
 
+/// A mesh query's entry in report.json.
+Json mesh_json(const MeshReport& r) {
+  return {{"id", r.name}, {"summary", r.summary}, {"implementation", r.under_test}, {"requested", r.requested},
+          {"stopped_by_time", r.stopped_by_time}, {"meshes", r.meshes}, {"faces", r.faces}, {"failures", r.failures},
+          {"modes", r.modes}, {"verdicts", r.verdicts}, {"failures_by_property", r.failures_by_property},
+          {"faces_by_box", r.faces_by_box}, {"faces_by_engine", r.faces_by_engine},
+          {"seconds", json_num(r.seconds)},
+          {"meshes_per_second", json_num(r.seconds > 0 ? r.meshes / r.seconds : NAN)},
+          {"production_us_total", json_num(r.production_us)}, {"brute_force_us_total", json_num(r.brute_force_us)},
+          {"brute_force_over_production", json_num(r.production_us > 0 ? r.brute_force_us / r.production_us : NAN)},
+          {"counterexamples", r.counterexamples}};
+}
+
+// A mesh query's section: meshes by mode and verdict, failures with their
+// drawings, how the truth was decided, time against the brute force.
+void write_mesh_section(std::ostream& h, const MeshReport& r) {
+  const bool clean = r.failures == 0;
+  h << "<h2 id='" << r.name << "'>" << r.name << "</h2><p>" << html(r.summary) << "</p><p class='"
+    << (clean ? "ok'>verified: every mesh's answer is the brute force's bit for bit, the deepest face's own, and held "
+                "to the certified engine face by face"
+              : "bad'>FAILURES found")
+    << " (" << html(r.under_test) << ")</p><table><tr><th class='l'>measure</th><th>value</th></tr>"
+    << "<tr><td class='l'>meshes run of requested (faces)</td><td>" << r.meshes << " of " << r.requested << " ("
+    << r.faces << ")" << (r.stopped_by_time ? "; stopped by --seconds" : "") << "</td></tr><tr><td class='l'>failures</td><td class='"
+    << (clean ? "ok" : "bad") << "'>" << r.failures << "</td></tr><tr><td class='l'>meshes per second (checks, all threads)</td><td>"
+    << jnum(r.seconds > 0 ? r.meshes / r.seconds : NAN)
+    << "</td></tr><tr><td class='l'>faces separated by their boxes / decided by the engine</td><td>" << r.faces_by_box
+    << " / " << r.faces_by_engine << "</td></tr><tr><td class='l'>time, production (hierarchy) / brute force</td><td>"
+    << jnum(r.production_us / 1e3) << " ms / " << jnum(r.brute_force_us / 1e3) << " ms</td></tr></table>";
+  auto table = [&](const char* what, const std::map<std::string, int>& m) {
+    h << "<table><tr><th class='l'>" << what << "</th><th>meshes</th></tr>";
+    for (const auto& [k, v] : m) h << "<tr><td class='l'>" << html(k) << "</td><td>" << v << "</td></tr>";
+    h << "</table>";
+  };
+  table("generator mode", r.modes);
+  table("exact verdict", r.verdicts);
+  if (!r.failures_by_property.empty()) {
+    table("failed property", r.failures_by_property);
+    h << "<p>counterexamples (replay with <code>geomcheck replay FILE</code>; each drawn in FILE.html):</p><ul>";
+    for (std::size_t k = 0; k < r.counterexamples.size() && k < 50; ++k)
+      h << "<li><code>" << html(r.counterexamples[k]) << "</code></li>";
+    h << "</ul>";
+  }
+}
+
 }  // namespace
 
 std::string html(const std::string& s) {
@@ -428,10 +473,11 @@ std::string html(const std::string& s) {
 
 
 void write_json(const std::filesystem::path& file, const RunInfo& run, std::vector<QueryReport>& reps,
-                const std::vector<PointSetReport>& point_sets) {
+                const std::vector<PointSetReport>& point_sets, const std::vector<MeshReport>& meshes) {
   bool passed = true;
   for (const QueryReport& r : reps) passed = passed && r.beyond == 0 && r.check_failures == 0;
   for (const PointSetReport& r : point_sets) passed = passed && r.failures == 0;
+  for (const MeshReport& r : meshes) passed = passed && r.failures == 0;
   Json report = {{"tool", "geomcheck"}, {"schema_version", kReportSchemaVersion}, {"version", run.version},
                  {"started", run.started}, {"command_line", run.command}, {"verdict", passed ? "passed" : "failed"},
                  {"seed", run.seed}, {"cases_per_query", run.per_query}, {"saved_cases_per_kind", kMaxSavedPerKind},
@@ -443,13 +489,17 @@ void write_json(const std::filesystem::path& file, const RunInfo& run, std::vect
     Json& sets = report["point_set_queries"] = Json::array();
     for (const PointSetReport& r : point_sets) sets.push_back(point_set_json(r));
   }
+  if (!meshes.empty()) {
+    Json& m = report["mesh_queries"] = Json::array();
+    for (const MeshReport& r : meshes) m.push_back(mesh_json(r));
+  }
   // Text that is not UTF-8 (a path, say) is written with U+FFFD in its place, not thrown on.
   std::ofstream js(file);
   js << report.dump(2, ' ', false, Json::error_handler_t::replace) << '\n';
 }
 
 void write_html(const std::filesystem::path& file, const RunInfo& run, std::vector<QueryReport>& reps,
-                const std::vector<PointSetReport>& point_sets) {
+                const std::vector<PointSetReport>& point_sets, const std::vector<MeshReport>& meshes) {
   std::ofstream h(file);
   h << "<!doctype html><html lang='en'><head><meta charset='utf-8'><title>geomcheck campaign report</title>"
        "<style>body{font-family:sans-serif;margin:2em;max-width:1100px}table{border-collapse:collapse;margin:1em 0}"
@@ -464,6 +514,7 @@ void write_html(const std::filesystem::path& file, const RunInfo& run, std::vect
   write_precision_table(h, reps);
   for (QueryReport& r : reps) write_query_section(h, r, file.parent_path());
   for (const PointSetReport& r : point_sets) write_point_set_section(h, r);
+  for (const MeshReport& r : meshes) write_mesh_section(h, r);
   h << "</body></html>\n";
 }
 
@@ -514,7 +565,7 @@ std::vector<JunitCase> junit_cases(const QueryReport& r, const std::string& repl
 }  // namespace
 
 void write_junit(const std::filesystem::path& file, const RunInfo& run, const std::vector<QueryReport>& reps,
-                 const std::vector<PointSetReport>& point_sets) {
+                 const std::vector<PointSetReport>& point_sets, const std::vector<MeshReport>& meshes) {
   std::vector<JunitCase> cases;
   for (const QueryReport& r : reps) {
     for (JunitCase& c : junit_cases(r, replay_prefix(r))) cases.push_back(std::move(c));
@@ -527,6 +578,20 @@ void write_junit(const std::filesystem::path& file, const RunInfo& run, const st
         c.message = std::to_string(c.failures) + " of " + std::to_string(r.sets) + " point sets\n";
         for (const std::string& cx : r.counterexamples)
           if (cx.find(prop) != std::string::npos) {
+            c.message += "replay: geomcheck replay " + cx + "\n";
+            break;
+          }
+      }
+      cases.push_back(c);
+    }
+  for (const MeshReport& r : meshes)
+    for (const char* family : {"robust", "consistency", "bvh-equals-brute-force", "symmetry", "deepest-face", "oracle"}) {
+      JunitCase c{r.name + "." + family, 0, ""};
+      for (const auto& [prop, n] : r.failures_by_property)
+        if (prop.rfind(family, 0) == 0) c.failures += n, c.message += prop + ": " + std::to_string(n) + "\n";
+      if (c.failures) {
+        for (const std::string& cx : r.counterexamples)
+          if (cx.find("-" + std::string(family)) != std::string::npos) {
             c.message += "replay: geomcheck replay " + cx + "\n";
             break;
           }

@@ -16,6 +16,7 @@ VOLATILE = {
     "started", "command_line", "production_ns_per_query", "oracle_us_per_case", "cases_per_second_per_core",
     "ns_per_call", "production_us", "cgal_us", "production_ms", "cgal_ms", "speed_ratio", "time_ratio",
     "production_us_per_set", "cgal_us_per_set", "production_us_total", "cgal_us_total", "production_over_cgal",
+    "seconds", "meshes_per_second", "brute_force_us_total", "brute_force_over_production",
 }
 # Lists of saved files: capped per run or shard, so only checked to exist.
 PATHS = {"counterexamples", "cases", "bugreports_failed"}

@@ -39,6 +39,23 @@ grep -q "no such file" "$tmp/out" && ok || bad "missing file is named"
 expect_rc 0 "queries" "$tool" queries
 grep -q "cast_segment_cylinder" "$tmp/out" && ok || bad "queries lists cast_segment_cylinder"
 grep -q "^delaunay_2d  *point-set" "$tmp/out" && ok || bad "queries lists delaunay_2d as a point-set query"
+grep -q "^collide_cylinder_mesh  *mesh" "$tmp/out" && ok || bad "queries lists collide_cylinder_mesh as a mesh query"
+
+# The mesh family runs in the campaign: its own section in report.json.
+expect_rc 0 "campaign of collide_cylinder_mesh" "$tool" campaign --query collide_cylinder_mesh --cases 60 --no-progress --out "$tmp/mesh"
+python3 -c "import json,sys; q=json.load(open(sys.argv[1]))['mesh_queries']; sys.exit(0 if [x['id'] for x in q] == ['collide_cylinder_mesh'] and q[0]['meshes'] == 60 and q[0]['failures'] == 0 and q[0]['faces_by_engine'] > 0 else 1)" "$tmp/mesh/report.json" && ok || bad "report.json has collide_cylinder_mesh's 60 meshes"
+# Its known-wrong variant is caught: saved as a mesh file, drawn beside it, and replayed as failing.
+expect_rc 1 "campaign of the mesh variant" "$tool" campaign --variant mesh_first_face --cases 300 --no-progress --out "$tmp/meshv"
+cx=$(ls "$tmp"/meshv/counterexamples/collide_cylinder_mesh/*.case 2>/dev/null | head -1)
+[ -n "$cx" ] && [ -s "$cx.html" ] && grep -q "<svg" "$cx.html" && ok || bad "the variant's counterexample is saved with its drawing"
+expect_rc 1 "replay of the variant's counterexample" "$tool" replay --subject mesh_first_face "$cx"
+expect_rc 0 "replay of the variant's counterexample with production" "$tool" replay "$cx"
+# A mesh seed replays; with a wrong filed verdict it fails.
+expect_rc 0 "replay of a mesh seed" "$tool" replay "$src/corpora/seeds/collide_cylinder_mesh/rim-on-shared-edge.case"
+grep -q "truth: touching" "$tmp/out" && ok || bad "replay shows the mesh's exact verdict"
+sed 's/^oracle-verdict touching$/oracle-verdict separated/' "$src/corpora/seeds/collide_cylinder_mesh/rim-on-shared-edge.case" > "$tmp/mesh.case"
+expect_rc 1 "replay of a mesh filed with a wrong verdict" "$tool" replay "$tmp/mesh.case"
+grep -q "the truth differs" "$tmp/out" && ok || bad "wrong filed mesh verdict is pointed out"
 
 # The point-set family runs in the campaign: its own section in report.json.
 expect_rc 0 "campaign of delaunay_2d" "$tool" campaign --query delaunay_2d --cases 200 --no-progress --out "$tmp/dl"

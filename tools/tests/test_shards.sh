@@ -23,7 +23,7 @@ same() { python3 "$here/compare_reports.py" "$1" "$2" || fail "$1 and $2 differ"
 
 common=(--seed 20261121 --no-progress --threads 2)
 prod=(--cases 90 --peer-cases 12 --query collide_cylinder_obb --query cast_segment_cylinder
-      --query sweep_sphere_cylinder --query delaunay_2d)
+      --query sweep_sphere_cylinder --query delaunay_2d --query collide_cylinder_mesh)
 run 0 full campaign "${common[@]}" "${prod[@]}" --out "$out/full"
 for i in 0 1 2; do run 0 "s$i" campaign "${common[@]}" "${prod[@]}" --shard "$i/3" --out "$out/s$i"; done
 run 0 merge merge "$out/s2" "$out/s0" "$out/s1" --out "$out/merged"
@@ -39,6 +39,7 @@ for q in r["queries"]:
     for p in q["counterexamples"] + q["fcl"]["cases"]:
         assert os.path.exists(p), p
     assert q["cases"] == 90 and sum(q["truth_stages"].values()) == q["valid"], q["id"]
+assert [m["meshes"] for m in r["mesh_queries"]] == [90], r["mesh_queries"]
 PY
 
 # A failing subject: the failures are counted the same, the exit status kept.

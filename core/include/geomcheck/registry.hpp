@@ -46,6 +46,15 @@
   X(delaunay_2d,                                                                                 \
     "delaunay_2d(points): Delaunay triangulation, exact predicates; duplicates merged, degenerate input says so")
 
+// Queries of a cylinder against a triangle mesh, a family of their own: their
+// case files hold a cylinder and any number of vertices and faces
+// (corpora/include/geomcheck/mesh_file.hpp), not two fixed-size shapes.
+//
+//   X(id, summary)
+#define GEOMCHECK_MESH_QUERY_LIST(X)                                                             \
+  X(collide_cylinder_mesh,                                                                       \
+    "overlap/collide(Cylinder, TriangleMesh): exact verdict; the deepest face's contact, bit for bit the brute force's")
+
 // Production's entry points of every registered query, so that generic code
 // can call them by the shapes' types (production_of<Q>, checks.hpp).
 #include "geomcheck/cast_segment_cylinder.hpp"
@@ -110,7 +119,13 @@ constexpr bool answers_penetration(QueryId id) {
 enum class QueryFamily {
   Pair,      ///< two shapes (QueryId, PairCase): collide, cast, sweep
   PointSet,  ///< a set of points (GEOMCHECK_POINTSET_QUERY_LIST)
+  Mesh,      ///< a cylinder and a triangle mesh (GEOMCHECK_MESH_QUERY_LIST)
 };
+
+/// The family's word in listings and reports: "pair", "point-set", "mesh".
+constexpr const char* family_name(QueryFamily f) {
+  return f == QueryFamily::Pair ? "pair" : f == QueryFamily::PointSet ? "point-set" : "mesh";
+}
 
 /// Every registered query of either family, by name.
 struct QueryEntry {
@@ -124,6 +139,9 @@ inline constexpr QueryEntry kAllQueries[] = {
 #undef GEOMCHECK_X
 #define GEOMCHECK_X(id, summary) {#id, QueryFamily::PointSet, summary},
     GEOMCHECK_POINTSET_QUERY_LIST(GEOMCHECK_X)
+#undef GEOMCHECK_X
+#define GEOMCHECK_X(id, summary) {#id, QueryFamily::Mesh, summary},
+    GEOMCHECK_MESH_QUERY_LIST(GEOMCHECK_X)
 #undef GEOMCHECK_X
 };
 

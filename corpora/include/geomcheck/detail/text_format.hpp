@@ -1,8 +1,10 @@
-// geomcheck — the text core shared by the two case-file formats: the shape-pair
-// case file (casefile.hpp) and the point-set file (pointset_file.hpp).
+// geomcheck — the text core shared by the case-file formats: the shape-pair
+// case file (casefile.hpp), the point-set file (pointset_file.hpp) and the
+// mesh file (mesh_file.hpp).
 //
-// Both formats are read by the same statement loop and written by the same
-// helpers; only the body (shape blocks, point lines) and the query line's
+// The formats are read by the same statement loop and written by the same
+// helpers; only the body (shape blocks, point lines, cylinder, vertex and
+// face lines) and the query line's
 // check differ. This header holds everything else, so that a convention is
 // stated and implemented once:
 //

@@ -13,6 +13,7 @@
 
 #include "geomcheck/predicates2d.hpp"
 #include "geomcheck/properties/checks.hpp"
+#include "geomcheck/properties/mesh_checks.hpp"
 
 namespace geomcheck::gen {
 
@@ -81,6 +82,12 @@ struct PointSetMode {
 std::vector<PointSetMode> point_set_modes();
 /// A point set of any mode, tagged by its mode.
 rc::Gen<Tagged<std::vector<Vec2>>> point_sets();
+
+// --- meshes (collide_cylinder_mesh) ------------------------------------------
+/// A cylinder and a mesh built around a cylinder/triangle case of
+/// gen::targeted (properties/src/generators/collide_cylinder_mesh.cpp);
+/// `grid`: a third of them also get a heightfield of up to 1152 faces.
+rc::Gen<MeshCase> meshes(bool grid = true);
 
 /// A raw double: NaN, inf, subnormal, zero of either sign, huge, tiny, max, or plain.
 rc::Gen<double> wild_double();

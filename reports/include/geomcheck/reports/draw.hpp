@@ -10,6 +10,7 @@
 #include "geomcheck/registry.hpp"
 #include "geomcheck/results.hpp"
 #include "geomcheck/shapes.hpp"
+#include "geomcheck/triangle_mesh.hpp"
 
 namespace geomcheck::draw {
 
@@ -58,5 +59,11 @@ std::vector<Mark> oracle_witness(const typename QueryTraits<Q>::Case& c, const V
 template <class Case>
 std::string views(const Case& c, const std::string& title, const std::vector<Mark>& extra = {},
                   const Answer* answer = nullptr);
+
+/// Three views of a mesh case: the cylinder (blue), the faces whose boxes
+/// come within the cylinder's size of it (orange; at most 400, the whole
+/// mesh's count in the title), production's contact and its face (red),
+/// and the certified engine's witness for that face (green).
+std::string mesh_views(const Cylinder& cyl, const TriangleMesh& mesh, const std::string& title);
 
 }  // namespace geomcheck::draw

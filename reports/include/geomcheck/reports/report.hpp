@@ -126,6 +126,26 @@ struct PointSetReport {
   std::vector<std::string> counterexamples;  ///< failing sets, saved as point-set files
 };
 
+/// Everything reported about one mesh query (collide_cylinder_mesh) of a campaign.
+struct MeshReport {
+  std::string name, summary;
+  std::string under_test = "production";  ///< the subject's name (production or a known-wrong variant)
+  int requested = 0;             ///< meshes asked for
+  bool stopped_by_time = false;  ///< --seconds ran out first
+  int meshes = 0;                ///< meshes run
+  std::size_t faces = 0;         ///< faces in all of them
+  std::map<std::string, int> modes;     ///< meshes by generator mode
+  std::map<std::string, int> verdicts;  ///< meshes by exact verdict (overlapping, touching, separated, undecided, invalid)
+  int failures = 0;
+  std::map<std::string, int> failures_by_property;
+  /// Faces decided separated by their bounding boxes, and by the certified engine.
+  std::size_t faces_by_box = 0, faces_by_engine = 0;
+  /// Time of production's collide (the hierarchy) and of the brute force over every face, summed over the meshes.
+  double production_us = 0, brute_force_us = 0;
+  double seconds = 0;                        ///< wall time of the checks
+  std::vector<std::string> counterexamples;  ///< failing meshes, saved as mesh files (a drawing beside each)
+};
+
 /// One campaign run: what was run, and how to run it again.
 struct RunInfo {
   std::string version;     ///< the build's version (geomcheck --version)
@@ -150,17 +170,17 @@ inline constexpr int kReportSchemaVersion = 2;
 
 /// Writes report.json.
 void write_json(const std::filesystem::path& file, const RunInfo& run, std::vector<QueryReport>& reps,
-                const std::vector<PointSetReport>& point_sets);
+                const std::vector<PointSetReport>& point_sets, const std::vector<MeshReport>& meshes = {});
 /// Writes report.html.
 void write_html(const std::filesystem::path& file, const RunInfo& run, std::vector<QueryReport>& reps,
-                const std::vector<PointSetReport>& point_sets);
+                const std::vector<PointSetReport>& point_sets, const std::vector<MeshReport>& meshes = {});
 /// Writes a JUnit XML file of the run (for CI dashboards): a test case per
 /// query and family of properties (verdict, robust, oracle, consistency,
 /// symmetry, metamorphic, monotone; a point-set query's valid and
-/// agrees-with-cgal), a failure carrying the counts and the replay command
-/// of a saved counterexample.
+/// agrees-with-cgal; a mesh query's families of mesh_checks.hpp), a failure
+/// carrying the counts and the replay command of a saved counterexample.
 void write_junit(const std::filesystem::path& file, const RunInfo& run, const std::vector<QueryReport>& reps,
-                 const std::vector<PointSetReport>& point_sets);
+                 const std::vector<PointSetReport>& point_sets, const std::vector<MeshReport>& meshes = {});
 /// A counterexample's page: its drawing, the subject that fails it and the
 /// command that replays it.
 void write_counterexample_page(const std::filesystem::path& file, const std::string& name, const std::string& drawing,

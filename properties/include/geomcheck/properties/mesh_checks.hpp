@@ -1,0 +1,98 @@
+// geomcheck — the checks of the mesh family (collide_cylinder_mesh), written
+// once and run by the property suite (test_mesh), the fuzz target
+// (fuzz_collide_cylinder_mesh), replay and the campaign.
+//
+// The mesh query is the triangle query over the faces the hierarchy and the
+// face filter keep, so a subject's answer for a cylinder and a mesh is held
+// to:
+//   * robustness: invalid input (an invalid cylinder, a non-finite vertex,
+//     an index out of range) gives no hit; a hit's contact is finite;
+//   * the brute force over every face in index order, bit for bit
+//     (overlap, hit, depth, normal, point, face index), and collide's hit
+//     is overlap's verdict;
+//   * argument order: collide(mesh, cylinder) is the flipped answer;
+//   * the deepest face: the verdict is "some face overlaps" (the triangle
+//     query's verdict) and the contact is the deepest face's own triangle
+//     answer (the smallest index on ties);
+//   * the truth, face by face: a face the certified engine finds
+//     overlapping beyond the verdict band is not missed, and the reported
+//     face's contact meets every claim of collide_cylinder_triangle
+//     (judge() of its evaluation). A face whose bounding box is apart from
+//     the cylinder's (a strict gap in the coordinates' doubles, rounded
+//     outwards) is separated without asking the engine.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "geomcheck/collide_cylinder_mesh.hpp"
+#include "geomcheck/oracles/exact.hpp"
+#include "geomcheck/properties/checks.hpp"
+
+namespace geomcheck {
+
+/// A case of the mesh query: a cylinder and a mesh's vertices and faces,
+/// and the generator's mode that drew it.
+struct MeshCase {
+  Cylinder cyl;
+  std::vector<Vec3> vertices;
+  std::vector<MeshFace> faces;
+  std::string mode;
+};
+
+/// A subject of the mesh query (production, a known-wrong variant): both
+/// argument orders of collide and overlap, the face index as production's.
+struct MeshImpl {
+  const char* name;
+  Callable<bool(const Cylinder&, const TriangleMesh&)> overlap;
+  Callable<Contact(const Cylinder&, const TriangleMesh&, std::uint32_t*)> collide;
+  Callable<Contact(const TriangleMesh&, const Cylinder&, std::uint32_t*)> collide_flipped;
+};
+
+/// Production's mesh query.
+const MeshImpl& production_mesh();
+/// The known-wrong variants of the mesh query (teeth: the checks must
+/// catch each): "mesh_first_face" answers the lowest-index overlapping
+/// face's contact instead of the deepest's.
+const std::vector<const MeshImpl*>& mesh_variants();
+/// The subject named `name` (production or a variant), or null.
+const MeshImpl* mesh_subject(const std::string& name);
+
+/// The exact verdict of the mesh, face by face (the strongest of its
+/// faces': overlapping, then touching, then undecided, then separated).
+struct MeshTruth {
+  bool valid = false;  ///< the cylinder and the mesh are valid
+  oracle::Verdict verdict = oracle::Verdict::Separated;
+  int faces_by_box = 0;     ///< faces found separated by their bounding boxes
+  int faces_by_engine = 0;  ///< faces the certified engine decided
+  bool robust_hit = false;  ///< some face overlaps beyond the verdict band
+  std::string hit_text;     ///< that face and the engine's answer
+  /// The evaluation of each face the engine decided (production's
+  /// triangle query held to the truth), by face index; empty elsewhere.
+  std::vector<std::optional<Evaluation>> faces;
+};
+
+/// The robustness, brute-force, argument-order and deepest-face checks
+/// (no oracle): cheap, and exact (bit-identity and the triangle query's
+/// own verdicts).
+CheckResult check_mesh_consistency(const Cylinder& cyl, const TriangleMesh& mesh,
+                                   const MeshImpl& impl = production_mesh());
+/// The truth of the case, face by face (the certified engine on every face
+/// its bounding box does not separate).
+MeshTruth mesh_truth(const Cylinder& cyl, const TriangleMesh& mesh);
+/// The truth's checks: no robust hit missed; the reported face's contact
+/// held to collide_cylinder_triangle's claims. `truth` from mesh_truth.
+CheckResult check_mesh_oracle(const Cylinder& cyl, const TriangleMesh& mesh, const MeshTruth& truth,
+                              const MeshImpl& impl = production_mesh());
+/// Every check, in order: consistency, then the truth (computed here, and
+/// stored in *truth when given).
+CheckResult check_mesh_all(const Cylinder& cyl, const TriangleMesh& mesh, const MeshImpl& impl = production_mesh(),
+                           MeshTruth* truth = nullptr);
+
+/// The case in words: the cylinder and every vertex and face, coordinates
+/// as hexadecimal floats (the case files' form).
+std::string describe_mesh(const Cylinder& cyl, const std::vector<Vec3>& vertices, const std::vector<MeshFace>& faces);
+
+}  // namespace geomcheck
