@@ -70,8 +70,11 @@ std::string save_mesh_case(const std::filesystem::path& dir, int index, const Me
   }
   const std::string replay = "geomcheck replay " + path.string() +
                              (&impl == &production_mesh() ? std::string() : std::string(" --subject ") + impl.name);
+  const TriangleMesh mesh = mesh_of(f);
+  std::uint32_t face = 0xffffffffu;
+  const Contact k = impl.collide(c.cyl, mesh, &face);
   report::write_counterexample_page(path.string() + ".html", name,
-                                    draw::mesh_views(c.cyl, mesh_of(f), std::string(name) + ": " + r.property),
+                                    draw::mesh_views(c.cyl, mesh, k, face, impl.name, std::string(name) + ": " + r.property),
                                     impl.name, replay);
   return path.string();
 }

@@ -387,7 +387,8 @@ void add_campaign(CLI::App& app, CampaignOptions& opt, int& rc) {
   auto* c = app.add_subcommand("campaign", "Differential campaign of every registered query: production against the "
                                            "truth and FCL on the targeted generators; ends in DIR/report.json and "
                                            "DIR/report.html. Exit status 1 when anything failed.");
-  c->add_option("--cases", opt.cases, "cases per query (default: each query's own, 100000 or 10000)")
+  c->add_option("--cases", opt.cases, "cases per query, point sets and meshes included (default: each query's own: 100000 pairs, 10000 "
+                "point sets, 2000 meshes)")
       ->check(positive_integer);
   c->add_option("--seconds", opt.seconds, "time budget per query, in seconds (default: none)")->check(positive_number);
   c->add_option("--seed", opt.seed, "the generators' seed")->capture_default_str()->check(seed_number);

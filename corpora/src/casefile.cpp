@@ -1,5 +1,5 @@
 // geomcheck — case files: writer, parser and validation (format in
-// casefile.hpp; the text core both formats share in detail/text_format.hpp).
+// casefile.hpp; the text core the formats share in detail/text_format.hpp).
 #include "geomcheck/casefile.hpp"
 
 #include "geomcheck/detail/text_format.hpp"

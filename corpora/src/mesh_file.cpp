@@ -34,13 +34,13 @@ std::string too_many(const char* what, std::size_t limit) {
 
 /// INDEX: a decimal from 0 to 4294967295, digits only.
 bool parse_index(std::string_view t, std::uint32_t& out) {
-  if (t.empty() || t.size() > 10) return false;
+  if (t.empty()) return false;
   std::uint64_t v = 0;
   for (char ch : t) {
     if (ch < '0' || ch > '9') return false;
     v = 10 * v + static_cast<std::uint64_t>(ch - '0');
+    if (v > 0xffffffffull) return false;  // leading zeros are fine, a value beyond is not
   }
-  if (v > 0xffffffffull) return false;
   out = static_cast<std::uint32_t>(v);
   return true;
 }
@@ -69,7 +69,7 @@ class Parser : public detail::LineParser<Parser, MeshFile> {
 
   bool after_meta(std::string_view key, int n) {
     if (key == "oracle-verdict" && !is_mesh_verdict(meta_.oracle_verdict))
-      return fail(n, unknown_verdict_error(meta_.oracle_verdict, have_query_ ? file_.query : "of a mesh"));
+      return fail(n, unknown_verdict_error(meta_.oracle_verdict, have_query_ ? file_.query : mesh_query_list()));
     return true;
   }
 
@@ -160,6 +160,15 @@ std::optional<std::string> mesh_file_error(const MeshFile& f) {
     return unknown_verdict_error(f.oracle_verdict, f.query);
   if (f.vertices.size() > kMaxMeshVertices) return too_many("vertices", kMaxMeshVertices);
   if (f.faces.size() > kMaxMeshFaces) return too_many("faces", kMaxMeshFaces);
+  // The text's size: written only when the longest lines could reach the
+  // limit (a vertex line is at most about 170 bytes, a face line 38).
+  const std::size_t bound = 170 * f.vertices.size() + 38 * f.faces.size() + 8 * (f.note.size() + f.found_by.size()) + 4096;
+  if (bound > kMaxMeshFileBytes) {
+    const std::size_t bytes = write_mesh_file(f).size();
+    if (bytes > kMaxMeshFileBytes)
+      return "the file would be " + std::to_string(bytes) + " bytes, beyond the limit of a mesh file (" +
+             std::to_string(kMaxMeshFileBytes) + ")";
+  }
   return std::nullopt;
 }
 
@@ -170,6 +179,7 @@ std::string write_mesh_file(const MeshFile& f) {
   const Cylinder& c = f.cylinder;
   const double cyl[7] = {c.p.x, c.p.y, c.p.z, c.q.x, c.q.y, c.q.z, c.r};
   lines.add("cylinder", cyl, 7);
+  lines.write(out);  // the vertices' comments aligned among themselves, not with the longer cylinder line
   for (const Vec3& v : f.vertices) {
     const double xyz[3] = {v.x, v.y, v.z};
     lines.add("vertex", xyz, 3);

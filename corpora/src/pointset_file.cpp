@@ -1,5 +1,5 @@
 // geomcheck — point-set case files: writer, parser, classification (format in
-// pointset_file.hpp; the text core both formats share in detail/text_format.hpp).
+// pointset_file.hpp; the text core the formats share in detail/text_format.hpp).
 #include "geomcheck/pointset_file.hpp"
 
 #include "geomcheck/detail/text_format.hpp"
@@ -36,6 +36,9 @@ class Parser : public detail::LineParser<Parser, PointSetFile> {
     if (query_from_name(id))
       return fail(n, "query " + std::string(id) + " is not a point-set query: this is not a point-set file" + holds +
                          "; parse_case reads it");
+    if (family_of(id) == QueryFamily::Mesh)
+      return fail(n, "query " + std::string(id) + " is not a point-set query: this is not a point-set file" + holds +
+                         "; parse_mesh_file reads it");
     return fail(n, "unknown query " + quote_token(id) + ": this is not a point-set file" + holds);
   }
 

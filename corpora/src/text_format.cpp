@@ -1,6 +1,6 @@
-// geomcheck — the text core of both case-file formats (declared in
+// geomcheck — the text core of the case-file formats (declared in
 // geomcheck/detail/text_format.hpp), the NUMBER writer and reader of
-// casefile.hpp, and the loading and saving of files of either format
+// casefile.hpp, and the loading and saving of files of every format
 // (load_case, save_case, load_point_set, save_point_set, load_mesh_file,
 // save_mesh_file).
 #include "geomcheck/detail/text_format.hpp"
@@ -399,7 +399,7 @@ std::optional<double> parse_double(std::string_view token) {
   return v;
 }
 
-// --- files of either format (casefile.hpp, pointset_file.hpp) ---------------
+// --- files of every format (casefile.hpp, pointset_file.hpp, mesh_file.hpp) --
 
 namespace {
 

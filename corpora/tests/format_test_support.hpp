@@ -1,6 +1,6 @@
-// geomcheck — test helpers shared by the tests of the two case-file formats
-// (test_casefile.cpp, test_pointset_file.cpp): bit patterns, the corpora's
-// files, and the checks that both formats must pass in the same way
+// geomcheck — test helpers shared by the tests of the case-file formats
+// (test_casefile.cpp, test_pointset_file.cpp, test_mesh_file.cpp): bit patterns, the corpora's
+// files, and the checks that the formats must pass in the same way
 // (rejections, mutated inputs, saving and loading).
 //
 // Each check takes the format's own functions (parse, write, load, save), so
@@ -183,7 +183,7 @@ void expect_mutations_round_trip_or_name_a_line(const std::string& base, std::st
   EXPECT_GT(rejected, 10000);
 }
 
-/// The validation both formats share: `invalid` accepts `good`; with the
+/// The validation the formats share: `invalid` accepts `good`; with the
 /// verdict `unknown_verdict`, `invalid` reports "unknown oracle verdict
 /// '<verdict>'" and the written file is rejected at its verdict line (5);
 /// with the verdict `two_lines` (a newline inside), `invalid` reports it and
@@ -215,7 +215,7 @@ void expect_invalid_values_reported(const File& good, const std::string& unknown
   EXPECT_EQ(parse(write(f)).error, "line 2: unsupported case-file version 2 (this build reads version 1)");
 }
 
-/// The saving and loading both formats share, in the folder `dir`: `good`
+/// The saving and loading the formats share, in the folder `dir`: `good`
 /// saved as `name` leaves no "<name>.tmp" behind and loads back equal; the
 /// invalid `bad` is refused ("refusing to write") and not written; saving
 /// into a missing folder fails with "cannot create"; loading a missing file

@@ -9,6 +9,7 @@
 
 #include <cfloat>
 #include <cmath>
+#include <cstdio>
 #include <fstream>
 #include <limits>
 #include <random>
@@ -45,10 +46,10 @@ const char* const kSquareExampleText =
     "oracle-verdict overlapping\n"
     "note a unit cylinder on a square of two faces\n"
     "cylinder 0x0p+0 0x0p+0 0x0p+0 0x0p+0 0x0p+0 0x1p+0 0x1p+0   # 0 0 0 0 0 1 1\n"
-    "vertex -0x1p+1 -0x1p+1 0x1p-1                               # -2 -2 0.5\n"
-    "vertex 0x1p+1 -0x1p+1 0x1p-1                                # 2 -2 0.5\n"
-    "vertex 0x1p+1 0x1p+1 0x1p-1                                 # 2 2 0.5\n"
-    "vertex -0x1p+1 0x1p+1 0x1p-1                                # -2 2 0.5\n"
+    "vertex -0x1p+1 -0x1p+1 0x1p-1   # -2 -2 0.5\n"
+    "vertex 0x1p+1 -0x1p+1 0x1p-1    # 2 -2 0.5\n"
+    "vertex 0x1p+1 0x1p+1 0x1p-1     # 2 2 0.5\n"
+    "vertex -0x1p+1 0x1p+1 0x1p-1    # -2 2 0.5\n"
     "face 0 1 2\n"
     "face 0 2 3\n"
     "end\n";
@@ -150,7 +151,11 @@ TEST(MeshParse, HandWrittenOrderDecimalsAndCrlf) {
   ASSERT_EQ(r.value.vertices.size(), 3u);
   ASSERT_EQ(r.value.faces.size(), 2u);
   EXPECT_EQ(r.value.faces[0], (MeshFace{0, 1, 2}));
+  EXPECT_EQ(r.value.faces[1], (MeshFace{2, 1, 0}));
   EXPECT_EQ(r.value.cylinder.r, 0.5);
+  // Leading zeros are fine.
+  EXPECT_EQ(parse_mesh_file(with_body("", kCyl + "face 00 0001 0004294967295\n")).value.faces.at(0),
+            (MeshFace{0, 1, 4294967295u}));
   EXPECT_TRUE(std::signbit(r.value.vertices[2].z));
   EXPECT_EQ(r.value.oracle_verdict, "separated");
   // The writer puts the vertices first; the value is the same.
@@ -178,6 +183,7 @@ TEST(MeshParse, RejectsMalformedInputs) {
       {with_body("", kCyl + "face 0 1\n"), 4, "'face' takes 3 vertex indices, got 2"},
       {with_body("", kCyl + "face 0 1 -2\n"), 4, "malformed index '-2' in 'face'"},
       {with_body("", kCyl + "face 0 1 4294967296\n"), 4, "malformed index '4294967296'"},
+      {with_body("", kCyl + "face 0 1 000004294967296\n"), 4, "malformed index '000004294967296'"},
       {with_body("", kCyl + "face 0 1 0x2\n"), 4, "malformed index '0x2'"},
       {with_body("", kCyl + "face 0 1 2.0\n"), 4, "malformed index '2.0'"},
       {with_body("", kCyl + "note late\n"), 4, "'note' must come before the first 'cylinder'"},
@@ -204,6 +210,24 @@ TEST(MeshParse, TooManyVerticesNamesTheLine) {
   f.faces.resize(kMaxMeshFaces + 1);
   ASSERT_TRUE(mesh_file_error(f).has_value());
   EXPECT_NE(mesh_file_error(f)->find("faces (the limit of a mesh file)"), std::string::npos);
+}
+
+// The largest counts with the longest numbers still write a file within
+// the byte limit (so every file mesh_file_error accepts loads back), and a
+// text beyond it (a note this long) is refused before it is written.
+TEST(MeshFile, LimitsWriteWithinTheByteLimit) {
+  MeshFile f;
+  const double worst = -0x1.fffffffffffffp+1000;
+  f.cylinder = {{worst, worst, worst}, {worst, worst, worst}, worst};
+  f.vertices.assign(kMaxMeshVertices, Vec3{worst, -DBL_TRUE_MIN * 3, worst});
+  f.faces.assign(kMaxMeshFaces, MeshFace{4294967295u, 4294967295u, 4294967295u});
+  EXPECT_FALSE(mesh_file_error(f).has_value()) << *mesh_file_error(f);
+  const std::size_t bytes = write_mesh_file(f).size();
+  EXPECT_LE(bytes, kMaxMeshFileBytes);
+  std::printf("largest counts, longest numbers: %zu bytes (limit %zu)\n", bytes, kMaxMeshFileBytes);
+  f.note = std::string(kMaxMeshFileBytes - bytes + 1, 'x');
+  ASSERT_TRUE(mesh_file_error(f).has_value());
+  EXPECT_NE(mesh_file_error(f)->find("beyond the limit of a mesh file"), std::string::npos) << *mesh_file_error(f);
 }
 
 TEST(MeshParse, MutationsRoundTripOrNameALine) {

@@ -313,7 +313,8 @@ std::string render(const Figure (&shapes)[2], const std::vector<Mark>& marks, co
   }
   o << zoom(marks, span_all, W);
   o << "<p class='legend'><span style='color:#2c5aa0'>&#9632; A</span> <span style='color:#c06a00'>&#9632; B</span>";
-  for (const Mark& m : marks) o << "<br><span style='color:" << m.color << "'>&#9679; " << m.label << "</span>";
+  for (const Mark& m : marks)
+    if (!m.label.empty()) o << "<br><span style='color:" << m.color << "'>&#9679; " << m.label << "</span>";
   o << "</p></figure>";
   return o.str();
 }
@@ -477,14 +478,21 @@ std::string views(const Case& c, const std::string& title, const std::vector<Mar
 GEOMCHECK_QUERY_LIST(GEOMCHECK_X)
 #undef GEOMCHECK_X
 
-std::string mesh_views(const Cylinder& cyl, const TriangleMesh& mesh, const std::string& title) {
+std::string mesh_views(const Cylinder& cyl, const TriangleMesh& mesh, const Contact& k, std::uint32_t face,
+                       const std::string& who, const std::string& title) {
   Figure faces;
   const double size = std::max(max_abs(cyl.q - cyl.p), cyl.r);
   const double grow = std::isfinite(size) ? 2 * size : 0;
+  const bool has_face = k.hit && mesh.valid() && face < mesh.size();
   std::size_t drawn = 0;
-  std::uint32_t face = 0xffffffffu;
-  const Contact k = collide(cyl, mesh, &face);
+  auto add = [&](const Triangle& t) {
+    faces.hulls.push_back({t.a, t.b, t.c});
+    faces.lines.push_back({{t.a, t.b, t.c}, true});
+    ++drawn;
+  };
+  if (has_face) add(mesh.triangle(face));  // the answer's face, whatever the count
   for (std::size_t i = 0; mesh.valid() && i < mesh.size() && drawn < 400; ++i) {
+    if (has_face && i == face) continue;
     const Triangle t = mesh.triangle(i);
     bool near = true;
     for (int c = 0; c < 3 && near; ++c) {
@@ -492,17 +500,19 @@ std::string mesh_views(const Cylinder& cyl, const TriangleMesh& mesh, const std:
       const double lo = std::min(at(cyl.p), at(cyl.q)) - cyl.r - grow, hi = std::max(at(cyl.p), at(cyl.q)) + cyl.r + grow;
       near = !(std::max({at(t.a), at(t.b), at(t.c)}) < lo || std::min({at(t.a), at(t.b), at(t.c)}) > hi);
     }
-    if (!near && i != face) continue;
-    faces.hulls.push_back({t.a, t.b, t.c});
-    faces.lines.push_back({{t.a, t.b, t.c}, true});
-    ++drawn;
+    if (near) add(t);
   }
   const Figure shapes[2] = {figure(cyl), faces};
-  const Answer ans = answer_of(k, "production");
+  const Answer ans = answer_of(k, who);
   std::vector<Mark> marks{{Mark::Kind::PointNormal, ans.hit ? ans.point : kNowhere, ans.normal, 0, "#d00",
-                           ans.label + (k.hit ? ", face " + std::to_string(face) : std::string())}};
-  if (k.hit && face < mesh.size())
-    for (const Mark& m : collide_witness(cyl, mesh.triangle(face), &ans.point)) marks.push_back(m);
+                           ans.label + (has_face ? ", face " + std::to_string(face) : std::string())}};
+  if (has_face) {
+    const Triangle t = mesh.triangle(face);
+    const Vec3 v[3] = {t.a, t.b, t.c};
+    for (int e = 0; e < 3; ++e)
+      marks.push_back({Mark::Kind::Segment, v[e], v[(e + 1) % 3], 0, "#d00", e == 0 ? "face " + std::to_string(face) + " (red edges)" : ""});
+    for (const Mark& m : collide_witness(cyl, t, &ans.point)) marks.push_back(m);
+  }
   return render(shapes, marks,
                 title + " (" + std::to_string(drawn) + " of " + std::to_string(mesh.size()) + " faces drawn)");
 }

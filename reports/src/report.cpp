@@ -413,6 +413,12 @@ void write_point_set_section(std::ostream& h, const PointSetReport& r) {
   }
 }
 
+/// The command that replays a mesh query's saved case, but for its path:
+/// a known-wrong variant's cases replay against it.
+std::string mesh_replay_prefix(const MeshReport& r) {
+  return "geomcheck replay " + (r.under_test == "production" ? std::string() : "--subject " + r.under_test + " ");
+}
+
 /// A mesh query's entry in report.json.
 Json mesh_json(const MeshReport& r) {
   return {{"id", r.name}, {"summary", r.summary}, {"implementation", r.under_test}, {"requested", r.requested},
@@ -451,7 +457,8 @@ void write_mesh_section(std::ostream& h, const MeshReport& r) {
   table("exact verdict", r.verdicts);
   if (!r.failures_by_property.empty()) {
     table("failed property", r.failures_by_property);
-    h << "<p>counterexamples (replay with <code>geomcheck replay FILE</code>; each drawn in FILE.html):</p><ul>";
+    h << "<p>counterexamples (replay with <code>" << html(mesh_replay_prefix(r))
+      << "FILE</code>; each drawn in FILE.html):</p><ul>";
     for (std::size_t k = 0; k < r.counterexamples.size() && k < 50; ++k)
       h << "<li><code>" << html(r.counterexamples[k]) << "</code></li>";
     h << "</ul>";
@@ -591,8 +598,8 @@ void write_junit(const std::filesystem::path& file, const RunInfo& run, const st
         if (prop.rfind(family, 0) == 0) c.failures += n, c.message += prop + ": " + std::to_string(n) + "\n";
       if (c.failures) {
         for (const std::string& cx : r.counterexamples)
-          if (cx.find("-" + std::string(family)) != std::string::npos) {
-            c.message += "replay: geomcheck replay " + cx + "\n";
+          if (std::filesystem::path(cx).filename().string().find("-" + std::string(family)) != std::string::npos) {
+            c.message += "replay: " + mesh_replay_prefix(r) + cx + "\n";
             break;
           }
       }

@@ -56,6 +56,25 @@ grep -q "truth: touching" "$tmp/out" && ok || bad "replay shows the mesh's exact
 sed 's/^oracle-verdict touching$/oracle-verdict separated/' "$src/corpora/seeds/collide_cylinder_mesh/rim-on-shared-edge.case" > "$tmp/mesh.case"
 expect_rc 1 "replay of a mesh filed with a wrong verdict" "$tool" replay "$tmp/mesh.case"
 grep -q "the truth differs" "$tmp/out" && ok || bad "wrong filed mesh verdict is pointed out"
+# The benchmark's size of mesh (a 224 x 224 heightfield, 100352 faces) replays from its file.
+python3 - "$tmp/big.case" <<'PY'
+import math, sys
+n = 224
+lines = ["geomcheck-case 1", "query collide_cylinder_mesh", "found-by hand", "note a 224 x 224 heightfield",
+         "cylinder 0.1 0.2 0.05 0.6 0.1 1.2 0.3"]
+for i in range(n + 1):
+    for j in range(n + 1):
+        x, y = -4 + 8 * i / n, -4 + 8 * j / n
+        lines.append("vertex %r %r %r" % (x, y, 0.1 * math.sin(3 * x) * math.cos(2 * y)))
+at = lambda i, j: i * (n + 1) + j
+for i in range(n):
+    for j in range(n):
+        lines += ["face %d %d %d" % (at(i, j), at(i + 1, j), at(i + 1, j + 1)),
+                  "face %d %d %d" % (at(i, j), at(i + 1, j + 1), at(i, j + 1))]
+open(sys.argv[1], "w").write("\n".join(lines + ["end"]) + "\n")
+PY
+expect_rc 0 "replay of a 100352-face mesh" "$tool" replay "$tmp/big.case"
+grep -q "50625 vertices, 100352 faces" "$tmp/out" && grep -q "truth: overlapping" "$tmp/out" && ok || bad "the large mesh replays with its truth"
 
 # The point-set family runs in the campaign: its own section in report.json.
 expect_rc 0 "campaign of delaunay_2d" "$tool" campaign --query delaunay_2d --cases 200 --no-progress --out "$tmp/dl"

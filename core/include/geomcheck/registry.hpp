@@ -115,7 +115,7 @@ constexpr bool answers_penetration(QueryId id) {
   return true;
 }
 
-/// The two families of queries.
+/// The three families of queries.
 enum class QueryFamily {
   Pair,      ///< two shapes (QueryId, PairCase): collide, cast, sweep
   PointSet,  ///< a set of points (GEOMCHECK_POINTSET_QUERY_LIST)
@@ -127,7 +127,7 @@ constexpr const char* family_name(QueryFamily f) {
   return f == QueryFamily::Pair ? "pair" : f == QueryFamily::PointSet ? "point-set" : "mesh";
 }
 
-/// Every registered query of either family, by name.
+/// Every registered query of any family, by name.
 struct QueryEntry {
   const char* name;
   QueryFamily family;

@@ -8,8 +8,9 @@
 // read it. Files live in corpora/seeds/<query-id>/ (hand cases, fuzz seeds)
 // and corpora/regressions/<query-id>/NNNN-<slug>.case (counterexamples,
 // never deleted). The Delaunay query's inputs (point lists, not a registered
-// pair of shapes) use the sibling format of pointset_file.hpp; the text
-// conventions both formats share are implemented once, in
+// pair of shapes) use the sibling format of pointset_file.hpp, the mesh
+// queries' (a cylinder and a triangle mesh) that of mesh_file.hpp; the text
+// conventions the formats share are implemented once, in
 // geomcheck/detail/text_format.hpp.
 //
 // Format, version 1. Lines end in LF (a CR before the LF is ignored); blank
@@ -97,8 +98,9 @@ struct CaseFile {
 bool operator==(const CaseFile& x, const CaseFile& y);
 inline bool operator!=(const CaseFile& x, const CaseFile& y) { return !(x == y); }
 
-/// Outcome of parsing or loading a file of either format (ParseResult here,
-/// PointSetParseResult in pointset_file.hpp): the parsed value, or an error.
+/// Outcome of parsing or loading a file of any format (ParseResult here,
+/// PointSetParseResult in pointset_file.hpp, MeshParseResult in
+/// mesh_file.hpp): the parsed value, or an error.
 template <class T>
 struct BasicParseResult {
   T value;            ///< the parsed value when ok(); T{} when !ok()

@@ -15,10 +15,10 @@
 //   oracle-verdict overlapping
 //   note a unit cylinder on a square of two faces
 //   cylinder 0x0p+0 0x0p+0 0x0p+0 0x0p+0 0x0p+0 0x1p+0 0x1p+0   # 0 0 0 0 0 1 1
-//   vertex -0x1p+1 -0x1p+1 0x1p-1                               # -2 -2 0.5
-//   vertex 0x1p+1 -0x1p+1 0x1p-1                                # 2 -2 0.5
-//   vertex 0x1p+1 0x1p+1 0x1p-1                                 # 2 2 0.5
-//   vertex -0x1p+1 0x1p+1 0x1p-1                                # -2 2 0.5
+//   vertex -0x1p+1 -0x1p+1 0x1p-1   # -2 -2 0.5
+//   vertex 0x1p+1 -0x1p+1 0x1p-1    # 2 -2 0.5
+//   vertex 0x1p+1 0x1p+1 0x1p-1     # 2 2 0.5
+//   vertex -0x1p+1 0x1p+1 0x1p-1    # -2 2 0.5
 //   face 0 1 2
 //   face 0 2 3
 //   end
@@ -46,9 +46,12 @@
 //   * INDEX is a decimal from 0 to 4294967295 without sign. An index need
 //     not name a vertex of the file: a face with an index out of range is
 //     an invalid mesh, which the query must answer as no overlap.
-//   * VERDICT is the mesh's exact verdict, the strongest of its faces'
-//     (overlapping, then touching, then undecided, then separated):
-//     "overlapping", "touching", "separated", "undecided".
+//   * VERDICT is the mesh's exact verdict, from its faces' (the certified
+//     engine's): "overlapping" when a face overlaps, else "undecided" when
+//     a face's distance is within the engine's width of 0 (either sign),
+//     else "touching" when a face touches, else "separated". An invalid
+//     mesh or cylinder has no verdict: a file of one records none (replay
+//     fails a verdict filed on invalid input).
 //   * At most kMaxMeshVertices vertex lines and kMaxMeshFaces face lines
 //     ("line N: more than ... vertices (the limit of a mesh file)"), and the
 //     whole file at most kMaxMeshFileBytes.
@@ -106,12 +109,12 @@ inline bool operator!=(const MeshFile& x, const MeshFile& y) { return !(x == y);
 using MeshParseResult = BasicParseResult<MeshFile>;
 
 /// The verdict words a mesh file may record: "overlapping", "touching",
-/// "separated", "undecided".
+/// "separated", "undecided" (mesh_checks.hpp's MeshTruth decides them).
 std::vector<std::string_view> mesh_verdicts();
 
 /// What makes `f` unwritable as a valid file (unsupported version, a query
-/// that is not a mesh query, unknown verdict, too many vertices or faces),
-/// or nullopt when it is valid.
+/// that is not a mesh query, unknown verdict, too many vertices or faces,
+/// a text beyond kMaxMeshFileBytes), or nullopt when it is valid.
 std::optional<std::string> mesh_file_error(const MeshFile& f);
 
 /// The case as file text (format above). Never fails; a file with

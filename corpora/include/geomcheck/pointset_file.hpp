@@ -34,8 +34,8 @@
 //                                                     them, zero included
 //
 //   * Every meta line comes before the first "point"; "query" is required
-//     and must name delaunay_2d (a file of a registered query is a case
-//     file: parse_case reads it).
+//     and must name delaunay_2d (a file of a pair query is a case file:
+//     parse_case reads it; of a mesh query a mesh file: parse_mesh_file).
 //   * VERDICT is the kind of the point set, a function of its content alone
 //     (classify_point_set): "triangulated" (at least 3 distinct points, not
 //     all on one line), "collinear" (at least 2 distinct points, all on one

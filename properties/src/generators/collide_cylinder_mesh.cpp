@@ -6,8 +6,9 @@
 // zero-area faces (repeated indices, collinear vertices) and faces further
 // away, sometimes a heightfield of up to 1152 faces over the scene (deep
 // hierarchies), in a random order, so the case's triangle sits anywhere in
-// the hierarchy. The mode is the triangle generator's, "+grid" with the
-// heightfield.
+// the hierarchy; one in 16 made invalid (an index out of range, a vertex
+// not finite). The mode is the triangle generator's, "+grid" with the
+// heightfield, "+index-out-of-range" or "+vertex-not-finite" when invalid.
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -94,7 +95,20 @@ rc::Gen<MeshCase> meshes(bool grid) {
     for (std::size_t i = 0; i < f.size(); ++i) keyed.push_back({perm[i], f[i]});
     std::stable_sort(keyed.begin(), keyed.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
     for (std::size_t i = 0; i < f.size(); ++i) f[i] = keyed[i].second;
-    return MeshCase{cyl, std::move(v), std::move(f), drawn.second + (gridded ? "+grid" : "")};
+    // One mesh in 16 made invalid: a face naming a vertex beyond the last,
+    // or a vertex not finite (the query must then answer no overlap).
+    std::string invalid;
+    if (*rc::gen::inRange(0, 16) == 0) {
+      if (*rc::gen::inRange(0, 2) == 0) {
+        f.insert(f.begin() + *rc::gen::inRange<std::size_t>(0, f.size() + 1),
+                 MeshFace{0, 1, static_cast<std::uint32_t>(v.size()) + *rc::gen::inRange<std::uint32_t>(0, 3)});
+        invalid = "+index-out-of-range";
+      } else {
+        v[*rc::gen::inRange<std::size_t>(0, v.size())].y = *rc::gen::element(NAN, INFINITY, -INFINITY);
+        invalid = "+vertex-not-finite";
+      }
+    }
+    return MeshCase{cyl, std::move(v), std::move(f), drawn.second + (gridded ? "+grid" : "") + invalid};
   });
 }
 

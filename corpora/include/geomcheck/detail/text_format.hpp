@@ -14,7 +14,7 @@
 //     a comment that runs to the end of the line (except in TEXT).
 //   * NUMBER and TEXT: the grammar of casefile.hpp (hex floats, decimals,
 //     inf, nan, nan(0xHHH); TEXT with the escapes \\ \n \r \t \xHH).
-//   * Statements both formats share: the header "geomcheck-case VERSION",
+//   * Statements the formats share: the header "geomcheck-case VERSION",
 //     "query ID", "found-by", "oracle-verdict", "note", "end".
 //   * Errors: "line N: <what is wrong>" from the parser; a file reader adds
 //     "<path>: " in front. The wording of every message lives here or in the
@@ -136,7 +136,7 @@ std::string escape_text(std::string_view s);
 /// Undoes escape_text; false (with `what`) on a bad escape.
 bool unescape_text(std::string_view s, std::string& out, std::string& what);
 
-// --- errors shared by both formats ------------------------------------------
+// --- errors shared by the formats ------------------------------------------
 
 /// Checks the first statement (`key` and the rest of its line) as the header
 /// "geomcheck-case VERSION" and stores VERSION; the error, or nullopt.
@@ -174,8 +174,8 @@ struct MetaLines {
   std::optional<std::string> read(std::string_view key, std::string_view rest, int line);
 };
 
-/// The parser of both formats, minus their bodies. Derived (CRTP) supplies:
-///   - `static constexpr const char* kBodyKeyword`: "shape" or "point", the
+/// The parser of the formats, minus their bodies. Derived (CRTP) supplies:
+///   - `static constexpr const char* kBodyKeyword`: "shape", "point" or "cylinder", the
 ///     statement after which meta lines are refused;
 ///   - `bool query_id(std::string_view id, int n)`: checks the query line's
 ///     id (the duplicate, missing-id and trailing-text errors are handled
@@ -240,7 +240,7 @@ class LineParser {
   Derived& derived() { return static_cast<Derived&>(*this); }
 
   /// One line (`n` from 1): control bytes, blank and comment lines, the
-  /// header, and the statements both formats share; the rest goes to body().
+  /// header, and the statements the formats share; the rest goes to body().
   bool statement(std::string_view line, int n) {
     if (auto e = control_byte_error(line)) return fail(n, *e);
     std::string_view rest = line;
@@ -316,7 +316,7 @@ class ValueLines {
 
 // --- the promise on any text ------------------------------------------------
 
-/// What the fuzz targets of both formats check for one input: `r` (the
+/// What the fuzz targets of the formats check for one input: `r` (the
 /// parse of the input by `parse`) is either an error that names its line
 /// (or is about the file's size or emptiness), or a value that `write`
 /// writes back as text that `parse` reads as the same value, bit for bit.

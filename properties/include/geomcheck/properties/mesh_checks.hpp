@@ -7,13 +7,15 @@
 // to:
 //   * robustness: invalid input (an invalid cylinder, a non-finite vertex,
 //     an index out of range) gives no hit; a hit's contact is finite;
-//   * the brute force over every face in index order, bit for bit
-//     (overlap, hit, depth, normal, point, face index), and collide's hit
-//     is overlap's verdict;
+//     collide's hit is overlap's verdict;
 //   * argument order: collide(mesh, cylinder) is the flipped answer;
-//   * the deepest face: the verdict is "some face overlaps" (the triangle
-//     query's verdict) and the contact is the deepest face's own triangle
-//     answer (the smallest index on ties);
+//   * the deepest face, the definition checked face by face in index order:
+//     the verdict is "some face overlaps" (the triangle query's verdict)
+//     and the contact is the deepest face's own triangle answer, bit for
+//     bit (the smallest index on ties);
+//   * production only: its hierarchy and face filter give the answers of
+//     its brute force over every face, bit for bit (overlap, hit, depth,
+//     normal, point, face index);
 //   * the truth, face by face: a face the certified engine finds
 //     overlapping beyond the verdict band is not missed, and the reported
 //     face's contact meets every claim of collide_cylinder_triangle
@@ -60,8 +62,10 @@ const std::vector<const MeshImpl*>& mesh_variants();
 /// The subject named `name` (production or a variant), or null.
 const MeshImpl* mesh_subject(const std::string& name);
 
-/// The exact verdict of the mesh, face by face (the strongest of its
-/// faces': overlapping, then touching, then undecided, then separated).
+/// The exact verdict of the mesh, face by face: overlapping when a face
+/// overlaps; else undecided when a face is (its distance within the
+/// engine's width of 0, of either sign); else touching when a face
+/// touches; else separated.
 struct MeshTruth {
   bool valid = false;  ///< the cylinder and the mesh are valid
   oracle::Verdict verdict = oracle::Verdict::Separated;
@@ -82,12 +86,13 @@ CheckResult check_mesh_consistency(const Cylinder& cyl, const TriangleMesh& mesh
 /// The truth of the case, face by face (the certified engine on every face
 /// its bounding box does not separate).
 MeshTruth mesh_truth(const Cylinder& cyl, const TriangleMesh& mesh);
-/// The truth's checks: no robust hit missed; the reported face's contact
-/// held to collide_cylinder_triangle's claims. `truth` from mesh_truth.
+/// The truth's checks: no robust hit missed; the reported contact is the
+/// reported face's triangle answer and is held to collide_cylinder_triangle's
+/// claims. `truth` from mesh_truth.
 CheckResult check_mesh_oracle(const Cylinder& cyl, const TriangleMesh& mesh, const MeshTruth& truth,
                               const MeshImpl& impl = production_mesh());
 /// Every check, in order: consistency, then the truth (computed here, and
-/// stored in *truth when given).
+/// stored in *truth when given, also when the consistency checks fail).
 CheckResult check_mesh_all(const Cylinder& cyl, const TriangleMesh& mesh, const MeshImpl& impl = production_mesh(),
                            MeshTruth* truth = nullptr);
 

@@ -4,6 +4,7 @@
 // witness, and optionally another engine's answer, as inline SVG.
 #pragma once
 
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -61,9 +62,11 @@ std::string views(const Case& c, const std::string& title, const std::vector<Mar
                   const Answer* answer = nullptr);
 
 /// Three views of a mesh case: the cylinder (blue), the faces whose boxes
-/// come within the cylinder's size of it (orange; at most 400, the whole
-/// mesh's count in the title), production's contact and its face (red),
+/// come within the cylinder's size of it (orange; the answer's face first,
+/// at most 400, the whole mesh's count in the title), the answer `k` of
+/// `who` on face `face` (red: its point and normal, and the face's edges),
 /// and the certified engine's witness for that face (green).
-std::string mesh_views(const Cylinder& cyl, const TriangleMesh& mesh, const std::string& title);
+std::string mesh_views(const Cylinder& cyl, const TriangleMesh& mesh, const Contact& k, std::uint32_t face,
+                       const std::string& who, const std::string& title);
 
 }  // namespace geomcheck::draw
