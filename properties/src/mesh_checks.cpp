@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "common.hpp"
 #include "geomcheck/collide_cylinder_triangle.hpp"
 
 namespace geomcheck {
@@ -15,17 +16,7 @@ namespace {
 constexpr QueryId kTriangle = QueryId::collide_cylinder_triangle;
 constexpr std::uint32_t kNoFace = 0xffffffffu;
 
-std::string hex(double v) {
-  char b[40];
-  std::snprintf(b, sizeof b, "%a", v);
-  return b;
-}
-std::string hex(Vec3 v) { return "(" + hex(v.x) + ", " + hex(v.y) + ", " + hex(v.z) + ")"; }
-
-std::string describe(const Contact& k) {
-  if (!k.hit) return "no hit";
-  return "depth=" + hex(k.depth) + " normal=" + hex(k.normal) + " point=" + hex(k.point);
-}
+std::string describe(const Contact& k) { return geomcheck::describe(k, k.hit); }
 
 bool eq(double x, double y) { return x == y || (std::isnan(x) && std::isnan(y)); }
 bool eq(Vec3 a, Vec3 b) { return eq(a.x, b.x) && eq(a.y, b.y) && eq(a.z, b.z); }
@@ -208,9 +199,9 @@ CheckResult check_mesh_all(const Cylinder& cyl, const TriangleMesh& m, const Mes
 }
 
 std::string describe_mesh(const Cylinder& cyl, const std::vector<Vec3>& vertices, const std::vector<MeshFace>& faces) {
-  std::string s = "cylinder p=" + hex(cyl.p) + " q=" + hex(cyl.q) + " r=" + hex(cyl.r) + "\n  " +
+  std::string s = "cylinder p=" + vec(cyl.p) + " q=" + vec(cyl.q) + " r=" + fmt("%.17g", cyl.r) + "\n  " +
                   std::to_string(vertices.size()) + " vertices:";
-  for (std::size_t i = 0; i < vertices.size(); ++i) s += "\n    v" + std::to_string(i) + " " + hex(vertices[i]);
+  for (std::size_t i = 0; i < vertices.size(); ++i) s += "\n    v" + std::to_string(i) + " " + vec(vertices[i]);
   s += "\n  " + std::to_string(faces.size()) + " faces:";
   for (std::size_t i = 0; i < faces.size(); ++i)
     s += "\n    f" + std::to_string(i) + " " + std::to_string(faces[i][0]) + " " + std::to_string(faces[i][1]) + " " +

@@ -97,7 +97,7 @@ CheckResult check_mesh_all(const Cylinder& cyl, const TriangleMesh& mesh, const 
                            MeshTruth* truth = nullptr);
 
 /// The case in words: the cylinder and every vertex and face, coordinates
-/// as hexadecimal floats (the case files' form).
+/// with round-trip precision ("%.17g").
 std::string describe_mesh(const Cylinder& cyl, const std::vector<Vec3>& vertices, const std::vector<MeshFace>& faces);
 
 }  // namespace geomcheck
