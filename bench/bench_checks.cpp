@@ -38,6 +38,8 @@ struct Figures {
   double before = 0, after = 0;  // cases per second
   int cases = 0;
   std::map<std::string, int> stages;
+  std::map<std::string, int> stage_cases;       // cases decided at each stage, invalid inputs too (after)
+  std::map<std::string, double> stage_seconds;  // their CPU time, whole check
 };
 std::map<std::string, Figures>& figures() {
   static std::map<std::string, Figures> f;
@@ -70,24 +72,30 @@ void bm_check(benchmark::State& state, bool after, int n) {
   fig.cases = n;
   int failures = 0;
   std::map<std::string, int> stages;
+  std::map<std::string, int> stage_cases;  // these two count the invalid inputs too
+  std::map<std::string, double> stage_seconds;
   const double t0 = cpu_seconds();
   std::size_t done = 0;
   for (auto _ : state) {
     const auto& c = cases[done % cases.size()];
     ++done;
+    const double c0 = cpu_seconds();
     oracle::reset_deepest_stage();
     const Evaluation e = evaluate(c);
     const oracle::Stage st = oracle::deepest_stage();
     const CheckResult f = after ? check_all(c, e) : check_all(c);
     failures += f.has_value();
-    if (e.valid) ++stages[oracle::to_string(st)];
+    const std::string stage = e.valid ? oracle::to_string(st) : std::string("invalid input");
+    if (e.valid) ++stages[stage];
+    ++stage_cases[stage];
+    stage_seconds[stage] += cpu_seconds() - c0;
     benchmark::DoNotOptimize(e.truth_hit);
   }
   const double s = cpu_seconds() - t0;
   state.SetItemsProcessed(static_cast<std::int64_t>(done));
   state.counters["failures"] = failures;
   (after ? fig.after : fig.before) = done / s;
-  if (after) fig.stages = stages;
+  if (after) fig.stages = stages, fig.stage_cases = stage_cases, fig.stage_seconds = stage_seconds;
   oracle::set_double_double_default(true);
 }
 
@@ -188,6 +196,23 @@ int main(int argc, char** argv) {
     }
     std::printf("%-26s %7d %12.0f %12.0f %6.2fx  %s\n", name.c_str(), f.cases, f.before, f.after, f.after / f.before,
                 st.c_str());
+  }
+  // Where the time goes (after): per stage of the cascade that decided the
+  // case's truth, its share of the cases, its share of the CPU time, and
+  // the cases per second among the cases it decided (the whole check).
+  std::printf("\n%-26s %-16s %8s %8s %12s   (after: time per stage of the cascade)\n", "query", "decided by",
+              "cases", "time", "cases/s");
+  for (const auto& [name, f] : figures()) {
+    if (!(f.after > 0) || f.stages.size() < 2) continue;
+    int n = 0;
+    double total = 0;
+    for (const auto& kv : f.stage_cases) n += kv.second;
+    for (const auto& kv : f.stage_seconds) total += kv.second;
+    for (const auto& [k, v] : f.stage_cases) {
+      const double sec = f.stage_seconds.at(k);
+      std::printf("%-26s %-16s %7.1f%% %7.1f%% %12.0f\n", name.c_str(), k.c_str(), 100.0 * v / std::max(1, n),
+                  100.0 * sec / total, sec > 0 ? v / sec : 0.0);
+    }
   }
   std::printf("\n%-26s %7s %12s %12s %7s   (certified penetration depths at 1e-20 * scale)\n", "query",
               "pairs", "before /s", "after /s", "ratio");
