@@ -3,10 +3,11 @@
 // query, on one core, over the campaign's generator mix (the first N cases of
 // `geomcheck campaign --seed 20261121`), two ways in the same run:
 //   before  the engine without its double-double round, and the truth asked
-//           twice per case (evaluate, then check_all: as campaigns did);
+//           twice per case (evaluate, then check_all: as campaigns did), and
+//           again by every check that compares the case with a moved copy;
 //   after   the engine's cascade as built (interval filter, doubles,
 //           double-double, then 128 and 384 digits), and the truth asked once
-//           (check_all(c, e)).
+//           (check_all(c, e), and evaluate()'s memo: set_evaluation_memo).
 // Both decide with certainty: only the speed differs. Printed after the
 // benchmarks: cases per second of CPU time each way, their ratio, and the
 // share of cases whose truth was decided at each stage of the cascade
@@ -68,6 +69,7 @@ template <QueryId Q>
 void bm_check(benchmark::State& state, bool after, int n) {
   static const auto cases = campaign_cases<Q>(n);
   oracle::set_double_double_default(after);
+  set_evaluation_memo(after);
   Figures& fig = figures()[info(Q).name];
   fig.cases = n;
   int failures = 0;
@@ -97,6 +99,7 @@ void bm_check(benchmark::State& state, bool after, int n) {
   (after ? fig.after : fig.before) = done / s;
   if (after) fig.stages = stages, fig.stage_cases = stage_cases, fig.stage_seconds = stage_seconds;
   oracle::set_double_double_default(true);
+  set_evaluation_memo(true);
 }
 
 /// Certified penetration depths at the width the checks ask (1e-20 *

@@ -476,7 +476,7 @@ int run_campaign(const CampaignOptions& opt) {
     if (opt.variant.empty() && opt.shard == 0) {
       // Sharded: the engines on the campaign's first cases (in shard 0), not this shard's.
       const int first = opt.shards > 1 ? campaign_cases(opt, Q) : reps.back().cases;
-      reps.back().peers = run_peers<Q>(std::min(opt.peer_cases, first), opt.seed, out_dir, opt.seeds);
+      reps.back().peers = run_peers<Q>(std::min(opt.peer_cases, first), opt.seed, out_dir, opt.seeds, threads);
     }
     // No engine built: nothing to set beside (sharded: decided by merge).
     if (opt.shards == 1 && reps.back().peers.empty()) reps.back().first.clear();

@@ -1,10 +1,17 @@
 // geomcheck — the other engines by name, and their campaign runs (peers.hpp).
 #include "peers.hpp"
 
+#include <sys/wait.h>
+#include <unistd.h>
+
 #include <algorithm>
 #include <cstdio>
+#include <fstream>
+#include <map>
+#include <sstream>
 
 #include "geomcheck/verify.hpp"
+#include "shard.hpp"
 #ifdef GEOMCHECK_PEER_ODE
 #include "geomcheck/peers/ode.hpp"
 #endif
@@ -77,7 +84,7 @@ const ImplOf<Q>* peer_subject(const std::string& name) {
 
 template <QueryId Q>
 std::vector<report::QueryReport> run_peers(int cases, std::uint64_t seed, const std::filesystem::path& out_dir,
-                                           const std::filesystem::path& seeds) {
+                                           const std::filesystem::path& seeds, int jobs) {
   std::vector<report::QueryReport> out;
   if (cases <= 0) return out;
   std::vector<std::filesystem::path> bugreports;
@@ -87,25 +94,96 @@ std::vector<report::QueryReport> run_peers(int cases, std::uint64_t seed, const 
     if (name.rfind("bugreport-", 0) == 0 && entry.path().extension() == ".case") bugreports.push_back(entry.path());
   }
   std::sort(bugreports.begin(), bugreports.end());
-  for (const auto* s : subjects_of<Q>()) {
-    if (!s) continue;
-    std::fprintf(stderr, "[campaign] %-24s %s on the first %d cases\n", info(Q).name, s->name, cases);
+  std::vector<const ImplOf<Q>*> engines;
+  for (const auto* s : subjects_of<Q>())
+    if (s) engines.push_back(s);
+  // One engine's run: its cases, then the bug-report configurations.
+  const auto run_one = [&](const ImplOf<Q>& s) {
     VerifyOptions opt;
     opt.cases = cases;
     opt.seed = seed;
-    opt.out = out_dir / "peers" / s->name;
+    opt.out = out_dir / "peers" / s.name;
     opt.max_saved = 10;  // of a property (and 5 of a signature): each is shrunk, one engine answering at a time
     opt.shrink_budget = 30;  // shrunk (a short budget: the time goes to the cases)
     opt.quiet = true;
     opt.summary = false;
     opt.report = false;
-    opt.replay = std::string("geomcheck replay --subject ") + s->name + " ";
-    out.push_back(verify<Q>(*s, opt).figures);
-    if (bugreports.empty()) continue;
-    opt.out = out_dir / "peers" / s->name / "bugreports";
-    const VerifyResult b = verify<Q>(*s, bugreports, opt);
-    out.back().bugreports = b.cases;
-    out.back().bugreports_failed = b.failed_cases;
+    opt.replay = std::string("geomcheck replay --subject ") + s.name + " ";
+    report::QueryReport rep = verify<Q>(s, opt).figures;
+    if (!bugreports.empty()) {
+      opt.out = out_dir / "peers" / s.name / "bugreports";
+      const VerifyResult b = verify<Q>(s, bugreports, opt);
+      rep.bugreports = b.cases;
+      rep.bugreports_failed = b.failed_cases;
+    }
+    return rep;
+  };
+  out.resize(engines.size());
+  // Side by side: engine k's run in a child process that writes its report
+  // (shard.json's layout, exact) to `figures(k)`; the parent reads it back.
+  // A child that fails is run again here, so a report is never lost.
+  const auto figures = [&](std::size_t k) { return out_dir / "peers" / (std::string(".") + engines[k]->name + ".report.json"); };
+  std::map<pid_t, std::size_t> running;
+  const auto collect = [&](pid_t pid, int status) {
+    const std::size_t k = running.at(pid);
+    running.erase(pid);
+    bool ok = WIFEXITED(status) && WEXITSTATUS(status) == 0;
+    if (ok) {
+      try {
+        std::ifstream f(figures(k));
+        std::stringstream text;
+        text << f.rdbuf();
+        out[k] = query_report_from_json(text.str());
+      } catch (const std::exception& e) {
+        std::fprintf(stderr, "[campaign] %s: %s's report unreadable (%s)\n", info(Q).name, engines[k]->name, e.what());
+        ok = false;
+      }
+    }
+    std::filesystem::remove(figures(k), ec);
+    if (!ok) {
+      std::fprintf(stderr, "[campaign] %-24s %s again, in this process (its process ended with status %d)\n",
+                   info(Q).name, engines[k]->name, status);
+      out[k] = run_one(*engines[k]);
+    }
+  };
+  for (std::size_t k = 0; k < engines.size(); ++k) {
+    std::fprintf(stderr, "[campaign] %-24s %s on the first %d cases\n", info(Q).name, engines[k]->name, cases);
+    std::fflush(nullptr);
+    std::filesystem::create_directories(out_dir / "peers", ec);
+    const pid_t pid = jobs > 1 ? ::fork() : -1;
+    if (pid == 0) {  // the child: the run, its report to the file
+      int rc = 1;
+      try {
+        const std::string text = query_report_json(run_one(*engines[k]));
+        std::ofstream f(figures(k));
+        f << text;
+        f.close();
+        rc = f ? 0 : 1;
+      } catch (...) {
+      }
+      std::fflush(nullptr);
+      std::_Exit(rc);
+    }
+    if (pid < 0) {
+      out[k] = run_one(*engines[k]);
+      continue;
+    }
+    running[pid] = k;
+    while (static_cast<int>(running.size()) >= jobs) {
+      int status = 0;
+      const pid_t done = ::waitpid(-1, &status, 0);
+      if (done > 0 && running.count(done)) collect(done, status);
+      else if (done < 0) break;
+    }
+  }
+  while (!running.empty()) {
+    int status = 0;
+    const pid_t done = ::waitpid(-1, &status, 0);
+    if (done < 0) {  // lost track of the children: their engines again, here
+      for (const auto& entry : std::map<pid_t, std::size_t>(running)) collect(entry.first, -1);
+      break;
+    }
+    if (running.count(done)) collect(done, status);
   }
   return out;
 }
@@ -113,7 +191,7 @@ std::vector<report::QueryReport> run_peers(int cases, std::uint64_t seed, const 
 #define GEOMCHECK_X(id, kind, A, B, summary)                                                               \
   template const ImplOf<QueryId::id>* peer_subject<QueryId::id>(const std::string&);                      \
   template std::vector<report::QueryReport> run_peers<QueryId::id>(int, std::uint64_t, const std::filesystem::path&, \
-                                                                   const std::filesystem::path&);
+                                                                   const std::filesystem::path&, int);
 GEOMCHECK_QUERY_LIST(GEOMCHECK_X)
 #undef GEOMCHECK_X
 

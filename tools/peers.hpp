@@ -24,11 +24,16 @@ const ImplOf<Q>* peer_subject(const std::string& name);
 /// Every engine's subject of Q held to every property (verify(): a child
 /// process, a hang or a crash that case's failure) on the first `cases`
 /// cases the campaign draws from `seed`; failures saved under
-/// out_dir/peers/<engine>/ (at most 3 per property); then the bug-report
-/// configurations of Q (`seeds`/<query>/bugreport-*.case, where the folder
-/// exists), each failing one named. One report per engine.
+/// out_dir/peers/<engine>/ (at most 10 per property, 5 per signature, each
+/// shrunk); then the bug-report configurations of Q
+/// (`seeds`/<query>/bugreport-*.case, where the folder exists), each failing
+/// one named. One report per engine, in the engines' order. The engines run
+/// side by side, each in a process of its own, at most `jobs` at a time
+/// (each engine's run is the same as alone: its own cases, caps and files;
+/// the process only carries its report back); 1, or no fork: one after the
+/// other in this process.
 template <QueryId Q>
 std::vector<report::QueryReport> run_peers(int cases, std::uint64_t seed, const std::filesystem::path& out_dir,
-                                           const std::filesystem::path& seeds);
+                                           const std::filesystem::path& seeds, int jobs = 1);
 
 }  // namespace geomcheck

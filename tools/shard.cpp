@@ -406,6 +406,21 @@ void write_shard(const fs::path& file, const CampaignOptions& opt, const report:
   if (!f) std::fprintf(stderr, "[campaign] cannot write %s\n", file.string().c_str());
 }
 
+std::string query_report_json(const QueryReport& r) {
+  Json j = Json::object();
+  Out w{j};
+  fields(w, const_cast<QueryReport&>(r));
+  return j.dump();
+}
+
+QueryReport query_report_from_json(const std::string& text) {
+  const Json j = Json::parse(text);
+  QueryReport r;
+  In in{j};
+  fields(in, r);
+  return r;
+}
+
 int merge_shards(const std::vector<std::string>& dirs, const std::string& out_arg, const std::string& junit,
                  const std::string& command) {
   const fs::path out(out_arg);

@@ -24,8 +24,6 @@ Q signed_volume(const QVec& p0, const QVec& p1, const QVec& p2, const QVec& p3);
 bool origin_strictly_inside(const std::array<QVec, 4>& w);
 /// check_overlap; `trust_members` skips containment (points built inside by
 /// construction, e.g. of a swept hull which has no containment test).
-/// Records that an engine call of this thread reached stage s (deepest_stage).
-void note_stage(Stage s);
 bool check_overlap_impl(const ConvexShape& a, const ConvexShape& b, const OverlapCertificate& c, bool trust_members);
 
 }  // namespace geomcheck::oracle

@@ -2,7 +2,11 @@
 // evaluate (the common start, then the query's own hold_to_truth),
 // check_oracle, check_robust (by kind) and check_all (the order of the
 // checks), defined or explicitly instantiated for every registered query.
+#include <algorithm>
+#include <array>
+#include <atomic>
 #include <cmath>
+#include <cstring>
 #include <type_traits>
 
 #include "common.hpp"
@@ -63,18 +67,100 @@ CheckResult all(const Case& c, const ImplOfCase<Case>& impl, const Evaluation* k
   return check_monotone(c, impl);
 }
 
+// --- the memo of evaluations (set_evaluation_memo) ---------------------------
+
+std::atomic<bool> g_memo{true};
+
+bool same(double x, double y) { return std::memcmp(&x, &y, sizeof x) == 0; }
+bool same(const Vec3& a, const Vec3& b) { return same(a.x, b.x) && same(a.y, b.y) && same(a.z, b.z); }
+bool same(const Contact& a, const Contact& b) {
+  return a.hit == b.hit && same(a.point, b.point) && same(a.normal, b.normal) && same(a.depth, b.depth);
+}
+bool same(const CastHit& a, const CastHit& b) {
+  return a.hit == b.hit && same(a.t, b.t) && same(a.point, b.point) && same(a.normal, b.normal) &&
+         a.starts_inside == b.starts_inside;
+}
+
+/// The last evaluations of one query on this thread, keyed by what an
+/// evaluation is a function of (the case, bit for bit; the subject's
+/// answers; its claimed margin).
+template <class Case, class Answer>
+class Memo {
+  // Shapes are plain doubles: equal bits, equal case.
+  static_assert(std::is_trivially_copyable_v<Case> && sizeof(Case) % sizeof(double) == 0, "a case of doubles");
+  struct Entry {
+    Case c;
+    Answer answer;
+    bool prod_hit = false;
+    double margin = 0;
+    Evaluation e;
+    oracle::Stage stage = oracle::Stage::None;  // the deepest engine stage that computed e
+  };
+  std::array<Entry, 4> ring_{};
+  int size_ = 0, next_ = 0;
+
+ public:
+  const Entry* find(const Case& c, const Answer& answer, bool prod_hit, double margin) const {
+    for (int i = 0; i < size_; ++i) {
+      const Entry& x = ring_[i];
+      if (x.prod_hit == prod_hit && same(x.margin, margin) && same(x.answer, answer) &&
+          std::memcmp(&x.c, &c, sizeof c) == 0)
+        return &x;
+    }
+    return nullptr;
+  }
+  void put(const Case& c, const Answer& answer, bool prod_hit, double margin, const Evaluation& e, oracle::Stage stage) {
+    Entry& x = ring_[next_];
+    x = Entry{c, answer, prod_hit, margin, e, stage};
+    x.e.peer = Evaluation::PeerScore{};
+    next_ = (next_ + 1) % static_cast<int>(ring_.size());
+    size_ = std::max(size_, next_ == 0 ? static_cast<int>(ring_.size()) : next_);
+  }
+};
+
+template <class Case, class Answer>
+Memo<Case, Answer>& memo() {
+  thread_local Memo<Case, Answer> m;
+  return m;
+}
+
+/// evaluate() of every pair query: the subject's answers, then the truth
+/// (hold_to_truth, the query's own) unless the memo has this evaluation.
+/// The engine stages a computation reached are kept with it and noted
+/// again when it is taken from the memo (a campaign's stage counts).
+template <class Case, class Peer>
+Evaluation evaluate_pair(const Case& c, const ImplOfCase<Case>& impl, const Peer* peer) {
+  Evaluation e;
+  using Answer = typename SubjectAnswerOf<QueryTraits<query_of_case<Case>>::kind>::type;
+  Answer answer;
+  if (!start_evaluation(e, c, impl, answer)) return e;
+  const double margin = claimed_margin(impl);
+  auto& m = memo<Case, Answer>();
+  const bool use = g_memo.load(std::memory_order_relaxed);
+  if (use && !peer) {
+    if (const auto* known = m.find(c, answer, e.prod_hit, margin)) {
+      oracle::note_stage(known->stage);
+      return known->e;
+    }
+  }
+  const oracle::Stage before = oracle::deepest_stage();
+  oracle::reset_deepest_stage();
+  hold_to_truth(e, c, answer, peer);
+  widen_band(e, margin);
+  const oracle::Stage stage = oracle::deepest_stage();
+  oracle::note_stage(before);  // the thread's deepest stage: the larger of the two
+  if (use) m.put(c, answer, e.prod_hit, margin, e, stage);
+  return e;
+}
+
 }  // namespace
+
+void set_evaluation_memo(bool on) { g_memo = on; }
 
 #define GEOMCHECK_X(id, kind, A, B, summary)                                                                   \
   Evaluation evaluate(const PairCase<A, B, QueryId::id>& c, const ImplOf<QueryId::id>& impl,                                \
                       const PeerAnswerOf<QueryKind::kind>::type* peer) {                                       \
-    Evaluation e;                                                                                              \
-    SubjectAnswerOf<QueryKind::kind>::type answer;                                                             \
-    if (start_evaluation(e, c, impl, answer)) {                                                                \
-      hold_to_truth(e, c, answer, peer);                                                                       \
-      widen_band(e, claimed_margin(impl));                                                                     \
-    }                                                                                                          \
-    return e;                                                                                                  \
+    return evaluate_pair(c, impl, peer);                                                                       \
   }                                                                                                            \
   CheckResult check_oracle(const PairCase<A, B, QueryId::id>& c, const ImplOf<QueryId::id>& impl) {                         \
     return judge(QueryId::id, evaluate(c, impl), impl.claims);                                                 \

@@ -4,7 +4,8 @@
 # verdict mix, failure signature, error percentile and histogram; timings
 # and saved-file paths left out), for production (an engine-backed query, a
 # closed-form one, the point sets) and for a known-wrong variant (failures
-# counted the same, exit status 1 kept). GTEST_SHARD_INDEX/GTEST_TOTAL_SHARDS
+# counted the same, exit status 1 kept); one thread gives the report of two
+# (the other engines side by side or one after another). GTEST_SHARD_INDEX/GTEST_TOTAL_SHARDS
 # pick the shard when --shard is not given; merge refuses a missing, a
 # repeated and a foreign shard (exit 2).
 # usage: test_shards.sh GEOMCHECK OUT_DIR
@@ -41,6 +42,13 @@ for q in r["queries"]:
     assert q["cases"] == 90 and sum(q["truth_stages"].values()) == q["valid"], q["id"]
 assert [m["meshes"] for m in r["mesh_queries"]] == [90], r["mesh_queries"]
 PY
+
+# One thread: the same report (the other engines one after another in this
+# process, where two threads run them side by side in child processes).
+run 0 one-thread campaign --seed 20261121 --no-progress --threads 1 "${prod[@]}" --out "$out/one-thread"
+same "$out/full/report.json" "$out/one-thread/report.json"
+python3 -c "import json,sys; q=json.load(open(sys.argv[1]))['queries'][0]; assert len(q['peers']) > 0, q['id']" \
+  "$out/full/report.json" || fail "no engine ran: the comparison of the engines' reports was empty"
 
 # A failing subject: the failures are counted the same, the exit status kept.
 bad=(--cases 150 --variant capsule-capsule)

@@ -234,5 +234,9 @@ void reset_deepest_stage();
 /// The deepest stage any engine call of this thread reached since
 /// reset_deepest_stage() (a campaign's share of cases per stage).
 Stage deepest_stage();
+/// Counts stage s as reached by this thread's engine calls (deepest_stage()
+/// keeps the deepest): a truth computed earlier and taken again from a
+/// memo notes the stage that computed it.
+void note_stage(Stage s);
 
 }  // namespace geomcheck::oracle

@@ -315,6 +315,17 @@ CheckResult judge(QueryId id, const Evaluation& e, const Claims* claims = nullpt
 GEOMCHECK_QUERY_LIST(GEOMCHECK_X)
 #undef GEOMCHECK_X
 
+/// evaluate() keeps this thread's last four evaluations of each query and
+/// gives one back when asked again with the same case, the same subject
+/// answers (overlap and contact, or the hit) and the same claimed margin,
+/// all compared bit for bit: an evaluation is a function of these alone, so
+/// the checks that compare a case with a moved copy (metamorphic, monotone)
+/// do not ask the engine for the case's truth again. The subject is still
+/// asked every time. On by default; off: every evaluation computed (the
+/// "before" of bench_checks). A peer's evaluation is computed every time
+/// and kept without the peer's scores.
+void set_evaluation_memo(bool on);
+
 // --- every query: the checks that are the query's own ----------------------
 // Declared here for every registered query; each defined in
 // properties/src/checks_<id>.cpp, whose head says what it means there.
