@@ -7,10 +7,11 @@
 # fuzz preset (clang, libFuzzer, ASan+UBSan) and runs the bounded fuzz smoke
 # test of every fuzz target over its seeds (a fixed run count each).
 #
-# --quick: the default build and every suite of it with a tenth of the
-# cases (2000 per property, 40 per engine property, 2000 per precision
-# query; the teeth keep theirs), no sanitizer or fuzz run. The next full run
-# restores the counts (they are the default preset's).
+# --quick: the quick preset (build/quick: the default build's code at -O2
+# without debug information and without the benchmarks) and every suite of
+# the default preset with a tenth of the cases (2000 per property, 40 per
+# engine property, 2000 per precision query; the teeth keep theirs), no
+# sanitizer or fuzz run.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 quick=0
@@ -27,17 +28,14 @@ done
 bash scripts/install-deps.sh
 jobs=$(nproc)
 phase() { echo "== $1 (at $((SECONDS / 60)) min $((SECONDS % 60)) s)"; }
-phase "default build (g++)"
-if [ "$quick" = 1 ]; then
-  cmake --preset default -DGEOMCHECK_RC_CASES=2000 -DGEOMCHECK_ENGINE_RC_CASES=40 -DGEOMCHECK_PREDICATES_RC_CASES=2000 >/dev/null
-  export GEOMCHECK_PRECISION_CASES=2000
-else
-  cmake --preset default >/dev/null
-fi
-cmake --build --preset default -j "$jobs"
+main=default
+[ "$quick" = 1 ] && main=quick
+phase "$main build (g++)"
+cmake --preset "$main" >/dev/null
+cmake --build --preset "$main" -j "$jobs"
 built=$SECONDS
-seed=$(sed -n 's/^GEOMCHECK_RC_SEED:STRING=//p' build/default/CMakeCache.txt)
-cases=$(sed -n 's/^GEOMCHECK_RC_CASES:STRING=//p' build/default/CMakeCache.txt)
+seed=$(sed -n 's/^GEOMCHECK_RC_SEED:STRING=//p' "build/$main/CMakeCache.txt")
+cases=$(sed -n 's/^GEOMCHECK_RC_CASES:STRING=//p' "build/$main/CMakeCache.txt")
 phase "tests (RapidCheck seed $seed, $cases cases per property; a failure prints its replay command)"
 summary=()
 run_ctest() {  # preset; keeps ctest's closing line for the summary
@@ -51,7 +49,7 @@ run_ctest() {  # preset; keeps ctest's closing line for the summary
   return "$rc"
 }
 status=0
-run_ctest default || status=1
+run_ctest "$main" || status=1
 if [ "$quick" = 1 ]; then
   echo
   echo "tests (quick): ${summary[0]} ($((SECONDS / 60)) min $((SECONDS % 60)) s in all, $(((SECONDS - built) / 60)) min $(((SECONDS - built) % 60)) s after the build)"
