@@ -10,8 +10,8 @@
 # --quick: the quick preset (build/quick: the default build's code at -O2
 # without debug information and without the benchmarks) and every suite of
 # the default preset with a tenth of the cases (2000 per property, 40 per
-# engine property, 2000 per precision query; the teeth keep theirs), no
-# sanitizer or fuzz run.
+# engine property, 2000 per precision query, 100 per query in the campaign
+# smoke test; the teeth keep theirs), no sanitizer or fuzz run.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 quick=0
