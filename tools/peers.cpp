@@ -146,10 +146,10 @@ std::vector<report::QueryReport> run_peers(int cases, std::uint64_t seed, const 
       out[k] = run_one(*engines[k]);
     }
   };
+  std::filesystem::create_directories(out_dir / "peers", ec);
   for (std::size_t k = 0; k < engines.size(); ++k) {
     std::fprintf(stderr, "[campaign] %-24s %s on the first %d cases\n", info(Q).name, engines[k]->name, cases);
     std::fflush(nullptr);
-    std::filesystem::create_directories(out_dir / "peers", ec);
     const pid_t pid = jobs > 1 ? ::fork() : -1;
     if (pid == 0) {  // the child: the run, its report to the file
       int rc = 1;
