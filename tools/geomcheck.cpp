@@ -493,7 +493,9 @@ int main(int argc, char** argv) {
   app.add_subcommand("queries", "Lists the registered queries: id, family (a pair of shapes, a point set, or a "
                                 "cylinder and a mesh), what production answers.")
       ->callback([] {
-        for (const auto& q : kAllQueries) std::printf("%-26s %-9s %s\n", q.name, family_name(q.family), q.summary);
+        int w = 0;  // the longest id sets the column
+        for (const auto& q : kAllQueries) w = std::max(w, static_cast<int>(std::strlen(q.name)));
+        for (const auto& q : kAllQueries) std::printf("%-*s  %-9s %s\n", w, q.name, family_name(q.family), q.summary);
       });
   std::string names;
   bool known = false;

@@ -40,6 +40,7 @@ expect_rc 0 "queries" "$tool" queries
 grep -q "cast_segment_cylinder" "$tmp/out" && ok || bad "queries lists cast_segment_cylinder"
 grep -q "^delaunay_2d  *point-set" "$tmp/out" && ok || bad "queries lists delaunay_2d as a point-set query"
 grep -q "^collide_cylinder_mesh  *mesh" "$tmp/out" && ok || bad "queries lists collide_cylinder_mesh as a mesh query"
+[ "$(awk '{ match($0, /^[^ ]+ +/); print RLENGTH }' "$tmp/out" | sort -u | wc -l)" = 1 ] && ok || bad "queries' family column starts at one column on every line"
 
 # The mesh family runs in the campaign: its own section in report.json.
 expect_rc 0 "campaign of collide_cylinder_mesh" "$tool" campaign --query collide_cylinder_mesh --cases 60 --no-progress --out "$tmp/mesh"
