@@ -135,7 +135,10 @@ void set_double_double_default(bool on);
 
 struct EngineOptions {
   bool filter = true;        // run the double filter first
-  bool exact_small = true;   // re-check the double candidates in rationals
+  /// Search in doubles and certify in rationals before the software
+  /// floats, where the double-double round does not run (off, or the scale
+  /// out of its range); where it runs, it does this round's work.
+  bool exact_small = true;
   /// Also build the rational certificate objects when the interval filter
   /// decided (the verdict is certified either way; for curved shapes the
   /// objects cost more than the verdict).
