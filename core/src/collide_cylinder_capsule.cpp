@@ -217,6 +217,18 @@ Contact collide_scaled(const Cylinder& cyl, const Capsule& cap) {
     out.point = c.point;
     out.normal = c.normal;
     out.depth = std::max(cap.r - k.d, 0.0);
+    // A side contact at S's closest approach to the axis line: the direction
+    // between the closest points is the common perpendicular of the axis and
+    // S, u x e / |u x e|, good to about eps / sin(angle between them), where
+    // the radial vector w(l) is good to eps * scene / (r + D) only. A thin
+    // cylinder crossing a long capsule's core at a distance D small against
+    // the scene is where that differs (regression collide_cylinder_capsule/0004).
+    const double we2 = dot(s.we, s.we);
+    if (!rim && ax >= 0 && ax <= s.len && we2 > 0 && k.l == -dot(s.wa, s.we) / we2) {
+      const Vec3 cp = cross(s.u, detail::normalized(s.e));
+      const double sn = detail::safe_length(cp);
+      if (sn * scene > cyl.r + k.d) out.normal = (dot(cp, c.normal) < 0 ? -1 / sn : 1 / sn) * cp;
+    }
     return out;
   }
   // Deep: S meets the cylinder (or nearly). The least overlap over the
