@@ -1426,11 +1426,15 @@ TEST_F(EngineCgalCylinder0, ZeroRadiusCylinderAgainstTriangle) {
     if (r.verdict == Verdict::Undecided) {
       // The engine does not decide a zero-radius cylinder against a
       // degenerate triangle (two segments: their Minkowski difference is
-      // flat). It must say so only there; production is then held to
-      // CGAL's exact squared distance.
-      ASSERT_TRUE(t.c == t.b || t.c == 0.5 * (t.a + t.b)) << where << " undecided: " << to_string(r.distance);
-      ++undecided;
+      // flat), nor a segment that meets the triangle only on its boundary
+      // (distance exactly 0, no interior to certify: a segment one ulp off
+      // a vertex, crossing the plane exactly on an edge). It must say so
+      // only there; production is then held to CGAL's exact squared
+      // distance.
       const Q d2 = decomposed_d2(cgal_shape(segment_shape(a, b)), cgal_shape(triangle_shape(t.a, t.b, t.c)));
+      ASSERT_TRUE(t.c == t.b || t.c == 0.5 * (t.a + t.b) || d2 == 0)
+          << where << " undecided: " << to_string(r.distance) << ", CGAL distance^2 " << to_double(d2);
+      ++undecided;
       if (d2 > band * band) {
         ASSERT_FALSE(overlap(d->cyl, t)) << where << " production overlaps; CGAL distance^2 " << to_double(d2);
       }
