@@ -3,7 +3,7 @@
 # Installs the Debian dependencies, builds the default preset and runs every
 # ctest suite (properties with a fixed printed seed, oracle self-tests, case
 # files, regression and seed replays, campaign smoke, CLI), runs them again
-# under ASan+UBSan (preset asan: -O1, fewer cases, no teeth), then builds the
+# under ASan+UBSan (preset asan: clang, -O1, fewer cases, no teeth), then builds the
 # fuzz preset (clang, libFuzzer, ASan+UBSan) and runs the bounded fuzz smoke
 # test of every fuzz target over its seeds (a fixed run count each).
 #
@@ -55,7 +55,7 @@ if [ "$quick" = 1 ]; then
   echo "tests (quick): ${summary[0]} ($((SECONDS / 60)) min $((SECONDS % 60)) s in all, $(((SECONDS - built) / 60)) min $(((SECONDS - built) % 60)) s after the build)"
   exit "$status"
 fi
-phase "sanitizer build (g++, ASan+UBSan)"
+phase "sanitizer build (clang, ASan+UBSan)"
 cmake --preset asan >/dev/null
 cmake --build --preset asan -j "$jobs"
 phase "tests under ASan+UBSan"

@@ -3,6 +3,7 @@
 // and report.html.
 #pragma once
 
+#include <chrono>
 #include <cstdint>
 #include <string>
 #include <utility>
@@ -62,6 +63,12 @@ inline constexpr int kMeshDefaultCases = 2000;
 /// of the mesh query's (mesh_variants()).
 report::MeshReport run_collide_cylinder_mesh(const CampaignOptions& opt, const std::filesystem::path& out_dir,
                                              int threads);
+
+/// Microseconds from a to b (the per-case timings of the point-set and mesh
+/// families).
+inline double micros(std::chrono::steady_clock::time_point a, std::chrono::steady_clock::time_point b) {
+  return std::chrono::duration<double, std::micro>(b - a).count();
+}
 
 /// Runs the campaign; returns the number of disagreements beyond the band
 /// (0 = production verified on every case run).

@@ -32,8 +32,6 @@ struct MeshRow {
   bool run = false;
 };
 
-double micros(Clock::time_point a, Clock::time_point b) { return std::chrono::duration<double, std::micro>(b - a).count(); }
-
 MeshRow check_mesh_case(const MeshCase& c, const MeshImpl& impl) {
   MeshRow r;
   const TriangleMesh mesh(c.vertices, c.faces);

@@ -32,8 +32,6 @@ struct SetRow {
   bool run = false;
 };
 
-double micros(Clock::time_point a, Clock::time_point b) { return std::chrono::duration<double, std::micro>(b - a).count(); }
-
 // Production on one set, held to the checker and CGAL; times both.
 SetRow check_set(const Points& p, const std::string& mode) {
   SetRow r;

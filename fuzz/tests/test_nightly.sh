@@ -26,7 +26,7 @@ fail() { echo "FAIL: $*"; echo "(state kept in $w)"; exit 1; }
 junit_py=$(dirname "$0")/../../scripts/nightly_junit.py
 junit() { python3 "$junit_py" "$work" "$fuzz_dir" "$w/junit-$1.xml" > "$w/junit-$1.log" 2>&1 || { cat "$w/junit-$1.log"; fail "nightly_junit.py after run $1"; }; }
 common=(--work "$work" --fuzz-dir "$fuzz_dir" --geomcheck "$tool" --regressions "$regs" --seeds "$seeds"
-        --target "$T1=collide_cylinder_sphere" --target "$T2" --jobs 2 --minimise-seconds 3)
+        --target "$T1=collide_cylinder_sphere" --target "$T2" --jobs 1 --minimise-seconds 3)
 watch_disk() {  # names of corpus entries and finding inputs, as often as it can
   while :; do
     for t in $T1 $T2; do

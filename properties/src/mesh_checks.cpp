@@ -20,7 +20,7 @@ std::string describe(const Contact& k) { return geomcheck::describe(k, k.hit); }
 
 bool eq(double x, double y) { return x == y || (std::isnan(x) && std::isnan(y)); }
 bool eq(Vec3 a, Vec3 b) { return eq(a.x, b.x) && eq(a.y, b.y) && eq(a.z, b.z); }
-bool same(const Contact& a, const Contact& b) {
+bool same_contact(const Contact& a, const Contact& b) {
   if (a.hit != b.hit) return false;
   return !a.hit || (eq(a.depth, b.depth) && eq(a.normal, b.normal) && eq(a.point, b.point));
 }
@@ -129,7 +129,7 @@ CheckResult check_mesh_consistency(const Cylinder& cyl, const TriangleMesh& m, c
       return fail("deepest-face",
                   "reported face " + std::to_string(idx) + ", the deepest (smallest index) is " + std::to_string(first));
     const Contact kf = collide(cyl, m.triangle(idx));
-    if (!same(k, kf))
+    if (!same_contact(k, kf))
       return fail("deepest-face", "contact differs from the face's own: " + describe(k) + " vs " + describe(kf));
   }
   // Production's hierarchy and face filter against its brute force, bit for
@@ -138,7 +138,7 @@ CheckResult check_mesh_consistency(const Cylinder& cyl, const TriangleMesh& m, c
     const bool ob = detail::overlap_brute_force(cyl, m);
     std::uint32_t idx_b = kNoFace;
     const Contact kb = detail::collide_brute_force(cyl, m, &idx_b);
-    if (o != ob || !same(k, kb) || (k.hit && idx != idx_b))
+    if (o != ob || !same_contact(k, kb) || (k.hit && idx != idx_b))
       return fail("bvh-equals-brute-force", "hierarchy: face " + std::to_string(idx) + " " + describe(k) +
                                                 "; brute force: overlap " + (ob ? "yes" : "no") + ", face " +
                                                 std::to_string(idx_b) + " " + describe(kb));
@@ -178,7 +178,7 @@ CheckResult check_mesh_oracle(const Cylinder& cyl, const TriangleMesh& m, const 
   const CylinderTriangleCase face{cyl, m.triangle(idx)};
   // The face's evaluation is production's triangle answer held to the
   // truth: the subject's contact must be that answer to be judged by it.
-  if (!same(k, collide(cyl, face.b)))
+  if (!same_contact(k, collide(cyl, face.b)))
     return fail("oracle-face", "face " + std::to_string(idx) + ": the contact is not the face's triangle answer: " +
                                    describe(k) + " vs " + describe(collide(cyl, face.b)));
   const Evaluation e = idx < truth.faces.size() && truth.faces[idx] ? *truth.faces[idx] : evaluate(face);
