@@ -33,29 +33,39 @@ struct SegmentInFrame {
     we = e - ze * u;
   }
   Vec3 point(double l) const { return a + l * e; }  // from p
-  double beyond(double z) const { return z < 0 ? -z : (z > len ? z - len : 0.0); }
+  // How far S(l) lies beyond a cap plane (0 between them). Beyond q's plane
+  // the excess is (za - len) + l ze, not (za + l ze) - len: where S starts on
+  // that plane (za == len) and leaves it at a slope below an ulp of len, the
+  // sum would absorb l ze, and the rim piece would pass for a side piece
+  // (regression collide_cylinder_capsule/0005).
+  double beyond(double l) const {
+    const double z = za + l * ze;
+    if (z < 0) return -z;
+    const double zq = (za - len) + l * ze;
+    return zq > 0 ? zq : 0.0;
+  }
   // Distance from S(l) to the solid cylinder, from the offsets beyond the
   // cap plane and beyond the side.
   double dist(double l) const {
-    const double ea = beyond(za + l * ze);
+    const double ea = beyond(l);
     const double er = std::max(detail::safe_length(wa + l * we) - r, 0.0);
     if (ea == 0) return er;
     if (er == 0) return ea;
     return detail::safe_length(Vec3{ea, er, 0});
   }
   // Beyond a cap plane and outside the radius at l: the rim piece.
-  bool at_rim(double l) const { return beyond(za + l * ze) > 0 && detail::safe_length(wa + l * we) > r; }
+  bool at_rim(double l) const { return beyond(l) > 0 && detail::safe_length(wa + l * we) > r; }
 };
 
 // On a rim piece the squared distance F(l) = (z - cap)^2 + (rho - r)^2 is
 // smooth and convex: its minimum on [lo, hi] by Newton on F' = 0, kept
 // inside a shrinking bracket (bisection when a step leaves it).
 double minimize_rim(const SegmentInFrame& s, double lo, double hi) {
-  const bool at_q = s.za + 0.5 * (lo + hi) * s.ze > s.len;
+  const bool at_q = (s.za - s.len) + 0.5 * (lo + hi) * s.ze > 0;
   const double sz = at_q ? 1.0 : -1.0, cap = at_q ? s.len : 0.0;
   const double we2 = dot(s.we, s.we);
   auto deriv = [&](double l, double& d1, double& d2) {
-    const double ea = sz * (s.za + l * s.ze - cap);
+    const double ea = sz * ((s.za - cap) + l * s.ze);
     const Vec3 w = s.wa + l * s.we;
     const double rho = detail::safe_length(w);
     const double er = rho - s.r;
