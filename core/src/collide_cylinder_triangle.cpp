@@ -323,7 +323,17 @@ Closest segment_triangle(const TriSpace& s) {
     const double b1 = w[2] / sum, b2 = w[0] / sum;  // V0's weight is w[1] / sum
     const Vec3 x = s.V[0] + b1 * (s.V[1] - s.V[0]) + b2 * (s.V[2] - s.V[0]);
     const double xq = dot(x, s.Q), qq = dot(s.Q, s.Q), tol = 0x1p-46 * (max_abs(x) + mq) * mq;
-    if (sure && xq > tol && xq < qq - tol) {
+    // The ends on opposite sides of the triangle's plane, beyond the
+    // rounding of their orientations T0 (the origin) and T0 - sum (Q), as
+    // in meet_exactly: X's place along a line nearly parallel to the plane
+    // is ill-conditioned, and xq alone put a segment ending 1e-11 * scale
+    // short of a sliver across it (open case collide_cylinder_triangle/0001).
+    const detail::FilterValue f0 = detail::triple_filter(s.V[0], s.V[1], s.V[2]);
+    double wb = 0;
+    for (int k = 0; k < 3; ++k) wb += detail::triple_filter(s.Q, s.V[k], s.V[k == 2 ? 0 : k + 1]).bound;
+    const double tq = f0.value - sum;
+    const bool across = std::fabs(f0.value) > f0.bound && std::fabs(tq) > f0.bound + wb && (f0.value > 0) != (tq > 0);
+    if (sure && across && xq > tol && xq < qq - tol) {
       // The meeting point itself, accurately even on a sliver (where the
       // barycentric weights lose digits to their small sum).
       const Vec3 y = crossing_by_longest_edge(s, xq / qq);
