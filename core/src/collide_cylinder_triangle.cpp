@@ -310,11 +310,13 @@ Closest segment_triangle(const TriSpace& s) {
   const Vec3 P{0, 0, 0};
   double w[3];
   bool sure = true;
+  double wb = 0;  // the sum of the three orientations' error bounds
   const double mq = max_abs(s.Q);
   for (int k = 0; k < 3; ++k) {
     const Vec3 a = s.V[k], b = s.V[k == 2 ? 0 : k + 1];
     const detail::FilterValue f = detail::triple_filter(s.Q, a, b);
     w[k] = f.value;
+    wb += f.bound;
     sure = sure && std::fabs(w[k]) > f.bound;
   }
   const bool pos = w[0] >= 0 && w[1] >= 0 && w[2] >= 0, neg = w[0] <= 0 && w[1] <= 0 && w[2] <= 0;
@@ -327,13 +329,13 @@ Closest segment_triangle(const TriSpace& s) {
     // rounding of their orientations T0 (the origin) and T0 - sum (Q), as
     // in meet_exactly: X's place along a line nearly parallel to the plane
     // is ill-conditioned, and xq alone put a segment ending 1e-11 * scale
-    // short of a sliver across it (open case collide_cylinder_triangle/0001).
-    const detail::FilterValue f0 = detail::triple_filter(s.V[0], s.V[1], s.V[2]);
-    double wb = 0;
-    for (int k = 0; k < 3; ++k) wb += detail::triple_filter(s.Q, s.V[k], s.V[k == 2 ? 0 : k + 1]).bound;
-    const double tq = f0.value - sum;
-    const bool across = std::fabs(f0.value) > f0.bound && std::fabs(tq) > f0.bound + wb && (f0.value > 0) != (tq > 0);
-    if (sure && across && xq > tol && xq < qq - tol) {
+    // short of a sliver across it (regression collide_cylinder_triangle/0013).
+    const auto across = [&] {
+      const detail::FilterValue f0 = detail::triple_filter(s.V[0], s.V[1], s.V[2]);
+      const double tq = f0.value - sum;
+      return std::fabs(f0.value) > f0.bound && std::fabs(tq) > f0.bound + wb && (f0.value > 0) != (tq > 0);
+    };
+    if (sure && xq > tol && xq < qq - tol && across()) {
       // The meeting point itself, accurately even on a sliver (where the
       // barycentric weights lose digits to their small sum).
       const Vec3 y = crossing_by_longest_edge(s, xq / qq);
