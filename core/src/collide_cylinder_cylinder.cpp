@@ -539,6 +539,26 @@ double refine_rims(const Frame& f, Vec3& m, double o, int steps) {
       m2 = (1 / std::sqrt(dot(m2, m2))) * m2;
       const double o2 = F(m2);
       if (o2 < o) m = m2, o = o2, moved = true;
+      // A full step that was kept may be far short where F is far from
+      // quadratic (near an axis, a side's term is a cone: shallow contacts
+      // of wide cylinders meeting at their rims took 20 Newton steps
+      // growing by 1.5 each). The step, doubled, again while it lowers F
+      // (at most 4 times), stopping on a kink it would cross.
+      Vec3 dir = d1 * e1 + d2 * e2;
+      for (int j = 0; moved && k == 0 && j < 4; ++j) {
+        dir = 2 * dir;
+        const double tm = dot(m, u);
+        Vec3 m3 = m + dir;
+        const double t3 = dot(m3, u);
+        const bool cross_a = (t3 > 0) != (tm > 0), cross_b = (m3.z > 0) != (m.z > 0);
+        if (cross_a) m3 = m3 - t3 * u;
+        if (cross_b) m3.z = 0;
+        m3 = (1 / std::sqrt(dot(m3, m3))) * m3;
+        const double o3 = F(m3);
+        if (!(o3 < o)) break;
+        m = m3, o = o3;
+        if (cross_a || cross_b) break;
+      }
     }
     if (!moved || o_before - o <= kStopGain * 0x1p-8 * o) break;
   }
@@ -682,7 +702,20 @@ Contact scaled(const Cylinder& a, const Axis& ax_a, const Cylinder& b, const Axi
         const double sg = mc > 0 ? -1.0 : 1.0;
         have_rr = true, o_rr_signed = o_rr, m_rr = Vec3{sg * mx, sg * my, sg * mz};
         rr_better = o_rr < depth;
-        if (o_rr < depth) depth = o_rr, n = (sg * mx) * f.x + (sg * my) * f.y + (sg * mz) * f.z, m = m_rr;
+        if (o_rr < depth) {
+          // The direction it replaces is searched too, below: it ends on a
+          // kink, where the search can leave it for the patch, while a start
+          // off every kink is taken as it is.
+          if (opt.rim_steps > 0) {
+            Vec3 m0 = m;
+            const double o0 = refine_rims(f, m0, depth, opt.rim_steps);
+            if (o0 < o_rr) {
+              depth = o0, n = m0.x * f.x + m0.y * f.y + m0.z * f.z, m = m0;
+              rr_better = false;
+            }
+          }
+          if (rr_better) depth = o_rr, n = (sg * mx) * f.x + (sg * my) * f.y + (sg * mz) * f.z, m = m_rr;
+        }
       }
       // The patch searched from the rim x rim direction too, where it did
       // not win (the best direction is searched below).

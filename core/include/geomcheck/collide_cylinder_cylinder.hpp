@@ -58,8 +58,10 @@
 // searched on the sphere of directions where the overlap falls off its
 // circle or axis (Newton steps in the rim x rim patch, which holds the
 // minimum of two rims meeting, and of stacked cylinders whose axes are
-// nearly parallel; for cylinders end to end within 1/16 rad of parallel,
-// from each axis direction too); `depth` the overlap of the
+// nearly parallel; a kept step tried again doubled while it lowers the
+// overlap, where a side's term is a cone; from the direction the rim x rim
+// one replaced, where it won; for cylinders end to end within 1/16 rad of
+// parallel, from each axis direction too); `depth` the overlap of the
 // shapes along it (h_A(n) + h_B(-n), an upper bound of the penetration
 // depth), and `point` the centre of the two rectangles' common part in the
 // slice found (the corner of one least outside the other when they only
