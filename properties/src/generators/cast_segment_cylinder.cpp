@@ -68,13 +68,15 @@ rc::Gen<Tagged<QueryTraits<QueryId::cast_segment_cylinder>::Case>> targeted<Quer
         break;
       }
       case 4: {  // starting inside
-        a = f.c.p + pick_real(0, 1) * (f.c.q - f.c.p) + f.c.r * pick_real(0, 1) * rad;
+        const double across = pick_real(0, 1), along = pick_real(0, 1);
+        a = f.c.p + along * (f.c.q - f.c.p) + f.c.r * across * rad;
         b = a + sc.size * Vec3{pick_real(-6, 6), pick_real(-6, 6), pick_real(-6, 6)};
         tag = "start-inside";
         break;
       }
       case 5: {  // zero length: inside, on the surface, or outside
-        a = f.c.p + pick_real(-0.2, 1.2) * (f.c.q - f.c.p) + (f.c.r + (pick_int(0, 1) ? gap : 0.0)) * rad;
+        const double out = pick_int(0, 1) ? gap : 0.0, along = pick_real(-0.2, 1.2);
+        a = f.c.p + along * (f.c.q - f.c.p) + (f.c.r + out) * rad;
         b = a;
         tag = "zero-length";
         break;

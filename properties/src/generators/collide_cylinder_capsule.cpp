@@ -37,10 +37,12 @@ std::pair<CylinderCapsuleCase, std::string> exact_cylinder_capsule() {
       s = mm * c * t2[2];
       if (pick_int(0, 1)) {  // an end at e, the segment leaving with a non-negative out component
         p = e;
-        q = e + double(pick_int(0, 3)) * out + double(pick_int(-5, 5)) * tng + double(pick_int(-5, 5)) * bin;
+        const int k2 = pick_int(-5, 5), j = pick_int(-5, 5), i = pick_int(0, 3);
+        q = e + double(i) * out + double(j) * tng + double(k2) * bin;
         tag = "exact-rim-end";
       } else {  // the segment through e, perpendicular to out (a point when v == 0)
-        const Vec3 v = double(pick_int(-3, 3)) * tng + double(pick_int(-3, 3)) * bin;
+        const int j = pick_int(-3, 3), i = pick_int(-3, 3);
+        const Vec3 v = double(i) * tng + double(j) * bin;
         p = e - double(pick_int(1, 10)) * v;
         q = e + double(pick_int(1, 10)) * v;
         tag = "exact-rim-through";
@@ -207,8 +209,10 @@ rc::Gen<Tagged<QueryTraits<QueryId::collide_cylinder_capsule>::Case>> targeted<Q
         const bool top = pick_int(0, 1);
         const Vec3 capn = top ? f.u : -f.u;
         const Vec3 rad = radial_dir(f, pick_real(0, 6.283185307179586));
-        const Vec3 x = (top ? f.c.q : f.c.p) + (pick_real(0, 1.5) * f.c.r + pick_real(0, 1) * s) * rad;
-        const Vec3 dir = capn + pick_real(-2, 2) * rad + pick_real(-2, 2) * cross(f.u, rad);
+        const double across = pick_real(0, 1.5), ball = pick_real(0, 1);
+        const Vec3 x = (top ? f.c.q : f.c.p) + (across * f.c.r + ball * s) * rad;
+        const double w2 = pick_real(-2, 2), w1 = pick_real(-2, 2);
+        const Vec3 dir = capn + w1 * rad + w2 * cross(f.u, rad);
         p = x + pick_real(0.05, 1) * reach * dir;
         q = x - pick_real(0.05, 1) * reach * dir;
         if (pick_int(0, 1)) std::swap(p, q);

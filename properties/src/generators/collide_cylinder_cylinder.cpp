@@ -127,15 +127,15 @@ Gap pick_coordinate_gap(double v, double size) {
   switch (pick_int(0, 4)) {
     case 0: return {v, "-touch"};
     case 1: {
-      const int k = pick_int(1, 4) * (pick_int(0, 1) ? 1 : -1);
+      const int m = pick_int(1, 4), k = m * (pick_int(0, 1) ? 1 : -1);
       return {nudge(v, k), k > 0 ? "-ulps-out" : "-ulps-in"};
     }
     case 2: {
-      const double g = std::ldexp(size, -pick_int(20, 50)) * (pick_int(0, 1) ? 1 : -1);
+      const double m = std::ldexp(size, -pick_int(20, 50)), g = m * (pick_int(0, 1) ? 1 : -1);
       return {v + g, g > 0 ? "-gap" : "-deep"};
     }
     default: {
-      const double g = pick_real(0.01, 2) * size * (pick_int(0, 1) ? 1 : -1);
+      const double m = pick_real(0.01, 2) * size, g = m * (pick_int(0, 1) ? 1 : -1);
       return {v + g, g > 0 ? "-gap" : "-deep"};
     }
   }
@@ -245,7 +245,8 @@ CylCase cyl_perpendicular() {
 Cylinder cylinder_feature_at(const Spot& sp, double gap, int feature, double rB, double lB) {
   const Vec3 x = sp.at + gap * sp.out;
   if (feature == 0) {
-    const Vec3 p = x + (rB * std::sqrt(pick_real(0, 1))) * across(sp);
+    const Vec3 dir = across(sp);
+    const Vec3 p = x + (rB * std::sqrt(pick_real(0, 1))) * dir;
     return {p, p + lB * sp.out, rB};
   }
   if (feature == 1) {

@@ -100,8 +100,9 @@ rc::Gen<MeshCase> meshes(bool grid) {
     std::string invalid;
     if (*rc::gen::inRange(0, 16) == 0) {
       if (*rc::gen::inRange(0, 2) == 0) {
-        f.insert(f.begin() + *rc::gen::inRange<std::size_t>(0, f.size() + 1),
-                 MeshFace{0, 1, static_cast<std::uint32_t>(v.size()) + *rc::gen::inRange<std::uint32_t>(0, 3)});
+        const std::uint32_t beyond = *rc::gen::inRange<std::uint32_t>(0, 3);
+        const std::size_t at = *rc::gen::inRange<std::size_t>(0, f.size() + 1);
+        f.insert(f.begin() + at, MeshFace{0, 1, static_cast<std::uint32_t>(v.size()) + beyond});
         invalid = "+index-out-of-range";
       } else {
         v[*rc::gen::inRange<std::size_t>(0, v.size())].y = *rc::gen::element(NAN, INFINITY, -INFINITY);

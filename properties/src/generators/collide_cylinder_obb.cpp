@@ -249,7 +249,8 @@ ObbCase obb_contain(const Scene& sc, const Frame& f) {
   if (c.r == 0) c.r = sc.size;
   const Axes a = pick_box_frame();
   const Vec3 shape{pick_real(0.1, 1), pick_real(0.1, 1), pick_real(0.1, 1)};
-  const Vec3 ctr = mid + (pick_real(-0.4, 0.4) * len) * f.u + (pick_real(0, 0.5) * c.r) * radial_dir(f, pick_real(0, kTwoPi));
+  const double angle = pick_real(0, kTwoPi), across = pick_real(0, 0.5), along = pick_real(-0.4, 0.4);
+  const Vec3 ctr = mid + (along * len) * f.u + (across * c.r) * radial_dir(f, angle);
   const double zc = dot(ctr - mid, f.u);
   const Vec3 pc = (ctr - mid) - zc * f.u;
   double tmax = INFINITY;
@@ -480,19 +481,28 @@ ObbCase obb_pattern() {
   Scene sc = pick_scene();
   if (kind == 4) {
     sc.size = 1;
-    for (int i = 0; i < 3; ++i) sc.offset[i] = (pick_int(0, 1) ? 1 : -1) * pick_real(40, 100);
+    for (int i = 0; i < 3; ++i) {
+      const double sign = pick_int(0, 1) ? 1 : -1;
+      sc.offset[i] = sign * pick_real(40, 100);
+    }
   }
   const Frame f = pick_cylinder(sc);
   Cylinder c = f.c;
   if (kind == 0) {
     const Spot sp = pick_spot(f, pick_region());
-    const double gap = (pick_int(0, 1) ? 1 : -1) * 1e-8 * pick_real(0.5, 2) * sc.size;
+    const double sign = pick_int(0, 1) ? 1 : -1, gap = sign * 1e-8 * pick_real(0.5, 2) * sc.size;
     const int feature = pick_int(0, 2);
     Obb b = box_feature_at(sp, gap, feature, pick_extents(sc.size));
     return {{c, restate(b)}, "pattern-kiss" + gap_tag(gap)};
   }
   const int sub = kind == 4 ? pick_int(0, 2) : kind;  // 1 slab, 2 stand or lie, (f32) 0 corner
-  Axes a = kind == 4 && pick_int(0, 1) ? rat_frame(pyth_rotation(0), pick_int(0, 5), pick_int(0, 7)) : pick_box_frame();
+  Axes a;
+  if (kind == 4 && pick_int(0, 1)) {
+    const int signs = pick_int(0, 7), perm = pick_int(0, 5);
+    a = rat_frame(pyth_rotation(0), perm, signs);
+  } else {
+    a = pick_box_frame();
+  }
   const double gap = pick_gap(sc.size);
   Obb b;
   std::string what;

@@ -85,7 +85,8 @@ rc::Gen<Tagged<QueryTraits<QueryId::collide_cylinder_sphere>::Case>> targeted<Qu
         break;
       }
       case 4: {  // centre inside
-        c = f.c.p + pick_real(0, 1) * (f.c.q - f.c.p) + f.c.r * pick_real(0, 1) * radial_dir(f, angle);
+        const double across = pick_real(0, 1), along = pick_real(0, 1);
+        c = f.c.p + along * (f.c.q - f.c.p) + f.c.r * across * radial_dir(f, angle);
         tag = "inside";
         break;
       }

@@ -131,12 +131,16 @@ const char* const kTriEdgeDirs[3] = {"-along", "-across", ""};
 // cylinder is gap for gap >= 0 (to rounding).
 Triangle tri_feature_at(const Spot& sp, Vec3 x, int feature, int edge_dir, double size) {
   if (feature == 0) {
-    const Vec3 b = x + tri_len(size) * (pick_int(0, 3) == 0 ? across(sp) : away(sp));
-    return {x, b, x + tri_len(size) * away(sp)};
+    const Vec3 db = pick_int(0, 3) == 0 ? across(sp) : away(sp);
+    const Vec3 b = x + tri_len(size) * db;
+    const Vec3 dc = away(sp);
+    return {x, b, x + tri_len(size) * dc};
   }
   if (feature == 1) {
     const Vec3 d = edge_dir == 0 ? sp.tan : (edge_dir == 1 ? sp.bi : across(sp));
-    return {x - tri_len(size) * d, x + tri_len(size) * d, x + tri_len(size) * away(sp)};
+    const double la = tri_len(size), lb = tri_len(size);
+    const Vec3 dc = away(sp);
+    return {x - la * d, x + lb * d, x + tri_len(size) * dc};
   }
   return face_around(x, sp.tan, sp.bi, tri_len(size));
 }
@@ -222,11 +226,22 @@ TriCase tri_cap_parallel(const Scene& sc, const Frame& f) {
   const double gap = feature == 2 ? 0.0 : pick_gap(sc.size);
   Triangle t;
   if (feature == 2) {
-    t = face_around(o + (c.r * std::sqrt(pick_real(0, 1))) * rad, rad, tng, tri_len(sc.size));
+    const double len = tri_len(sc.size), rho = c.r * std::sqrt(pick_real(0, 1));
+    t = face_around(o + rho * rad, rad, tng, len);
   } else {
     const Vec3 x = o + (c.r + gap) * rad;
-    if (feature == 0) t = {x, x + tri_len(sc.size) * half_dir(rad, tng), x + tri_len(sc.size) * half_dir(rad, tng)};
-    else t = {x - tri_len(sc.size) * tng, x + tri_len(sc.size) * tng, x + tri_len(sc.size) * half_dir(rad, tng)};
+    // (Each direction drawn before its length: the order g++ took them in
+    // before the draws were sequenced.)
+    if (feature == 0) {
+      const Vec3 db = half_dir(rad, tng);
+      const Vec3 b = x + tri_len(sc.size) * db;
+      const Vec3 dc = half_dir(rad, tng);
+      t = {x, b, x + tri_len(sc.size) * dc};
+    } else {
+      const double la = tri_len(sc.size), lb = tri_len(sc.size);
+      const Vec3 dc = half_dir(rad, tng);
+      t = {x - la * tng, x + lb * tng, x + tri_len(sc.size) * dc};
+    }
   }
   const char* levels[3] = {"capplane-above", "capplane-on", "capplane-below"};
   const char* features[3] = {"-vertex", "-edge", "-over"};
@@ -252,7 +267,8 @@ TriCase tri_axis_plane(const Scene& sc, const Frame& f) {
   const double len = length(c.q - c.p);
   if (kind == 2) {
     const double gap = pick_gap(sc.size);
-    Triangle t = face_around(c.p + pick_real(0, 1) * (c.q - c.p) + (c.r + gap) * rad, f.u, tng, tri_len(sc.size));
+    const double len = tri_len(sc.size), along = pick_real(0, 1);
+    Triangle t = face_around(c.p + along * (c.q - c.p) + (c.r + gap) * rad, f.u, tng, len);
     const std::string tag = "axisplane-beside" + tri_touch_or_gap(c, t, rad, gap);
     return {{c, restate(t)}, tag};
   }
@@ -269,11 +285,13 @@ TriCase tri_axis_plane(const Scene& sc, const Frame& f) {
     auto on_axis = [&](double t) { return t <= 0.5 ? c.p + t * (c.q - c.p) : c.q - (1 - t) * (c.q - c.p); };
     const double t0 = pick_int(0, 2) == 0 ? 0.0 : pick_real(-0.5, 0.5);
     const double t1 = pick_int(0, 2) == 0 ? 1.0 : pick_real(0.5, 1.5);
-    const Triangle t{on_axis(t0), on_axis(t1), at(pick_real(-0.5, 1.5) * len, pick_real(0.1, 3) * w * (pick_int(0, 1) ? 1 : -1))};
+    const double across = pick_real(0.1, 3), sign = pick_int(0, 1) ? 1 : -1, along = pick_real(-0.5, 1.5);
+    const Triangle t{on_axis(t0), on_axis(t1), at(along * len, across * w * sign)};
     return {{c, restate(t)}, tag + "-axis-edge"};
   }
   if (place == 3) {
-    Triangle t = face_around(at(pick_real(0, 1) * len, pick_real(-1, 1) * w), f.u, tng, tri_len(sc.size));
+    const double size = tri_len(sc.size), across = pick_real(-1, 1), along = pick_real(0, 1);
+    Triangle t = face_around(at(along * len, across * w), f.u, tng, size);
     return {{c, restate(t)}, tag + "-across"};
   }
   const double gap = pick_gap(sc.size);
@@ -296,10 +314,15 @@ TriCase tri_axis_plane(const Scene& sc, const Frame& f) {
   const Vec3 perp = cross(rad, out);  // in the plane, across `out`
   Triangle t;
   if (pick_int(0, 1)) {
-    t = {x, x + tri_len(sc.size) * half_dir(out, perp), x + tri_len(sc.size) * half_dir(out, perp)};
+    const Vec3 db = half_dir(out, perp);
+    const Vec3 b = x + tri_len(sc.size) * db;
+    const Vec3 dc = half_dir(out, perp);
+    t = {x, b, x + tri_len(sc.size) * dc};
     tag += "-vertex";
   } else {
-    t = {x - tri_len(sc.size) * perp, x + tri_len(sc.size) * perp, x + tri_len(sc.size) * half_dir(out, perp)};
+    const double la = tri_len(sc.size), lb = tri_len(sc.size);
+    const Vec3 dc = half_dir(out, perp);
+    t = {x - la * perp, x + lb * perp, x + tri_len(sc.size) * dc};
     tag += "-edge";
   }
   tag += tri_touch_or_gap(c, t, out, gap);
@@ -355,8 +378,8 @@ Triangle tri_under(Vec3 x, Vec3 n, double gap, double len, std::string& tag) {
   tag += "-edge";
   const double th = pick_real(0, kTwoPi);
   const Vec3 d = std::cos(th) * e1 + std::sin(th) * e2, w = cross(n, d);
-  return {y - (len * pick_real(0.1, 1)) * d, y + (len * pick_real(0.1, 1)) * d,
-          y + (len * pick_real(0.3, 1)) * (w + pick_real(-1, 1) * d)};
+  const double back = pick_real(0.1, 1), ahead = pick_real(0.1, 1), slant = pick_real(-1, 1), out = pick_real(0.3, 1);
+  return {y - (len * back) * d, y + (len * ahead) * d, y + (len * out) * (w + slant * d)};
 }
 
 // The axis of a cylinder lying on a plane of normal n: along n ("flat",
@@ -421,11 +444,15 @@ TriCase tri_thin(const Scene& sc) {
 // offsets 40..100, every coordinate and the radius rounded to float.
 TriCase tri_f32() {
   Scene sc{1, {}};
-  for (int i = 0; i < 3; ++i) sc.offset[i] = (pick_int(0, 1) ? 1 : -1) * pick_real(40, 100);
+  for (int i = 0; i < 3; ++i) {
+    const double sign = pick_int(0, 1) ? 1 : -1;
+    sc.offset[i] = sign * pick_real(40, 100);
+  }
   const Frame f = pick_cylinder(sc);
   const Spot sp = pick_spot(f, pick_region());
-  const double gap = (pick_int(0, 1) ? 1 : -1) * pick_real(0.001, 0.3);
-  const Triangle t = tri_feature_at(sp, sp.at + gap * sp.out, pick_int(0, 2), pick_int(0, 2), sc.size);
+  const double sign = pick_int(0, 1) ? 1 : -1, gap = sign * pick_real(0.001, 0.3);
+  const int feature = pick_int(0, 2), level = pick_int(0, 2);
+  const Triangle t = tri_feature_at(sp, sp.at + gap * sp.out, level, feature, sc.size);
   const Cylinder c{to_f32(f.c.p), to_f32(f.c.q), to_f32(f.c.r)};
   return {{c, restate(Triangle{to_f32(t.a), to_f32(t.b), to_f32(t.c)})}, "pattern-f32" + gap_tag(gap)};
 }
@@ -478,14 +505,24 @@ TriCase exact_cylinder_triangle() {
       out = {t2[0] * a, t2[0] * b, t2[1] * cc};
       const Vec3 bin{-t2[1] * a, -t2[1] * b, t2[0] * cc};  // across out and tng
       x = R;
-      vc = R + n(1, 4) * out + n(-5, 5) * tng + n(-5, 5) * bin;
+      {
+        const double w3 = n(-5, 5), w2 = n(-5, 5), w1 = n(1, 4);
+        vc = R + w1 * out + w2 * tng + w3 * bin;
+      }
       if (pick_int(0, 1) == 0) {  // vertex at R
         va = R;
-        vb = R + n(1, 4) * out + n(-5, 5) * tng + n(-5, 5) * bin;
+        {
+          const double w3 = n(-5, 5), w2 = n(-5, 5), w1 = n(1, 4);
+          vb = R + w1 * out + w2 * tng + w3 * bin;
+        }
         what = "vertex-rim";
       } else {  // an edge through R across out
         const bool diag = t2[0] > 0 && t2[1] > 0;
-        Vec3 e = diag && pick_int(0, 1) ? n(-3, 3) * tng + n(-3, 3) * bin : tng;
+        Vec3 e = tng;
+        if (diag && pick_int(0, 1)) {
+          const double w2 = n(-3, 3), w1 = n(-3, 3);
+          e = w1 * tng + w2 * bin;
+        }
         if (e == Vec3{}) e = tng;
         va = R - n(0, 5) * e;
         vb = R + n(1, 5) * e;
@@ -498,13 +535,20 @@ TriCase exact_cylinder_triangle() {
       const Vec3 v{A, B, n(z0, top)};
       out = rad;
       x = v;
-      vc = v + n(1, 4) * rad + n(-5, 5) * tng + n(-5, 5) * up;
+      {
+        const double w3 = n(-5, 5), w2 = n(-5, 5), w1 = n(1, 4);
+        vc = v + w1 * rad + w2 * tng + w3 * up;
+      }
       if (pick_int(0, 1) == 0) {
         va = v;
-        vb = v + n(1, 4) * rad + n(-5, 5) * tng + n(-5, 5) * up;
+        {
+          const double w3 = n(-5, 5), w2 = n(-5, 5), w1 = n(1, 4);
+          vb = v + w1 * rad + w2 * tng + w3 * up;
+        }
         what = "vertex-side";
       } else {
-        Vec3 e = n(-3, 3) * tng + n(-3, 3) * up;
+        const double w2 = n(-3, 3), w1 = n(-3, 3);
+        Vec3 e = w1 * tng + w2 * up;
         if (e == Vec3{}) e = tng;
         va = v - n(0, 5) * e;
         vb = v + n(1, 5) * e;
@@ -524,10 +568,16 @@ TriCase exact_cylinder_triangle() {
     case 5: {
       x = R;
       out = rad;
-      vc = R + n(1, 5) * rad + n(-5, 5) * tng;
+      {
+        const double w2 = n(-5, 5), w1 = n(1, 5);
+        vc = R + w1 * rad + w2 * tng;
+      }
       if (pick_int(0, 1)) {
         va = R;
-        vb = R + n(1, 5) * rad + n(-5, 5) * tng;
+        {
+          const double w2 = n(-5, 5), w1 = n(1, 5);
+          vb = R + w1 * rad + w2 * tng;
+        }
       } else {
         va = R - n(0, 5) * tng;
         vb = R + n(1, 5) * tng;

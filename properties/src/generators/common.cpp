@@ -23,8 +23,14 @@ rc::Gen<double> wild_double() {
       case 1: return pick_int(0, 1) ? INFINITY : -INFINITY;
       case 2: return std::ldexp(double(pick_int(-1000, 1000)), -1074);          // subnormal
       case 3: return pick_int(0, 1) ? 0.0 : -0.0;
-      case 4: return std::ldexp(pick_real(-1, 1), pick_int(900, 1023));        // huge
-      case 5: return std::ldexp(pick_real(-1, 1), pick_int(-1022, -900));      // tiny
+      case 4: {  // huge
+        const int e = pick_int(900, 1023);
+        return std::ldexp(pick_real(-1, 1), e);
+      }
+      case 5: {  // tiny
+        const int e = pick_int(-1022, -900);
+        return std::ldexp(pick_real(-1, 1), e);
+      }
       case 6: return std::numeric_limits<double>::max() * (pick_int(0, 1) ? 1 : -1);
       default: return pick_real(-10, 10);
     }

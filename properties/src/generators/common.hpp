@@ -393,7 +393,14 @@ inline int pick_region() {
   return r <= 1 ? 0 : r - 1;
 }
 
-inline double to_f32(double v) { return double(float(v)); }
+// Through a volatile float: g++ 12.2 at -O2 vectorizes the conversions of
+// a Vec3's y and z and drops the rounding to float (double(float(v)) came
+// back as v; fixed here since 2026-11-28, when g++'s and clang's cases were
+// first compared draw for draw).
+inline double to_f32(double v) {
+  volatile float f = static_cast<float>(v);
+  return f;
+}
 inline Vec3 to_f32(Vec3 v) { return {to_f32(v.x), to_f32(v.y), to_f32(v.z)}; }
 
 // A point of the cylinder minimising n.x (n unit): the lower cap's centre

@@ -84,13 +84,18 @@ std::pair<SweepCylinderCase, std::string> exact_sweep_cylinder() {
     case 4: {  // starting at e (touching), moving away or not at all
       from = e;
       const bool still = pick_int(0, 3) == 0;
-      delta = still ? Vec3{0, 0, 0}
-                    : double(pick_int(0, 3)) * out + double(pick_int(-5, 5)) * tng + double(pick_int(-5, 5)) * bin;
+      if (still) {
+        delta = {0, 0, 0};
+      } else {
+        const int k2 = pick_int(-5, 5), j = pick_int(-5, 5), i = pick_int(0, 3);
+        delta = double(i) * out + double(j) * tng + double(k2) * bin;
+      }
       tag = std::string(still ? "exact-start-touch-zero-delta" : "exact-start-touch") + side;
       break;
     }
     case 5: {  // ending at e (touching at t = 1), coming from outside
-      const Vec3 back = double(n) * out + double(pick_int(-5, 5)) * tng + double(pick_int(-5, 5)) * bin;
+      const int k2 = pick_int(-5, 5), j = pick_int(-5, 5);
+      const Vec3 back = double(n) * out + double(j) * tng + double(k2) * bin;
       from = e + back;
       delta = -back;
       tag = "exact-end-touch" + side;
@@ -193,7 +198,14 @@ rc::Gen<Tagged<QueryTraits<QueryId::sweep_sphere_cylinder>::Case>> targeted<Quer
         const Spot sp = pick_spot(f, pick_int(0, 2));
         c = sp.at + (s + gap) * sp.out;
         const bool zero = pick_int(0, 1);
-        d = zero ? Vec3{0, 0, 0} : std::ldexp(pick_real(1, 2) * sc.size, -pick_int(40, 996)) * pick_dir();
+        if (zero) {
+          d = {0, 0, 0};
+        } else {
+          const Vec3 dir = pick_dir();
+          const int e = pick_int(40, 996);
+          const double m = pick_real(1, 2) * sc.size;
+          d = std::ldexp(m, -e) * dir;
+        }
         tag = (zero ? "zero-delta-" : "tiny-delta-") + sp.name;
         break;
       }
@@ -207,7 +219,8 @@ rc::Gen<Tagged<QueryTraits<QueryId::sweep_sphere_cylinder>::Case>> targeted<Quer
         break;
       }
       default: {  // huge displacement (1e6..1e12 of the scene): towards the cylinder, away, or passing by
-        const double huge = std::ldexp(pick_real(1, 2) * sc.size, pick_int(20, 39));
+        const int ex = pick_int(20, 39);
+        const double huge = std::ldexp(pick_real(1, 2) * sc.size, ex);
         const Spot sp = pick_spot(f, pick_int(0, 2));
         const Vec3 e = sp.at + (s + gap) * sp.out;
         switch (pick_int(0, 2)) {
