@@ -50,7 +50,8 @@
 // against B; perpendicular to u_B: B's side against A), by safeguarded
 // Newton steps on the angle (at most 8, until a step would lower the
 // overlap by less than 2^-12 of it: relative to the depth, so a shallow
-// contact of large cylinders is searched as far as a deep one), and,
+// contact of large cylinders is searched as far as a deep one; near the
+// kink of a rim nearly across a side, a fixed step out of it first), and,
 // where the common point lies within the best
 // overlap so far of a cap plane of each cylinder, the rim x rim direction
 // there (perpendicular to both rims' tangents: the common normal of two
@@ -58,10 +59,12 @@
 // searched on the sphere of directions where the overlap falls off its
 // circle or axis (Newton steps in the rim x rim patch, which holds the
 // minimum of two rims meeting, and of stacked cylinders whose axes are
-// nearly parallel; a kept step tried again doubled while it lowers the
-// overlap, where a side's term is a cone; from the direction the rim x rim
-// one replaced, where it won; for cylinders end to end within 1/16 rad of
-// parallel, from each axis direction too); `depth` the overlap of the
+// nearly parallel; a step at most half the way to the nearer axis, where a
+// side's term is a cone, and a kept step tried again doubled while it
+// lowers the overlap; from the direction the rim x rim one replaced, where
+// it won; for cylinders end to end, from each axis direction within 1/16
+// rad of parallel, else from the axis of smaller overlap where that is
+// within twice the depth so far); `depth` the overlap of the
 // shapes along it (h_A(n) + h_B(-n), an upper bound of the penetration
 // depth), and `point` the centre of the two rectangles' common part in the
 // slice found (the corner of one least outside the other when they only
