@@ -23,6 +23,8 @@
 #include <vector>
 
 #include "geomcheck/collide_cylinder_obb.hpp"
+#include "geomcheck/detail/obb_stages.hpp"
+#include "geomcheck/penetration_cylinder_obb.hpp"
 
 using namespace geomcheck;
 
@@ -151,9 +153,9 @@ int main(int argc, char** argv) {
   }
   std::vector<double> exact(n), fast(n), fixed(n);
   for (int i = 0; i < n; ++i) {
-    exact[i] = collide(cs[i], bs[i]).depth;
+    exact[i] = penetration(cs[i], bs[i]).depth;
     fast[i] = fast_depth(cs[i], bs[i]);
-    fixed[i] = fast_depth(cs[i], bs[i], false);
+    fixed[i] = detail::collide_consistent(cs[i], bs[i]).depth;
   }
   // Times: production collide; production overlap + the prototype's normal search.
   using clk = std::chrono::steady_clock;
@@ -168,10 +170,10 @@ int main(int argc, char** argv) {
     }
     return bestns;
   };
-  const double t_exact = time([&](int i) { return collide(cs[i], bs[i]).depth; });
+  const double t_exact = time([&](int i) { return penetration(cs[i], bs[i]).depth; });
   const double t_over = time([&](int i) { return overlap(cs[i], bs[i]) ? 1.0 : 0.0; });
   const double t_fast = time([&](int i) { return overlap(cs[i], bs[i]) ? fast_depth(cs[i], bs[i]) : 0.0; });
-  const double t_fixed = time([&](int i) { return overlap(cs[i], bs[i]) ? fast_depth(cs[i], bs[i], false) : 0.0; });
+  const double t_fixed = time([&](int i) { return detail::collide_consistent(cs[i], bs[i]).depth; });
   auto scale = [&](int i) {
     return std::max({max_abs(cs[i].p), max_abs(cs[i].q), cs[i].r, max_abs(bs[i].c), max_abs(bs[i].e)});
   };

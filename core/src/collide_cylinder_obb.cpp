@@ -14,6 +14,17 @@ namespace geomcheck {
 
 namespace {
 
+// a + b + c, summed in the order of their values (magnitude, then sign):
+// the same bits for any order of the arguments.
+inline double sum3(double a, double b, double c) {
+  auto before = [](double x, double y) { return std::fabs(x) < std::fabs(y) || (std::fabs(x) == std::fabs(y) && x < y); };
+  if (before(b, a)) std::swap(a, b);
+  if (before(c, b)) std::swap(b, c);
+  if (before(b, a)) std::swap(a, b);
+  return (a + b) + c;
+}
+inline double dot3(Vec3 a, Vec3 b) { return sum3(a.x * b.x, a.y * b.y, a.z * b.z); }
+
 // The scene in box space: the box is [-e, e]; the cylinder's cap centres P
 // and Q are offsets from the box centre along the box axes (so a scene far
 // from the origin adds no rounding of its own, and a reflection of the scene
@@ -41,9 +52,15 @@ struct BoxSpace {
     if (m > 0 && m < 0x1p-500) std::frexp(m, &ex);
     const Vec3 d =
         to_box(ex == 1 ? dw : Vec3{std::ldexp(dw.x, 1 - ex), std::ldexp(dw.y, 1 - ex), std::ldexp(dw.z, 1 - ex)});
+    // |d| from the squares summed in a fixed order of their values, so that
+    // a permutation or a reflection of the box's axes gives the same bits
+    // (as every other box-space value; collide's symmetry checks hold it).
+    const double l2 = sum3(d.x * d.x, d.y * d.y, d.z * d.z);
     const detail::UnitAndLength ul(max_abs(d) > 0 ? d : Vec3{0, 0, 1});
-    u = ul.u;
-    len = max_abs(d) > 0 ? (ex == 1 ? ul.len : std::ldexp(ul.len, ex - 1)) : 0.0;
+    const bool plain = l2 > detail::kSafeLo * detail::kSafeLo && l2 < detail::kSafeHi * detail::kSafeHi;
+    const double dl = plain ? std::sqrt(l2) : ul.len;
+    u = plain ? (1.0 / dl) * d : ul.u;
+    len = max_abs(d) > 0 ? (ex == 1 ? dl : std::ldexp(dl, ex - 1)) : 0.0;
   }
   // The axis segment S(t), t in [0, 1], from the nearer end (exact at both).
   Vec3 S(double t) const { return t <= 0.5 ? P + t * (Q - P) : Q - (1 - t) * (Q - P); }
@@ -347,6 +364,277 @@ Contact collide_scaled(const Cylinder& cyl, const Obb& box, detail::ObbCapStage 
   return out;
 }
 
+// --- The consistent contact -----------------------------------------------
+//
+// collide's normal and depth (see the header). The overlap along unit n,
+//   g(n) = max(n.P, n.Q) + r |n - (n.u) u| + e . |n|
+// (box space, the box centred at the origin), is at least the penetration
+// depth for every n, and the penetration depth is its least value, taken at
+// a boundary point of the Minkowski difference with a single normal: +-u
+// (cap x vertex), a side x vertex radial direction, or a normal with n_j = 0
+// for some box axis j (face, side x edge, rim x edge). On the circle
+// n_j = 0, g is the support function of the shapes' projection along a_j:
+// a convex body K_j (a rectangle plus the hull of the caps' two ellipses)
+// that contains the origin, and the least g on the circle is the distance
+// from the origin to K_j's boundary. That distance is found as EPA finds it,
+// in the plane: support points in the order of their normals span a polygon
+// inside K_j, whose nearest edge's distance is a lower bound; the support
+// along that edge's normal gives g there (an upper bound) and a new vertex.
+// A circle is refined until (1 + kEps) times its lower bound reaches the
+// least g found anywhere: then no circle holds a direction kEps lower, the
+// cap and side x vertex normals were offered exactly, and the depth is at
+// most (1 + kEps) times the penetration depth (to rounding; a circle stops
+// after kMaxIter refinements). The penetration depth itself is
+// penetration(Cylinder, Obb).
+constexpr double kEps = 1.0 / 64;
+constexpr int kMaxIter = 32;
+
+struct Lean {
+  double o = std::numeric_limits<double>::infinity();
+  Vec3 n{0, 0, 1};
+  void offer(double v, Vec3 cand) {
+    if (v < o) o = v, n = cand;
+  }
+};
+
+// Circle j's body K_j and its polygon; coordinates (k, l) = (j + 1, j + 2).
+class Circle {
+ public:
+  // The support points, counter-clockwise: along each axis direction both
+  // ends of its support set (the rectangle edge, with the rim point of the
+  // cap its side picks), and along the two directions across u both ends of
+  // theirs (the side's projection, from either cap); the least overlap
+  // along these directions is offered. Written without data-dependent
+  // branches (they would be mispredicted about half the time).
+  // `is[i]` = 1 / |u x a_i| (0 where u is along a_i to rounding).
+  void init(const BoxSpace& s, int j, const double is[3], Lean& best) {
+    s_ = &s;
+    k_ = (j + 1) % 3, l_ = (j + 2) % 3;
+    uk_ = s.u[k_], ul_ = s.u[l_], uj_ = s.u[j], ek_ = s.e[k_], el_ = s.e[l_];
+    midk_ = 0.5 * (s.P[k_] + s.Q[k_]), midl_ = 0.5 * (s.P[l_] + s.Q[l_]);
+    m_ = 0;
+    // Axis direction q (counter-clockwise from (1, 0)): its normal, the
+    // rectangle corners behind and ahead of it along the boundary.
+    static constexpr double kN[4][2] = {{1, 0}, {0, 1}, {-1, 0}, {0, -1}};
+    static constexpr double kBehind[4][2] = {{1, -1}, {1, 1}, {-1, 1}, {-1, -1}};
+    static constexpr double kAhead[4][2] = {{1, 1}, {-1, 1}, {-1, -1}, {1, -1}};
+    const double fq[2] = {s.r * is[k_], s.r * is[l_]};
+    double low = std::numeric_limits<double>::infinity();
+    int low_q = 0;  // 0..3 an axis, 4 or 5 the direction across u (+ or -)
+    auto axis = [&](int q) {
+      const double c = kN[q][0], sn = kN[q][1];
+      const double t = c * uk_ + sn * ul_;
+      // The cap: the one n . u picks; where n . u = 0 the side's segment
+      // lies along the rectangle edge, and its ends go with the corners
+      // (the cap behind along the tangent (-sn, c) with the corner behind).
+      const bool q_behind = -sn * s.Q[k_] + c * s.Q[l_] < -sn * s.P[k_] + c * s.P[l_];
+      const Vec3& Xb = t > 0 ? s.Q : (t < 0 ? s.P : (q_behind ? s.Q : s.P));
+      const Vec3& Xa = t > 0 ? s.Q : (t < 0 ? s.P : (q_behind ? s.P : s.Q));
+      const double f = fq[q & 1];
+      add(support(c, sn, Xb, kBehind[q][0], kBehind[q][1], f));
+      add(support(c, sn, Xa, kAhead[q][0], kAhead[q][1], f));
+      const double g = c * px_[m_ - 1] + sn * py_[m_ - 1];
+      const bool lt = g < low;
+      low = lt ? g : low;
+      low_q = lt ? q : low_q;
+    };
+    // Across u: m = (u x a_j) / |u x a_j| = (-ul, uk) / |.|, in the
+    // quadrant qm (strictly, when uk and ul are not zero); -m in qm + 2.
+    const bool split = is[j] > 0 && uk_ != 0 && ul_ != 0;
+    const double mk = -ul_ * is[j], ml = uk_ * is[j];
+    auto across = [&](double sg) {
+      const double vk = sg * mk, vl = sg * ml;
+      const double sk = vk > 0 ? 1.0 : -1.0, sl = vl > 0 ? 1.0 : -1.0;
+      const Pt p = support(vk, vl, s.P, sk, sl, s.r), pq = support(vk, vl, s.Q, sk, sl, s.r);  // |n x u| = 1
+      const bool p_first = -vl * p.x + vk * p.y <= -vl * pq.x + vk * pq.y;
+      const int i0 = m_ + (p_first ? 0 : 1), i1 = m_ + (p_first ? 1 : 0);
+      px_[i0] = p.x, py_[i0] = p.y, px_[i1] = pq.x, py_[i1] = pq.y;
+      m_ += 2;
+      const double g = std::max(vk * p.x + vl * p.y, vk * pq.x + vl * pq.y);
+      const bool lt = g < low;
+      low = lt ? g : low;
+      low_q = lt ? (sg > 0 ? 4 : 5) : low_q;
+    };
+    if (split) {
+      const int qm = (mk > 0) == (ml > 0) ? (mk > 0 ? 0 : 2) : (mk > 0 ? 3 : 1);
+      across(1.0);
+      axis((qm + 1) & 3);
+      axis((qm + 2) & 3);
+      across(-1.0);
+      axis((qm + 3) & 3);
+      axis(qm);
+    } else {
+      for (int q = 0; q < 4; ++q) axis(q);
+    }
+    if (low < best.o) {
+      const double sg = low_q == 4 ? 1.0 : -1.0;
+      offer(best, low_q < 4 ? kN[low_q][0] : sg * mk, low_q < 4 ? kN[low_q][1] : sg * ml, low);
+    }
+    for (int i = 0; i < m_; ++i) edge(i);
+  }
+
+  // EPA steps until (1 + kEps) times the nearest edge's distance reaches
+  // the least of `bound` and this circle's own least overlap (offered to
+  // `best`). The circles do not see each other's results, so that their
+  // order (the box's axes' order) changes no answer.
+  void refine(double bound, Lean& best) {
+    constexpr double o1 = 1 / (1 + kEps);
+    Lean own;
+    own.o = bound;
+    for (int it = 0; it < kMaxIter; ++it) {
+      double dm = std::numeric_limits<double>::infinity();
+      for (int i = 0; i < m_; ++i) dm = d2_[i] < dm ? d2_[i] : dm;
+      const double ob = own.o * o1;
+      if (!(dm < ob * std::fabs(ob))) break;
+      // Every edge at that distance (a tie is refined whole, so that a
+      // mirrored or reordered scene takes the same steps), the last first.
+      int tied[kMax], nt = 0;
+      for (int i = 0; i < m_; ++i)
+        if (d2_[i] == dm) tied[nt++] = i;
+      if (m_ + nt > kMax) break;
+      for (int q = nt - 1; q >= 0; --q) {
+        const int im = tied[q], i1 = im + 1 == m_ ? 0 : im + 1;
+        const double dx = px_[i1] - px_[im], dy = py_[i1] - py_[im];
+        const double il = 1 / std::sqrt(dx * dx + dy * dy);
+        const double c = dy * il, sn = -dx * il;  // the edge's outward normal
+        if (!(std::fabs(c) <= 1 && std::fabs(sn) <= 1)) return finish(own, bound, best);  // too short to have one
+        const Pt p = support(c, sn);
+        offer(own, c, sn, c * p.x + sn * p.y);
+        for (int i = m_; i > im + 1; --i) px_[i] = px_[i - 1], py_[i] = py_[i - 1], d2_[i] = d2_[i - 1];
+        px_[im + 1] = p.x, py_[im + 1] = p.y;
+        ++m_;
+        edge(im);
+        edge(im + 1);
+      }
+    }
+    finish(own, bound, best);
+  }
+
+ private:
+  struct Pt {
+    double x, y;
+  };
+  static constexpr int kMax = 12 + kMaxIter;
+
+  // The rim's share of the support along unit n = (c, sn) (n_j = 0): the
+  // projection of n - (n.u) u, computed as u x (n x u), whose components
+  // do not cancel where n is near u (c - t uk would, and the rim term
+  // divides by the small |n - t u|). t1 = (n x u)_j; |n x u|^2 = uj^2 + t1^2.
+  Pt rim(double c, double sn, double t1) const {
+    const double uj2 = uj_ * uj_;
+    return {ul_ * t1 + uj2 * c, uj2 * sn - uk_ * t1};
+  }
+  // K_j's support point along unit (c, sn) with the cap X and the rectangle
+  // corner (sk ek, sl el) given; f = r / |n x u|.
+  Pt support(double c, double sn, const Vec3& X, double sk, double sl, double f) const {
+    const Pt w = rim(c, sn, c * ul_ - sn * uk_);
+    return {X[k_] + sk * ek_ + f * w.x, X[l_] + sl * el_ + f * w.y};
+  }
+  // K_j's support point along any unit (c, sn). Where the support set is a
+  // segment (n . u = 0: the side; c or sn = 0: a rectangle edge) its
+  // midpoint, which a reflection or a swap of the caps maps to itself.
+  Pt support(double c, double sn) const {
+    const double t = c * uk_ + sn * ul_, t1 = c * ul_ - sn * uk_;
+    const double w = uj_ * uj_ + t1 * t1;
+    const double f = w > 0x1p-100 ? s_->r / std::sqrt(w) : 0.0;
+    const Pt rw = rim(c, sn, t1);
+    const double sk = c > 0 ? 1.0 : (c < 0 ? -1.0 : 0.0), sl = sn > 0 ? 1.0 : (sn < 0 ? -1.0 : 0.0);
+    const double xk = t > 0 ? s_->Q[k_] : (t < 0 ? s_->P[k_] : midk_);
+    const double xl = t > 0 ? s_->Q[l_] : (t < 0 ? s_->P[l_] : midl_);
+    return {xk + sk * ek_ + f * rw.x, xl + sl * el_ + f * rw.y};
+  }
+  void finish(const Lean& own, double bound, Lean& best) const {
+    if (own.o < bound) best.offer(own.o, own.n);
+  }
+  void add(Pt p) { px_[m_] = p.x, py_[m_] = p.y, ++m_; }
+  void offer(Lean& best, double c, double sn, double g) const {
+    Vec3 n{0, 0, 0};
+    n[k_] = c, n[l_] = sn;
+    best.offer(g, n);
+  }
+  // Edge i (point i to point i + 1): its signed squared distance from the
+  // origin, cross * |cross| / length^2 (no square root; in the distances'
+  // order). A point repeated gives an empty edge, never the nearest.
+  void edge(int i) {
+    const int i1 = i + 1 == m_ ? 0 : i + 1;
+    const double dx = px_[i1] - px_[i], dy = py_[i1] - py_[i];
+    const double l2 = dx * dx + dy * dy;
+    const double cr = px_[i] * py_[i1] - py_[i] * px_[i1];
+    d2_[i] = cr * std::fabs(cr) / l2;  // NaN for a repeated point (never the nearest)
+  }
+
+  const BoxSpace* s_ = nullptr;
+  int k_ = 1, l_ = 2, m_ = 0;
+  double uk_ = 0, ul_ = 0, uj_ = 0, ek_ = 0, el_ = 0, midk_ = 0, midl_ = 0;
+  double px_[kMax], py_[kMax], d2_[kMax];
+};
+
+Contact collide_consistent_scaled(const Cylinder& cyl, const Obb& box, bool refine) {
+  Contact out;
+  const BoxSpace s(cyl, box);
+  const Verdict v = decide(s, detail::ObbCapStage::Exact);
+  if (!v.hit) return out;
+  out.hit = true;
+  out.point = box.c + s.from_box(v.point);
+  Lean best;
+  const Vec3& u = s.u;
+  // +-u (cap x vertex).
+  // (Sums over the box axes are sum3's, the same bits in any axis order.)
+  const double E = sum3(s.e.x * std::fabs(u.x), s.e.y * std::fabs(u.y), s.e.z * std::fabs(u.z));
+  const double uP = dot3(u, s.P), uQ = dot3(u, s.Q);
+  best.offer(std::max(uP, uQ) + E, u);
+  best.offer(E - std::min(uP, uQ), -1.0 * u);
+  // 1 / |u x a_i|, from the other two components (1 - u_i^2 would cancel
+  // to rounding noise where u is near a_i).
+  double is[3];
+  for (int i = 0; i < 3; ++i) {
+    const double a = u[(i + 1) % 3], b = u[(i + 2) % 3];
+    const double w = a * a + b * b;
+    is[i] = w > 0x1p-100 ? 1 / std::sqrt(w) : 0.0;
+  }
+  Circle circle[3];
+  for (int j = 0; j < 3; ++j) circle[j].init(s, j, is, best);
+  // Side x vertex: the radial direction n of a vertex within best.o of the
+  // side and inside the slab by as much (a minimal translation along it
+  // moves the vertex onto the side); the overlap along it (n . u = 0) is
+  // n . P + r + e . |n|.
+  // Side x vertex: every vertex's radial direction n (a minimal
+  // translation along it would move that vertex onto the side), and the
+  // overlap along it. All eight, without branches: a direction that is no
+  // patch normal only adds an upper bound. (n . u is 0 but for rounding,
+  // which for a vertex near the axis line is not small: the overlap is
+  // taken for n as it is.)
+  {
+    // From the axis's midpoint, so that a swap of the caps changes no bit.
+    const Vec3 mid = 0.5 * (s.P + s.Q);
+    double gv[8];
+    Vec3 nv[8];
+    for (int q = 0; q < 8; ++q) {
+      const Vec3 w = s.vertex(q) - mid;
+      const Vec3 wr = w - dot3(w, u) * u;
+      const double rho2 = dot3(wr, wr);
+      const bool ok = rho2 > 0x1p-100;  // off the axis line
+      const Vec3 n = (1 / std::sqrt(ok ? rho2 : 1.0)) * wr;
+      nv[q] = n;
+      const double nu = dot3(n, u);
+      const double g = std::max(dot3(n, s.P), dot3(n, s.Q)) + s.r * std::sqrt(std::max(1 - nu * nu, 0.0)) +
+                       sum3(s.e.x * std::fabs(n.x), s.e.y * std::fabs(n.y), s.e.z * std::fabs(n.z));
+      gv[q] = ok ? g : std::numeric_limits<double>::infinity();
+    }
+    int qb = 0;
+    for (int q = 1; q < 8; ++q) qb = gv[q] < gv[qb] ? q : qb;
+    best.offer(gv[qb], nv[qb]);
+  }
+  const double bound = best.o;
+  if (refine)
+    for (int j = 0; j < 3; ++j) circle[j].refine(bound, best);
+  const Vec3 nb = max_abs(best.n) > 0 ? detail::normalized(best.n) : Vec3{0, 0, 1};
+  const Vec3 n = s.from_box(nb);
+  out.normal = max_abs(n) > 0 ? detail::normalized(n) : Vec3{0, 0, 1};
+  out.depth = std::min(std::max(overlap_along(s, nb), 0.0), std::numeric_limits<double>::max());
+  return out;
+}
+
 // Outside the contract (axes not unit): the answer of an orthonormal frame
 // made from them (Gram-Schmidt; the identity where they are degenerate), so
 // that every output stays finite. A unit vector has its largest component
@@ -391,15 +679,18 @@ Contact collide_with_stage(const Cylinder& cyl, const Obb& box, ObbCapStage stag
   return collide_rescaled(cyl, box, [&](const Cylinder& c, const Obb& b) { return collide_scaled(c, in_contract(b), stage); });
 }
 
+Contact collide_consistent(const Cylinder& cyl, const Obb& box, bool refine) {
+  return collide_rescaled(
+      cyl, box, [&](const Cylinder& c, const Obb& b) { return collide_consistent_scaled(c, in_contract(b), refine); });
+}
+
 }  // namespace detail
 
 bool overlap(const Cylinder& cyl, const Obb& box) {
   return detail::overlap_with_stage(cyl, box, detail::ObbCapStage::Exact);
 }
 
-Contact collide(const Cylinder& cyl, const Obb& box) {
-  return detail::collide_with_stage(cyl, box, detail::ObbCapStage::Exact);
-}
+Contact collide(const Cylinder& cyl, const Obb& box) { return detail::collide_consistent(cyl, box); }
 
 void overlap_many(const Cylinder& cyl, const Obb* b, std::size_t n, bool* out) {
   detail::each_scalar(cyl, b, n, out, [](const Cylinder& c, const Obb& x) { return overlap(c, x); });

@@ -135,7 +135,8 @@ void hold_to_polytope_truth(Evaluation& e, const Case& c, const Contact& ct, con
   const PolytopeTruth truth = polytope_truth(cyl, shape, band);
   settle_verdict(e, truth, band);
   const std::function<oracle::Q(Vec3)> outside = [&](Vec3 x) { return outside_b(shape, x); };
-  score_polytope_contacts(e, ct, peer, truth, oracle::to_q(c.a), cyl, shape, tol.depth, outside);
+  const bool upper_bound = spec_of<query_of_case<Case>>().claims.depth == Claims::Depth::UpperBound;
+  score_polytope_contacts(e, ct, peer, truth, oracle::to_q(c.a), cyl, shape, tol.depth, outside, upper_bound);
 }
 
 /// check_monotone's test: `bigger`, a superset of c, lost c's overlap, with

@@ -198,6 +198,10 @@ const CylinderObbImpl kBoxTalkRays = {
     [](const Cylinder& c, const Obb& b) { return detail::overlap_with_stage(c, b, detail::ObbCapStage::TalkRays); },
     [](const Cylinder& c, const Obb& b) { return detail::collide_with_stage(c, b, detail::ObbCapStage::TalkRays); }};
 
+const CylinderObbImpl kBoxNoCircleSearch = {
+    "box-without-circle-search", [](const Cylinder& c, const Obb& b) { return overlap(c, b); },
+    [](const Cylinder& c, const Obb& b) { return detail::collide_consistent(c, b, false); }};
+
 const CylinderTriangleImpl kTriangleNoCapStage = {
     "triangle-without-cap-stage",
     [](const Cylinder& c, const Triangle& t) { return detail::overlap_with_stage(c, t, detail::TriCapStage::None); },

@@ -97,7 +97,7 @@ ContactErrors score_polytope_contact(const Contact& k, bool truth_hit, const Pol
                                      const oracle::QCylinder& qcyl, const oracle::ConvexShape& cyl,
                                      const oracle::ConvexShape& shape, double scale, double depth_bound,
                                      std::optional<oracle::PenetrationResult>& pd,
-                                     const std::function<Q(Vec3)>& outside_b, std::string* wide) {
+                                     const std::function<Q(Vec3)>& outside_b, std::string* wide, bool upper_bound) {
   ContactErrors out;
   if (!k.hit || !finite_contact(k)) return out;
   out.unit = std::fabs(length(k.normal) - 1);
@@ -114,14 +114,32 @@ ContactErrors score_polytope_contact(const Contact& k, bool truth_hit, const Pol
       const QInterval& depth = pd->depth;
       const bool narrow = depth.hi - depth.lo <= times_scale(0.01 * depth_bound, scale);
       const Q v = oracle::to_q(k.depth);
-      if (narrow) out.depth = rel_error(depth, k.depth, scale);
-      else out.depth = v > depth.hi ? rel_up(v - depth.hi, scale) : (v < depth.lo ? rel_up(depth.lo - v, scale) : 0.0);
-      if (max_abs(k.normal) > 0) {
+      if (upper_bound) {
+        // A consistent contact: its depth is an overlap along a direction,
+        // never below the penetration depth, so only a certain shortfall is
+        // an error; the ratio depth / penetration depth where it measures
+        // the direction rather than rounding (the penetration depth at
+        // least 1e-9 * scale and enclosed within 1%), as for
+        // cylinder/cylinder.
+        out.depth = v < depth.lo ? rel_up(depth.lo - v, scale) : 0.0;
+        if (depth.lo >= times_scale(1e-9, scale) && (depth.hi - depth.lo) * 100 <= depth.lo) {
+          out.ratio = k.depth / oracle::to_double(depth.mid());
+          const Q lo = v / depth.hi;  // depth over the largest penetration depth the enclosure allows
+          double d = oracle::to_double(lo);
+          if (Q(d) > lo) d = std::nextafter(d, 0.0);
+          out.ratio_lo = d;
+        }
+      } else if (narrow) {
+        out.depth = rel_error(depth, k.depth, scale);
+      } else {
+        out.depth = v > depth.hi ? rel_up(v - depth.hi, scale) : (v < depth.lo ? rel_up(depth.lo - v, scale) : 0.0);
+      }
+      if (!upper_bound && max_abs(k.normal) > 0) {
         const QInterval along = overlap_along(cyl, shape, oracle::to_q(k.normal));
         const Q excess = narrow ? along.hi - depth.lo : along.lo - depth.hi;
         out.normal = excess > 0 ? rel_up(excess, scale) : 0.0;
       }
-      if (!narrow && wide) *wide = "; penetration depth " + oracle::to_string(depth) + " (EPA enclosure wider than the bound)";
+      if (!narrow && !upper_bound && wide) *wide = "; penetration depth " + oracle::to_string(depth) + " (EPA enclosure wider than the bound)";
     }
   }
   const QInterval da = oracle::signed_distance(qcyl, oracle::to_q(k.point));
@@ -134,19 +152,20 @@ ContactErrors score_polytope_contact(const Contact& k, bool truth_hit, const Pol
 void score_polytope_contacts(Evaluation& e, const Contact& mine, const Contact* peer, const PolytopeTruth& truth,
                              const oracle::QCylinder& qcyl, const oracle::ConvexShape& cyl,
                              const oracle::ConvexShape& shape, double depth_bound,
-                             const std::function<Q(Vec3)>& outside_b) {
+                             const std::function<Q(Vec3)>& outside_b, bool upper_bound) {
   std::optional<oracle::PenetrationResult> pd;
   std::string wide;
   const ContactErrors m = score_polytope_contact(mine, e.truth_hit, truth, qcyl, cyl, shape, e.scale, depth_bound, pd,
-                                                 outside_b, &wide);
+                                                 outside_b, &wide, upper_bound);
   e.unit_err = m.unit, e.depth_err = m.depth, e.normal_err = m.normal, e.point_err = m.point;
+  e.depth_ratio = m.ratio, e.depth_ratio_lo = m.ratio_lo;
   if (mine.hit && e.truth_hit) {
     if (truth.verdict == Verdict::Touching) score_depth_sides(e, oracle::point(Q(0)), mine.depth);
     else if (pd && pd->overlapping) score_depth_sides(e, pd->depth, mine.depth);
   }
   if (peer) {
     const ContactErrors t = score_polytope_contact(*peer, e.truth_hit, truth, qcyl, cyl, shape, e.scale, depth_bound,
-                                                   pd, outside_b, &wide);
+                                                   pd, outside_b, &wide, upper_bound);
     e.peer.unit_err = t.unit, e.peer.depth_err = t.depth, e.peer.normal_err = t.normal, e.peer.point_err = t.point;
   }
   e.truth_text += wide;

@@ -67,23 +67,30 @@ oracle::QInterval overlap_along(const oracle::ConvexShape& a, const oracle::Conv
 /// enclosure, a certain lower bound, and `*wide` is set); the point's error
 /// from the cylinder's certified signed distance and `outside_b(point)`, an
 /// upper bound of its distance outside B. Multiples of `scale`; NaN where not
-/// measured.
+/// measured. `upper_bound`: the contact is consistent, not minimal (its depth
+/// the overlap along its normal, Claims::Depth::UpperBound): the depth error
+/// is only its certain shortfall below the enclosure, the normal is not
+/// scored, and where the penetration depth is at least 1e-9 * scale and
+/// enclosed within 1%, `ratio` is depth / its midpoint and `ratio_lo` a
+/// certain lower bound of depth / penetration depth.
 struct ContactErrors {
-  double unit = NAN, depth = NAN, normal = NAN, point = NAN;
+  double unit = NAN, depth = NAN, normal = NAN, point = NAN, ratio = NAN, ratio_lo = NAN;
 };
 ContactErrors score_polytope_contact(const Contact& k, bool truth_hit, const PolytopeTruth& truth,
                                      const oracle::QCylinder& qcyl, const oracle::ConvexShape& cyl,
                                      const oracle::ConvexShape& shape, double scale, double depth_bound,
                                      std::optional<oracle::PenetrationResult>& pd,
-                                     const std::function<oracle::Q(Vec3)>& outside_b, std::string* wide);
+                                     const std::function<oracle::Q(Vec3)>& outside_b, std::string* wide,
+                                     bool upper_bound = false);
 
 /// Production's contact and, when given, the peer's, each scored by
 /// score_polytope_contact against the same truth (EPA at most once), into
-/// e's error fields and e.peer's; a wide enclosure is noted in e.truth_text.
+/// e's error fields and e.peer's (and production's depth ratio into e's);
+/// a wide enclosure is noted in e.truth_text.
 void score_polytope_contacts(Evaluation& e, const Contact& mine, const Contact* peer, const PolytopeTruth& truth,
                              const oracle::QCylinder& qcyl, const oracle::ConvexShape& cyl,
                              const oracle::ConvexShape& shape, double depth_bound,
-                             const std::function<oracle::Q(Vec3)>& outside_b);
+                             const std::function<oracle::Q(Vec3)>& outside_b, bool upper_bound = false);
 
 /// Certified signed distance of a point from the capsule pq, r (< 0 inside).
 oracle::QInterval capsule_signed_distance(const oracle::QVec& p, const oracle::QVec& q, const oracle::Q& r,

@@ -25,33 +25,31 @@
 //   faces' sections, and the disc meets it iff the cap centre is in the box
 //   or some face section passes within r of the cap centre.
 //
-// `collide` CLAIMS THE PENETRATION DEPTH: `depth` is the minimum
-// translation distance and `normal` (unit, from the cylinder towards the
-// box) its direction; `point` is Pbox (step 2) or the section point nearest
-// the cap centre (step 3), in both shapes up to rounding. The penetration
-// depth is the least overlap h_cyl(n) + h_box(-n) over unit n, and the
-// minimising n is the normal of a smooth patch of the Minkowski difference
-// (a point inside a convex body is nearest to a smooth part of its
-// boundary). The patches of a cylinder and a box, hence the candidates:
+// `collide` is a CONSISTENT CONTACT, not the minimal translation: `depth`
+// is the overlap of the shapes along `normal` (unit, from the cylinder
+// towards the box), h_cyl(n) + h_box(-n), so it is never below the
+// penetration depth, and by construction at most (1 + 1/64) times it (to
+// rounding); `point` is Pbox (step 2) or the section point nearest the cap
+// centre (step 3), in both shapes up to rounding. The penetration depth is
+// the least overlap over unit n, taken at a boundary point of the Minkowski
+// difference with a single normal; such normals are
 //   - cap x box vertex: the axis, both ways;
-//   - box face x cylinder: the box axes, both ways;
-//   - side x box edge: axis x box axis, both ways;
-//   - side x box vertex: the radial direction through the vertex (only for
-//     vertices within the best overlap so far of the side);
-//   - rim x box edge (curved): for the rim at angle theta and an edge along
-//     box axis j, n(theta) is perpendicular to the rim tangent and to the
-//     edge; the overlap along n(theta) has a slope proportional to a
-//     trigonometric polynomial of degree 2 in theta: a quartic in
-//     tan(phi / 2), whose real roots are isolated by its derivatives' and
-//     refined by bracketed Newton, plus a local cubic at each tip of the
-//     rim's projection where roots crowd (detail/rim_edge.hpp).
-//     Only edges that pass within the best overlap so far of the rim circle
-//     are searched (a minimal translation on such a patch moves that edge
-//     onto the rim), and none whose own points lie that deep inside.
-// `depth` is always the overlap of the shapes along `normal`. The same
-// depth is also a query of its own, penetration(Cylinder, Obb)
-// (penetration_cylinder_obb.hpp).
-//
+//   - side x box vertex: the radial direction through the vertex;
+//   - every other one lies on a circle n_j = 0 of a box axis j (box face,
+//     side x box edge, rim x box edge).
+// The first two are offered exactly. On the circle n_j = 0 the overlap is
+// the support function of the shapes' projection along box axis j (the
+// box's rectangle plus the hull of the caps' two ellipses, a convex body
+// containing the origin), so its least value there is the distance from the
+// origin to that body's boundary, found as EPA finds it in the plane: the
+// support points along the axis directions and the directions across u
+// span a polygon inside the body, whose nearest edge bounds the distance
+// from below, and the support along that edge's normal is a new vertex and
+// an overlap (from above). A circle is refined until (1 + 1/64) times its
+// lower bound reaches the least overlap found (at most 32 steps per
+// circle); each circle is refined against the same bound, so the box axes'
+// order changes no answer. The exact minimum, with its direction, is the
+// query penetration(Cylinder, Obb) (penetration_cylinder_obb.hpp).
 // Scale: the scene is rescaled by an exact power of two when its magnitude
 // leaves [2^-100, 2^100], so every finite input is answered.
 //

@@ -4,8 +4,9 @@
 // A query of its own beside collide_cylinder_obb, over the same two
 // shapes: the minimum over every Minkowski patch, the closed roots of the
 // curved ones included, asked and verified by that name (its own cases,
-// checks, case files, fuzz target and report rows). collide(Cylinder, B)
-// answers the same contact, bit for bit.
+// checks, case files, fuzz target and report rows). collide(Cylinder, Obb)
+// answers a consistent contact instead (the overlap along a normal near
+// this one, at most 1 + 1/64 times this depth), several times faster.
 //
 // Semantics: as collide_cylinder_obb.hpp (closed solids, touching counts,
 // the same overlap and the same contact point); `overlap` is that query's.

@@ -16,7 +16,11 @@ enum class ObbCapStage {
 
 /// overlap(Cylinder, Obb) with the given cap stage (see collide_cylinder_obb.hpp).
 bool overlap_with_stage(const Cylinder& cyl, const Obb& box, ObbCapStage stage);
-/// collide(Cylinder, Obb) with the given cap stage.
+/// The exact penetration contact (penetration(Cylinder, Obb)) with the given cap stage.
 Contact collide_with_stage(const Cylinder& cyl, const Obb& box, ObbCapStage stage);
+/// collide(Cylinder, Obb), the consistent contact; without `refine`, no EPA
+/// step on the circles of normals (the best of the closed-form candidates
+/// only).
+Contact collide_consistent(const Cylinder& cyl, const Obb& box, bool refine = true);
 
 }  // namespace geomcheck::detail

@@ -29,6 +29,11 @@ extern const CylinderObbImpl kBoxAsCapsule;
 /// collide_cylinder_obb with the talk's step 3 as stated (direction
 /// corrected to Pbox's radial line): one ray per box plane through Pbox.
 extern const CylinderObbImpl kBoxTalkRays;
+/// collide_cylinder_obb without the EPA steps on its circles of normals: the
+/// best of the closed-form candidates (+-u, the box axes, u x the box axes,
+/// the directions across u in each box plane, the side x vertex radial
+/// directions), no rim x edge direction (caught by the depth-ratio bound).
+extern const CylinderObbImpl kBoxNoCircleSearch;
 /// collide_cylinder_triangle without its cap stage: a triangle whose point
 /// nearest the axis segment lies beyond a cap is taken as a miss (the talk's
 /// steps 1 and 2 only), though it may still cut into the cap's disc.
