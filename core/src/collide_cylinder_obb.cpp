@@ -381,13 +381,16 @@ Contact collide_scaled(const Cylinder& cyl, const Obb& box, detail::ObbCapStage 
 // inside K_j, whose nearest edge's distance is a lower bound; the support
 // along that edge's normal gives g there (an upper bound) and a new vertex.
 // A circle is refined until (1 + kEps) times its lower bound reaches the
-// least g found anywhere: then no circle holds a direction kEps lower, the
-// cap and side x vertex normals were offered exactly, and the depth is at
-// most (1 + kEps) times the penetration depth (to rounding; a circle stops
-// after kMaxIter refinements). The penetration depth itself is
-// penetration(Cylinder, Obb).
+// least g known before the circles' steps, or its own least g: then it
+// holds no direction kEps lower than the answer, the cap and side x vertex
+// normals were offered exactly, and the depth is at most (1 + kEps) times
+// the penetration depth (to rounding). A circle also stops after kMaxIter
+// steps (a contact shallower than about 1e-10 times the scene's size) and
+// once its least g is below 2^-40 times the scene's size (touching, to
+// rounding: its lower bound would never leave zero). The penetration depth
+// itself is penetration(Cylinder, Obb).
 constexpr double kEps = 1.0 / 64;
-constexpr int kMaxIter = 32;
+constexpr int kMaxIter = 64;
 
 struct Lean {
   double o = std::numeric_limits<double>::infinity();
@@ -407,8 +410,9 @@ class Circle {
   // along these directions is offered. Written without data-dependent
   // branches (they would be mispredicted about half the time).
   // `is[i]` = 1 / |u x a_i| (0 where u is along a_i to rounding).
-  void init(const BoxSpace& s, int j, const double is[3], Lean& best) {
+  void init(const BoxSpace& s, int j, const double is[3], double size, Lean& best) {
     s_ = &s;
+    tiny2_ = 0x1p-44 * size * (0x1p-44 * size);
     k_ = (j + 1) % 3, l_ = (j + 2) % 3;
     uk_ = s.u[k_], ul_ = s.u[l_], uj_ = s.u[j], ek_ = s.e[k_], el_ = s.e[l_];
     midk_ = 0.5 * (s.P[k_] + s.Q[k_]), midl_ = 0.5 * (s.P[l_] + s.Q[l_]);
@@ -477,7 +481,7 @@ class Circle {
   // the least of `bound` and this circle's own least overlap (offered to
   // `best`). The circles do not see each other's results, so that their
   // order (the box's axes' order) changes no answer.
-  void refine(double bound, Lean& best) {
+  void refine(double bound, double floor, Lean& best) {
     constexpr double o1 = 1 / (1 + kEps);
     Lean own;
     own.o = bound;
@@ -485,7 +489,7 @@ class Circle {
       double dm = std::numeric_limits<double>::infinity();
       for (int i = 0; i < m_; ++i) dm = d2_[i] < dm ? d2_[i] : dm;
       const double ob = own.o * o1;
-      if (!(dm < ob * std::fabs(ob))) break;
+      if (!(dm < ob * std::fabs(ob)) || !(own.o > floor)) break;
       // Every edge at that distance (a tie is refined whole, so that a
       // mirrored or reordered scene takes the same steps), the last first.
       int tied[kMax], nt = 0;
@@ -514,7 +518,7 @@ class Circle {
   struct Pt {
     double x, y;
   };
-  static constexpr int kMax = 12 + kMaxIter;
+  static constexpr int kMax = 12 + kMaxIter + 12;  // the start, a step each, room for ties
 
   // The rim's share of the support along unit n = (c, sn) (n_j = 0): the
   // projection of n - (n.u) u, computed as u x (n x u), whose components
@@ -554,18 +558,21 @@ class Circle {
   }
   // Edge i (point i to point i + 1): its signed squared distance from the
   // origin, cross * |cross| / length^2 (no square root; in the distances'
-  // order). A point repeated gives an empty edge, never the nearest.
+  // order). An edge shorter than 2^-44 times the scene's size joins two
+  // points that are one to rounding (their line is noise: a cross product
+  // of nearly equal points cancels to 0): it is never the nearest, which
+  // is the polygon with those points merged, to rounding.
   void edge(int i) {
     const int i1 = i + 1 == m_ ? 0 : i + 1;
     const double dx = px_[i1] - px_[i], dy = py_[i1] - py_[i];
     const double l2 = dx * dx + dy * dy;
     const double cr = px_[i] * py_[i1] - py_[i] * px_[i1];
-    d2_[i] = cr * std::fabs(cr) / l2;  // NaN for a repeated point (never the nearest)
+    d2_[i] = l2 > tiny2_ ? cr * std::fabs(cr) / l2 : std::numeric_limits<double>::infinity();
   }
 
   const BoxSpace* s_ = nullptr;
   int k_ = 1, l_ = 2, m_ = 0;
-  double uk_ = 0, ul_ = 0, uj_ = 0, ek_ = 0, el_ = 0, midk_ = 0, midl_ = 0;
+  double uk_ = 0, ul_ = 0, uj_ = 0, ek_ = 0, el_ = 0, midk_ = 0, midl_ = 0, tiny2_ = 0;
   double px_[kMax], py_[kMax], d2_[kMax];
 };
 
@@ -592,8 +599,10 @@ Contact collide_consistent_scaled(const Cylinder& cyl, const Obb& box, bool refi
     const double w = a * a + b * b;
     is[i] = w > 0x1p-100 ? 1 / std::sqrt(w) : 0.0;
   }
+  // The scene's size in box space (a maximum: the same in any axis order).
+  const double size = std::max({max_abs(s.P), max_abs(s.Q), s.r, max_abs(s.e)});
   Circle circle[3];
-  for (int j = 0; j < 3; ++j) circle[j].init(s, j, is, best);
+  for (int j = 0; j < 3; ++j) circle[j].init(s, j, is, size, best);
   // Side x vertex: the radial direction n of a vertex within best.o of the
   // side and inside the slab by as much (a minimal translation along it
   // moves the vertex onto the side); the overlap along it (n . u = 0) is
@@ -606,6 +615,10 @@ Contact collide_consistent_scaled(const Cylinder& cyl, const Obb& box, bool refi
   // taken for n as it is.)
   {
     // From the axis's midpoint, so that a swap of the caps changes no bit.
+    // A vertex within 2^-44 times the scene's size of the axis line has no
+    // radial direction but rounding noise (and the bound is the scene's, so
+    // that a scaled scene decides alike).
+    const double tiny2 = 0x1p-44 * size * (0x1p-44 * size);
     const Vec3 mid = 0.5 * (s.P + s.Q);
     double gv[8];
     Vec3 nv[8];
@@ -613,7 +626,7 @@ Contact collide_consistent_scaled(const Cylinder& cyl, const Obb& box, bool refi
       const Vec3 w = s.vertex(q) - mid;
       const Vec3 wr = w - dot3(w, u) * u;
       const double rho2 = dot3(wr, wr);
-      const bool ok = rho2 > 0x1p-100;  // off the axis line
+      const bool ok = rho2 > tiny2;  // off the axis line, beyond rounding
       const Vec3 n = (1 / std::sqrt(ok ? rho2 : 1.0)) * wr;
       nv[q] = n;
       const double nu = dot3(n, u);
@@ -626,8 +639,11 @@ Contact collide_consistent_scaled(const Cylinder& cyl, const Obb& box, bool refi
     best.offer(gv[qb], nv[qb]);
   }
   const double bound = best.o;
+  // Touching, to rounding: a lower bound that never leaves zero would take
+  // every step; an overlap of 2^-40 times the scene's size is answer enough.
+  const double floor = 0x1p-40 * size;
   if (refine)
-    for (int j = 0; j < 3; ++j) circle[j].refine(bound, best);
+    for (int j = 0; j < 3; ++j) circle[j].refine(bound, floor, best);
   const Vec3 nb = max_abs(best.n) > 0 ? detail::normalized(best.n) : Vec3{0, 0, 1};
   const Vec3 n = s.from_box(nb);
   out.normal = max_abs(n) > 0 ? detail::normalized(n) : Vec3{0, 0, 1};
