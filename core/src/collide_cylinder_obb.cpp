@@ -3,6 +3,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <limits>
 #include <utility>
 
@@ -15,13 +17,30 @@ namespace geomcheck {
 namespace {
 
 // a + b + c, summed in the order of their values (magnitude, then sign):
-// the same bits for any order of the arguments.
+// the same bits for any order of the arguments. Sorted on integer keys by
+// masks (random signs would mispredict branches).
 inline double sum3(double a, double b, double c) {
-  auto before = [](double x, double y) { return std::fabs(x) < std::fabs(y) || (std::fabs(x) == std::fabs(y) && x < y); };
-  if (before(b, a)) std::swap(a, b);
-  if (before(c, b)) std::swap(b, c);
-  if (before(b, a)) std::swap(a, b);
-  return (a + b) + c;
+  auto bits = [](double x) {
+    std::uint64_t v;
+    std::memcpy(&v, &x, sizeof v);
+    return v;
+  };
+  auto key = [](std::uint64_t v) { return ((v & 0x7fffffffffffffffULL) << 1) | (~v >> 63); };
+  std::uint64_t va = bits(a), vb = bits(b), vc = bits(c);
+  std::uint64_t ka = key(va), kb = key(vb), kc = key(vc);
+  auto order = [](std::uint64_t& k1, std::uint64_t& v1, std::uint64_t& k2, std::uint64_t& v2) {
+    const std::uint64_t m = 0 - std::uint64_t(k2 < k1);  // all ones where they swap
+    const std::uint64_t dk = (k1 ^ k2) & m, dv = (v1 ^ v2) & m;
+    k1 ^= dk, k2 ^= dk, v1 ^= dv, v2 ^= dv;
+  };
+  order(ka, va, kb, vb);
+  order(kb, vb, kc, vc);
+  order(ka, va, kb, vb);
+  double x, y, z;
+  std::memcpy(&x, &va, sizeof x);
+  std::memcpy(&y, &vb, sizeof y);
+  std::memcpy(&z, &vc, sizeof z);
+  return (x + y) + z;
 }
 inline double dot3(Vec3 a, Vec3 b) { return sum3(a.x * b.x, a.y * b.y, a.z * b.z); }
 
@@ -435,8 +454,9 @@ class Circle {
       const Vec3& Xb = t > 0 ? s.Q : (t < 0 ? s.P : (q_behind ? s.Q : s.P));
       const Vec3& Xa = t > 0 ? s.Q : (t < 0 ? s.P : (q_behind ? s.P : s.Q));
       const double f = fq[q & 1];
-      add(support(c, sn, Xb, kBehind[q][0], kBehind[q][1], f));
-      add(support(c, sn, Xa, kAhead[q][0], kAhead[q][1], f));
+      const Pt w = scaled_rim(c, sn, f);
+      add(support(Xb, kBehind[q][0], kBehind[q][1], w));
+      add(support(Xa, kAhead[q][0], kAhead[q][1], w));
       const double g = c * px_[m_ - 1] + sn * py_[m_ - 1];
       const bool lt = g < low;
       low = lt ? g : low;
@@ -449,7 +469,8 @@ class Circle {
     auto across = [&](double sg) {
       const double vk = sg * mk, vl = sg * ml;
       const double sk = vk > 0 ? 1.0 : -1.0, sl = vl > 0 ? 1.0 : -1.0;
-      const Pt p = support(vk, vl, s.P, sk, sl, s.r), pq = support(vk, vl, s.Q, sk, sl, s.r);  // |n x u| = 1
+      const Pt w = scaled_rim(vk, vl, s.r);  // |n x u| = 1
+      const Pt p = support(s.P, sk, sl, w), pq = support(s.Q, sk, sl, w);
       const bool p_first = -vl * p.x + vk * p.y <= -vl * pq.x + vk * pq.y;
       const int i0 = m_ + (p_first ? 0 : 1), i1 = m_ + (p_first ? 1 : 0);
       px_[i0] = p.x, py_[i0] = p.y, px_[i1] = pq.x, py_[i1] = pq.y;
@@ -528,11 +549,14 @@ class Circle {
     const double uj2 = uj_ * uj_;
     return {ul_ * t1 + uj2 * c, uj2 * sn - uk_ * t1};
   }
-  // K_j's support point along unit (c, sn) with the cap X and the rectangle
-  // corner (sk ek, sl el) given; f = r / |n x u|.
-  Pt support(double c, double sn, const Vec3& X, double sk, double sl, double f) const {
+  // K_j's support point with the cap X, the rectangle corner (sk ek, sl el)
+  // and the rim's share w (rim(), times r / |n x u|) given.
+  Pt support(const Vec3& X, double sk, double sl, Pt w) const {
+    return {X[k_] + sk * ek_ + w.x, X[l_] + sl * el_ + w.y};
+  }
+  Pt scaled_rim(double c, double sn, double f) const {
     const Pt w = rim(c, sn, c * ul_ - sn * uk_);
-    return {X[k_] + sk * ek_ + f * w.x, X[l_] + sl * el_ + f * w.y};
+    return {f * w.x, f * w.y};
   }
   // K_j's support point along any unit (c, sn). Where the support set is a
   // segment (n . u = 0: the side; c or sn = 0: a rectangle edge) its
@@ -607,36 +631,37 @@ Contact collide_consistent_scaled(const Cylinder& cyl, const Obb& box, bool refi
   // side and inside the slab by as much (a minimal translation along it
   // moves the vertex onto the side); the overlap along it (n . u = 0) is
   // n . P + r + e . |n|.
-  // Side x vertex: every vertex's radial direction n (a minimal
-  // translation along it would move that vertex onto the side), and the
-  // overlap along it. All eight, without branches: a direction that is no
-  // patch normal only adds an upper bound. (n . u is 0 but for rounding,
-  // which for a vertex near the axis line is not small: the overlap is
-  // taken for n as it is.)
+  // Side x vertex: the radial direction n of each vertex within best.o of
+  // the side and inside the slab by as much (a minimal translation along n
+  // moves that vertex onto the side), and the overlap along it, with n as
+  // it is (n . u is 0 but for rounding, which is not small for a vertex near
+  // the axis line). Measured from the axis's midpoint, so that a swap of
+  // the caps changes no bit; a vertex within 2^-44 times the scene's size of
+  // the axis line has no radial direction but rounding noise (the bound is
+  // the scene's, so that a scaled scene decides alike).
   {
-    // From the axis's midpoint, so that a swap of the caps changes no bit.
-    // A vertex within 2^-44 times the scene's size of the axis line has no
-    // radial direction but rounding noise (and the bound is the scene's, so
-    // that a scaled scene decides alike).
     const double tiny2 = 0x1p-44 * size * (0x1p-44 * size);
     const Vec3 mid = 0.5 * (s.P + s.Q);
-    double gv[8];
-    Vec3 nv[8];
+    const double o = best.o, half = 0.5 * s.len, hi = s.r + o, lo = std::max(s.r - o, 0.0);
+    Vec3 wr[8];
+    double rho2[8];
+    unsigned near = 0;
     for (int q = 0; q < 8; ++q) {
       const Vec3 w = s.vertex(q) - mid;
-      const Vec3 wr = w - dot3(w, u) * u;
-      const double rho2 = dot3(wr, wr);
-      const bool ok = rho2 > tiny2;  // off the axis line, beyond rounding
-      const Vec3 n = (1 / std::sqrt(ok ? rho2 : 1.0)) * wr;
-      nv[q] = n;
-      const double nu = dot3(n, u);
-      const double g = std::max(dot3(n, s.P), dot3(n, s.Q)) + s.r * std::sqrt(std::max(1 - nu * nu, 0.0)) +
-                       sum3(s.e.x * std::fabs(n.x), s.e.y * std::fabs(n.y), s.e.z * std::fabs(n.z));
-      gv[q] = ok ? g : std::numeric_limits<double>::infinity();
+      const double z = dot3(w, u);
+      wr[q] = w - z * u;
+      rho2[q] = dot3(wr[q], wr[q]);
+      const bool in = (std::fabs(z) <= half + o) & (rho2[q] <= hi * hi) & (rho2[q] >= lo * lo) & (rho2[q] > tiny2);
+      near |= unsigned(in) << q;
     }
-    int qb = 0;
-    for (int q = 1; q < 8; ++q) qb = gv[q] < gv[qb] ? q : qb;
-    best.offer(gv[qb], nv[qb]);
+    for (; near; near &= near - 1) {
+      const int q = __builtin_ctz(near);
+      const Vec3 n = (1 / std::sqrt(rho2[q])) * wr[q];
+      const double nu = dot3(n, u);
+      best.offer(dot3(n, mid) + half * std::fabs(nu) + s.r * std::sqrt(std::max(1 - nu * nu, 0.0)) +
+                     sum3(s.e.x * std::fabs(n.x), s.e.y * std::fabs(n.y), s.e.z * std::fabs(n.z)),
+                 n);
+    }
   }
   const double bound = best.o;
   // Touching, to rounding: a lower bound that never leaves zero would take

@@ -244,7 +244,8 @@ TEST(Subjects, DepthClaimsOtherThanProductionsAreJudgedByTheirSides) {
   e.prod_hit = e.truth_hit = true;
   e.depth_err = e.depth_over = 0.1;  // 0.1 * scale above PD
   e.depth_short = 0;
-  constexpr QueryId kBox = QueryId::collide_cylinder_obb, kCyl = QueryId::collide_cylinder_cylinder;
+  // penetration(Cylinder, Obb) claims the penetration depth; cylinder/cylinder's collide an upper bound.
+  constexpr QueryId kBox = QueryId::penetration_cylinder_obb, kCyl = QueryId::collide_cylinder_cylinder;
   Claims upper = production_claims<kBox>();
   upper.depth = Claims::Depth::UpperBound;
   EXPECT_TRUE(judge(kBox, e, nullptr).has_value());  // production's claim: PD

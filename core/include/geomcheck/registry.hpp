@@ -28,7 +28,7 @@
   X(sweep_sphere_cylinder, Sweep, MovingSphere, Cylinder,                                \
     "sweep(Sphere, delta, Cylinder): first time of contact of a moving sphere")          \
   X(collide_cylinder_obb, Collide, Cylinder, Obb,                                        \
-    "overlap/collide(Cylinder, Obb): exact verdict; penetration depth over the Minkowski patches")  \
+    "overlap/collide(Cylinder, Obb): exact verdict; consistent contact (depth = overlap along the normal, within 1 + 1/64 of the penetration depth)") \
   X(collide_cylinder_triangle, Collide, Cylinder, Triangle,                              \
     "overlap/collide(Cylinder, Triangle): exact verdict; penetration depth over the Minkowski patches") \
   X(collide_cylinder_cylinder, Collide, Cylinder, Cylinder,                              \
