@@ -1,16 +1,10 @@
-// geomcheck — what a consistent (not minimal) cylinder/box contact would cost and give up,
-// against production's collide(Cylinder, Obb), which is the penetration depth.
-//
-// Question behind it: a target of 10x FCL's MPR collide for the box's collide, where
-// production's exact penetration depth is 0.3x. This driver times, on the same
-// contact pairs, production's collide and a prototype that keeps production's verdict and
-// point (overlap) and takes as its normal the best of the closed-form Minkowski patch normals
-// (+-u, +-box axes, +-u x box axis, the side x vertex radial directions) and three Newton
-// steps on each circle of normals perpendicular to a box axis (the rim x edge patches), from
-// the best closed-form normal and from the axis, its
-// depth the overlap along that normal (an upper bound of the penetration depth, as
-// collide_cylinder_cylinder's); and the same without the Newton steps. It prints the times and
-// depth / penetration depth.
+// geomcheck — the cylinder/box consistent contact (production's collide since 2026-11-28,
+// detail::collide_consistent) against the exact penetration depth (penetration(Cylinder, Obb),
+// production's collide before), and an earlier prototype beside them: production's verdict and
+// the best of the closed-form patch normals (+-u, +-box axes, +-u x box axis, the side x vertex
+// radial directions) with three Newton steps on each circle of normals perpendicular to a box
+// axis, from the best normal and from the axis. Times on the same contact pairs and depth /
+// penetration depth for each.
 //
 // Built with -DGEOMCHECK_MEASURE=ON (the release preset): build/release/bench/measure/box_fast_contact.
 //   ./box_fast_contact 4096 [seed]
@@ -177,8 +171,8 @@ int main(int argc, char** argv) {
   auto scale = [&](int i) {
     return std::max({max_abs(cs[i].p), max_abs(cs[i].q), cs[i].r, max_abs(bs[i].c), max_abs(bs[i].e)});
   };
-  std::printf("ns per contact (best of 5 passes): production collide %.0f, production overlap %.0f, overlap + "
-              "fixed normals %.0f, overlap + fixed normals and Newton %.0f\n",
+  std::printf("ns per contact (best of 5 passes): penetration (exact) %.0f, overlap %.0f, collide (consistent) %.0f, "
+              "prototype (overlap + closed-form normals and Newton) %.0f\n",
               t_exact, t_over, t_fixed, t_fast);
   auto report = [&](const char* what, const std::vector<double>& d) {
     std::vector<double> ratio;
@@ -195,7 +189,7 @@ int main(int argc, char** argv) {
                 "below the penetration depth by more than 1e-14 * scale: %d\n",
                 what, ratio.size(), pct(0.5), pct(0.9), pct(0.99), ratio.back(), equal, below);
   };
-  report("fixed normals", fixed);
-  report("fixed normals and Newton", fast);
+  report("collide (consistent)", fixed);
+  report("prototype: closed-form normals and Newton", fast);
   std::printf("(sink %g)\n", sink);
 }
