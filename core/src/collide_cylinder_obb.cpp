@@ -404,7 +404,8 @@ Contact collide_scaled(const Cylinder& cyl, const Obb& box, detail::ObbCapStage 
 // holds no direction kEps lower than the answer, the cap and side x vertex
 // normals were offered exactly, and the depth is at most (1 + kEps) times
 // the penetration depth (to rounding). A circle also stops after kMaxIter
-// steps (a contact shallower than about 1e-10 times the scene's size) and
+// steps (met only by very shallow contacts, whose polygon must close in on
+// a sharply curved boundary) and
 // once its least g is below 2^-40 times the scene's size (touching, to
 // rounding: its lower bound would never leave zero). The penetration depth
 // itself is penetration(Cylinder, Obb).
@@ -426,8 +427,9 @@ class Circle {
   // ends of its support set (the rectangle edge, with the rim point of the
   // cap its side picks), and along the two directions across u both ends of
   // theirs (the side's projection, from either cap); the least overlap
-  // along these directions is offered. Written without data-dependent
-  // branches (they would be mispredicted about half the time).
+  // along these directions is offered. Choices are selections rather than
+  // branches where they depend on the data (a branch on random data is
+  // mispredicted about half the time).
   // `is[i]` = 1 / |u x a_i| (0 where u is along a_i to rounding).
   void init(const BoxSpace& s, int j, const double is[3], double size, Lean& best) {
     s_ = &s;
