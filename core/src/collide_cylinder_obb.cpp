@@ -307,14 +307,16 @@ double overlap_along(const BoxSpace& s, Vec3 n) {
   return h_cyl + s.e.x * std::fabs(n.x) + s.e.y * std::fabs(n.y) + s.e.z * std::fabs(n.z);
 }
 
+// The least overlap found and its direction: consider() measures a
+// direction, offer() takes one whose overlap is already known.
 struct Best {
   const BoxSpace* s;
   double o = std::numeric_limits<double>::infinity();
   Vec3 n{0, 0, 1};
-  void consider(Vec3 cand) {
-    const double o2 = overlap_along(*s, cand);
-    if (o2 < o) o = o2, n = cand;
+  void offer(double v, Vec3 cand) {
+    if (v < o) o = v, n = cand;
   }
+  void consider(Vec3 cand) { offer(overlap_along(*s, cand), cand); }
 };
 
 // The rim x box-edge patches (detail/rim_edge.hpp): the box's 8 vertices
@@ -405,20 +407,11 @@ Contact collide_scaled(const Cylinder& cyl, const Obb& box, detail::ObbCapStage 
 // normals were offered exactly, and the depth is at most (1 + kEps) times
 // the penetration depth (to rounding). A circle also stops after kMaxIter
 // steps (met only by very shallow contacts, whose polygon must close in on
-// a sharply curved boundary) and
-// once its least g is below 2^-40 times the scene's size (touching, to
-// rounding: its lower bound would never leave zero). The penetration depth
-// itself is penetration(Cylinder, Obb).
+// a sharply curved boundary) and once its least g is below 2^-40 times the
+// scene's size (touching, to rounding: its lower bound would never leave
+// zero). The penetration depth itself is penetration(Cylinder, Obb).
 constexpr double kEps = 1.0 / 64;
 constexpr int kMaxIter = 64;
-
-struct Lean {
-  double o = std::numeric_limits<double>::infinity();
-  Vec3 n{0, 0, 1};
-  void offer(double v, Vec3 cand) {
-    if (v < o) o = v, n = cand;
-  }
-};
 
 // Circle j's body K_j and its polygon; coordinates (k, l) = (j + 1, j + 2).
 class Circle {
@@ -431,7 +424,7 @@ class Circle {
   // branches where they depend on the data (a branch on random data is
   // mispredicted about half the time).
   // `is[i]` = 1 / |u x a_i| (0 where u is along a_i to rounding).
-  void init(const BoxSpace& s, int j, const double is[3], double size, Lean& best) {
+  void init(const BoxSpace& s, int j, const double is[3], double size, Best& best) {
     s_ = &s;
     tiny2_ = 0x1p-44 * size * (0x1p-44 * size);
     k_ = (j + 1) % 3, l_ = (j + 2) % 3;
@@ -504,9 +497,9 @@ class Circle {
   // the least of `bound` and this circle's own least overlap (offered to
   // `best`). The circles do not see each other's results, so that their
   // order (the box's axes' order) changes no answer.
-  void refine(double bound, double floor, Lean& best) {
+  void refine(double bound, double floor, Best& best) {
     constexpr double o1 = 1 / (1 + kEps);
-    Lean own;
+    Best own{s_};
     own.o = bound;
     for (int it = 0; it < kMaxIter; ++it) {
       double dm = std::numeric_limits<double>::infinity();
@@ -573,11 +566,11 @@ class Circle {
     const double xl = t > 0 ? s_->Q[l_] : (t < 0 ? s_->P[l_] : midl_);
     return {xk + sk * ek_ + f * rw.x, xl + sl * el_ + f * rw.y};
   }
-  void finish(const Lean& own, double bound, Lean& best) const {
+  void finish(const Best& own, double bound, Best& best) const {
     if (own.o < bound) best.offer(own.o, own.n);
   }
   void add(Pt p) { px_[m_] = p.x, py_[m_] = p.y, ++m_; }
-  void offer(Lean& best, double c, double sn, double g) const {
+  void offer(Best& best, double c, double sn, double g) const {
     Vec3 n{0, 0, 0};
     n[k_] = c, n[l_] = sn;
     best.offer(g, n);
@@ -609,7 +602,7 @@ Contact collide_consistent_scaled(const Cylinder& cyl, const Obb& box, bool refi
   if (!v.hit) return out;
   out.hit = true;
   out.point = box.c + s.from_box(v.point);
-  Lean best;
+  Best best{&s};
   const Vec3& u = s.u;
   // +-u (cap x vertex).
   // (Sums over the box axes are sum3's, the same bits in any axis order.)

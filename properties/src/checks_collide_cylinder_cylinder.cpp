@@ -86,20 +86,8 @@ Score score_contact(const Contact& k, bool truth_hit, Verdict verdict, const ora
   if (verdict == Verdict::Overlapping) {
     if (!pd) pd = oracle::penetration(sa, sb, 1e-20);
     if (pd->overlapping && std::isfinite(oracle::to_double(pd->depth.hi))) {
-      const QInterval& depth = pd->depth;
-      const Q v = oracle::to_q(k.depth);
-      out.depth = v < depth.lo ? rel_up(depth.lo - v, scale) : 0.0;
-      // The ratio where it measures the direction rather than rounding: the
-      // penetration depth enclosed within 1% and at least 1e-9 * scale (a
-      // rounding-sized depth, a few eps * scale, over a rounding-sized
-      // penetration depth is noise).
-      if (depth.lo >= times_scale(1e-9, scale) && (depth.hi - depth.lo) * 100 <= depth.lo) {
-        out.ratio = k.depth / oracle::to_double(depth.mid());
-        const Q lo = v / depth.hi;  // depth over the largest penetration depth the enclosure allows
-        double d = oracle::to_double(lo);
-        if (Q(d) > lo) d = std::nextafter(d, 0.0);
-        out.ratio_lo = d;
-      }
+      const UpperBoundScore u = score_upper_bound(k.depth, pd->depth, scale);
+      out.depth = u.shortfall, out.ratio = u.ratio, out.ratio_lo = u.ratio_lo;
     }
   } else {
     out.depth = 0;  // touching: the penetration depth is 0 <= depth

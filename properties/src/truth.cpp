@@ -93,6 +93,24 @@ double nearest_to_zero(const QInterval& x, double scale) {
   return 0.0;
 }
 
+UpperBoundScore score_upper_bound(double depth, const QInterval& pd, double scale) {
+  UpperBoundScore out;
+  const Q v = oracle::to_q(depth);
+  out.shortfall = v < pd.lo ? rel_up(pd.lo - v, scale) : 0.0;
+  // The ratio where it measures the direction rather than rounding: the
+  // penetration depth enclosed within 1% and at least 1e-9 * scale (a
+  // rounding-sized depth, a few eps * scale, over a rounding-sized
+  // penetration depth is noise).
+  if (pd.lo >= times_scale(1e-9, scale) && (pd.hi - pd.lo) * 100 <= pd.lo) {
+    out.ratio = depth / oracle::to_double(pd.mid());
+    const Q lo = v / pd.hi;  // depth over the largest penetration depth the enclosure allows
+    double d = oracle::to_double(lo);
+    if (Q(d) > lo) d = std::nextafter(d, 0.0);
+    out.ratio_lo = d;
+  }
+  return out;
+}
+
 ContactErrors score_polytope_contact(const Contact& k, bool truth_hit, const PolytopeTruth& truth,
                                      const oracle::QCylinder& qcyl, const oracle::ConvexShape& cyl,
                                      const oracle::ConvexShape& shape, double scale, double depth_bound,
@@ -115,20 +133,9 @@ ContactErrors score_polytope_contact(const Contact& k, bool truth_hit, const Pol
       const bool narrow = depth.hi - depth.lo <= times_scale(0.01 * depth_bound, scale);
       const Q v = oracle::to_q(k.depth);
       if (upper_bound) {
-        // A consistent contact: its depth is an overlap along a direction,
-        // never below the penetration depth, so only a certain shortfall is
-        // an error; the ratio depth / penetration depth where it measures
-        // the direction rather than rounding (the penetration depth at
-        // least 1e-9 * scale and enclosed within 1%), as for
-        // cylinder/cylinder.
-        out.depth = v < depth.lo ? rel_up(depth.lo - v, scale) : 0.0;
-        if (depth.lo >= times_scale(1e-9, scale) && (depth.hi - depth.lo) * 100 <= depth.lo) {
-          out.ratio = k.depth / oracle::to_double(depth.mid());
-          const Q lo = v / depth.hi;  // depth over the largest penetration depth the enclosure allows
-          double d = oracle::to_double(lo);
-          if (Q(d) > lo) d = std::nextafter(d, 0.0);
-          out.ratio_lo = d;
-        }
+        // A consistent contact, as cylinder/cylinder's (score_upper_bound).
+        const UpperBoundScore u = score_upper_bound(k.depth, depth, scale);
+        out.depth = u.shortfall, out.ratio = u.ratio, out.ratio_lo = u.ratio_lo;
       } else if (narrow) {
         out.depth = rel_error(depth, k.depth, scale);
       } else {

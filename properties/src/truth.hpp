@@ -59,6 +59,17 @@ double nearest_to_zero(const oracle::QInterval& x, double scale);
 /// Overlap of A and B measured along unit(n): (h_A(n) + h_B(-n)) / |n|, certified.
 oracle::QInterval overlap_along(const oracle::ConvexShape& a, const oracle::ConvexShape& b, const oracle::QVec& n);
 
+/// A consistent contact's depth (an overlap along a direction, never below
+/// the penetration depth) against the certified enclosure `pd` of the
+/// penetration depth: `shortfall`, its certain part below pd (multiples of
+/// `scale`; 0 otherwise); where pd is at least 1e-9 * scale and enclosed
+/// within 1%, `ratio` = depth / pd's midpoint and `ratio_lo` a certain lower
+/// bound of depth / penetration depth (NaN elsewhere).
+struct UpperBoundScore {
+  double shortfall = 0, ratio = NAN, ratio_lo = NAN;
+};
+UpperBoundScore score_upper_bound(double depth, const oracle::QInterval& pd, double scale);
+
 /// One contact (production's or a peer's) scored against a polytope pair's
 /// truth (cylinder against a box or a triangle): unit-normal error; with the
 /// truth overlapping, depth and normal errors against the certified EPA
