@@ -478,11 +478,13 @@ Contact collide_scaled(const Cylinder& cyl, const Triangle& tri, detail::TriCapS
   out.point = cyl.p + v.point;
   Best best{&s};
   // Keys orienting a direction: towards the cap centres from the triangle,
-  // then towards the vertices.
-  const Key keys[2] = {{s.P0, s.T[0]}, {s.Q0, s.T[0]}};
+  // then along the triangle's edges (a direction normal to all four offsets
+  // is normal to a plane holding the whole scene, whose mirror pair is a
+  // true tie).
+  const Key keys[4] = {{s.P0, s.T[0]}, {s.Q0, s.T[0]}, {s.T[1], s.T[0]}, {s.T[2], s.T[0]}};
   best.consider(s.u);
   best.consider(-s.u);
-  if (s.flat()) best.both(detail::normalized(s.nt), keys, 2);
+  if (s.flat()) best.both(detail::normalized(s.nt), keys, 4);
   // Side x edge: axis x edge (the radial direction of the edge's line when
   // the edge is parallel to the axis).
   Vec3 dir[3];
@@ -536,14 +538,18 @@ Contact collide_scaled(const Cylinder& cyl, const Triangle& tri, detail::TriCapS
     }
     // With every vertex on the axis line to rounding (no radial direction),
     // f1 is any_perpendicular's, which a reflection may negate rather than
-    // reflect; oriented by the vertices it reflects (regression 0008).
-    const Key vertex_keys[3] = {{s.T[0], s.P0}, {s.T[1], s.P0}, {s.T[2], s.P0}};
+    // reflect; oriented by the vertices it reflects (regression 0008). The
+    // last key, the other cap centre, orients f2 when the whole triangle
+    // lies exactly in the plane through p normal to it but the axis does
+    // not (regression 0014); normal to all four offsets, the scene lies in
+    // one plane and its mirror pair is a true tie.
+    const Key vertex_keys[4] = {{s.T[0], s.P0}, {s.T[1], s.P0}, {s.T[2], s.P0}, {s.Q0, s.P0}};
     if (!(far2 > 0) || !detail::radial_direction(s.V[far], s.u, fr.f1)) {
       fr.f1 = any_perpendicular(s.u);
-      orient_by(fr.f1, vertex_keys, 3);
+      orient_by(fr.f1, vertex_keys, 4);
     }
     fr.f2 = cross(s.u, fr.f1);
-    orient_by(fr.f2, vertex_keys, 3);
+    orient_by(fr.f2, vertex_keys, 4);
     const Vec3 inner[1] = {v.point};
     const detail::RimPolytope poly{s.V, 3, edge, dir, ne, inner, 1};
     detail::search_rim_edges(fr, Vec3{0, 0, 0}, s.Q, poly, best);
