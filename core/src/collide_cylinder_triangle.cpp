@@ -559,6 +559,407 @@ Contact collide_scaled(const Cylinder& cyl, const Triangle& tri, detail::TriCapS
   return out;
 }
 
+// --- The consistent contact -----------------------------------------------
+//
+// collide's normal and depth (see the header). The overlap along unit n,
+//   g(n) = max(n.P, n.Q) + r |n - (n.u) u| - min_i n.V_i,
+// is at least the penetration depth for every n, and the penetration depth
+// is its least value, taken at a boundary point of the Minkowski difference
+// with a single normal: +-u (cap x vertex), a side x vertex radial
+// direction, or a normal perpendicular to an edge e (the face, side x edge,
+// rim x edge). On the circle n . e = 0, g is the support function of the
+// shapes' projection along e: a convex body K (the hull of the caps'
+// ellipses plus the triangle's projection, a segment) that contains the
+// origin, and the least g on the circle is the distance from the origin to
+// K's boundary. That distance is found as EPA finds it, in the plane, as
+// collide_cylinder_obb.cpp does on the box's circles: support points in the
+// order of their normals span a polygon inside K, whose nearest edge's
+// distance is a lower bound; the support along that edge's normal gives g
+// there (an upper bound) and a new vertex. A circle is refined until
+// (1 + kEps) times its lower bound reaches the least g known before the
+// circles' steps, or its own least g: then it holds no direction kEps lower
+// than the answer, the cap and side x vertex normals were offered exactly,
+// and the depth is at most (1 + kEps) times the penetration depth (to
+// rounding). A circle also stops after kMaxIter steps and once its least g
+// is below 2^-40 times the scene's size (touching, to rounding).
+//
+// Representation: the scene is taken from the axis's midpoint (a swap of
+// the caps changes no offset), each circle's frame is made from its edge's
+// two ends symmetrically (the edge's direction enters only through
+// products that do not see its sign; the frame's one free sign is set by
+// exact signs over the edge's two ends together), and the circles do not
+// see each other's results: rotating or reversing the triangle's vertices,
+// or swapping the caps, gives the same circles, and a reflection of the
+// scene the reflected ones, bit for bit.
+constexpr double kEps = 1.0 / 64;
+constexpr int kMaxIter = 64;
+
+// The scene as offsets from the axis's midpoint.
+struct MidSpace {
+  Vec3 P, Q, V[3];
+  Vec3 P0, Q0, T[3];  // the points themselves (exact orientation keys)
+  Vec3 u;
+  double r, size;
+  MidSpace(const Cylinder& cyl, const Triangle& t) : P0(cyl.p), Q0(cyl.q), T{t.a, t.b, t.c}, r(cyl.r) {
+    const Vec3 mid = 0.5 * (cyl.p + cyl.q);
+    P = cyl.p - mid, Q = cyl.q - mid;
+    for (int k = 0; k < 3; ++k) V[k] = T[k] - mid;
+    const Vec3 d = cyl.q - cyl.p;
+    u = detail::UnitAndLength(max_abs(d) > 0 ? d : Vec3{0, 0, 1}).u;
+    size = std::max({max_abs(P), max_abs(Q), r, max_abs(V[0]), max_abs(V[1]), max_abs(V[2])});
+  }
+  // The overlap along n (from the cylinder towards the triangle).
+  double overlap(Vec3 n) const {
+    const double h_cyl = std::max(dot(n, P), dot(n, Q)) + r * detail::safe_length(n - dot(n, u) * u);
+    return h_cyl - std::min(std::min(dot(n, V[0]), dot(n, V[1])), dot(n, V[2]));
+  }
+};
+
+// The sign of w . (A + B - C - D), exactly (A, B, C, D points of the
+// scene): symmetric in A and B and in C and D, negated with w by a
+// reflection of the scene.
+int exact_sign_4(Vec3 w, Vec3 A, Vec3 B, Vec3 C, Vec3 D) {
+  double v = 0, m = 0;
+  for (int i = 0; i < 3; ++i) {
+    v += w[i] * ((A[i] + B[i]) - (C[i] + D[i]));
+    m += std::fabs(w[i]) * (std::fabs(A[i]) + std::fabs(B[i]) + std::fabs(C[i]) + std::fabs(D[i]));
+  }
+  if (std::fabs(v) > 0x1p-49 * m + 0x1p-1000) return v > 0 ? 1 : -1;
+  ExactSum<32> e;
+  for (int i = 0; i < 3; ++i) {
+    e.add_product(w[i], A[i]), e.add_product(w[i], B[i]);
+    e.add_product(-w[i], C[i]), e.add_product(-w[i], D[i]);
+  }
+  return e.sign();
+}
+
+// Circle k's frame: e along edge k (either way), b2 across it towards the
+// third vertex, b1 = e x b2 turned towards the axis's midpoint, else
+// towards the third vertex, from the edge's midpoint (exact signs). False for a
+// degenerate triangle (an edge of length 0, or a vertex on the line of the
+// other two to rounding): collide then takes the exact search. `x` is u x e
+// up to sign (zero where u is along e), made from the frame.
+struct EdgeFrame {
+  Vec3 e, b1, b2, x;
+};
+
+// w turned towards the axis's midpoint, else towards the third vertex T_m,
+// from the midpoint of T_k and T_l (exact signs, symmetric in the caps and
+// in k and l): a reflection of the scene reflects the choice, where the
+// cross product that made w would be negated instead, and a swap of the
+// caps or of the edge's ends leaves it. Left as it is where w is normal to
+// both.
+void orient_across_edge(const MidSpace& s, int k, int l, int m, Vec3& w) {
+  int sg = exact_sign_4(w, s.P0, s.Q0, s.T[k], s.T[l]);
+  if (sg == 0) sg = exact_sign_4(w, s.T[m], s.T[m], s.T[k], s.T[l]);
+  if (sg < 0) w = -1.0 * w;
+}
+
+bool edge_frame(const MidSpace& s, int k, EdgeFrame& f) {
+  const int l = k == 2 ? 0 : k + 1, m = 3 - k - l;
+  const Vec3 E = s.V[l] - s.V[k];
+  if (!(max_abs(E) > 0)) return false;
+  f.e = detail::normalized(E);
+  const Vec3 w = s.V[m] - 0.5 * (s.V[k] + s.V[l]);
+  Vec3 w1 = w - dot(w, f.e) * f.e;
+  // Within 2^-30 of w of the edge's line, the third vertex's offset across
+  // it is mostly the rounding of the projection (a collinear triangle).
+  if (!(max_abs(w1) > 0x1p-30 * max_abs(w))) return false;
+  w1 = w1 - dot(w1, f.e) * f.e;
+  f.b2 = detail::normalized(w1);
+  f.b1 = cross(f.e, f.b2);
+  orient_across_edge(s, k, l, m, f.b1);
+  // u x e up to sign, from the oriented frame: (-(u.b2) b1 + (u.b1) b2) /
+  // its length (a reflection of the scene reflects it, as it does b1 and
+  // b2; the cross product would be negated).
+  const double u1 = dot(s.u, f.b1), u2 = dot(s.u, f.b2), w2 = u1 * u1 + u2 * u2;
+  f.x = w2 > 0x1p-100 ? (1 / std::sqrt(w2)) * (-u2 * f.b1 + u1 * f.b2) : Vec3{0, 0, 0};
+  return true;
+}
+
+// The least overlap found and its direction: consider() measures a
+// direction, offer() takes one whose overlap is already known.
+struct MidBest {
+  const MidSpace* s;
+  double o = kInf;
+  Vec3 n{0, 0, 1};
+  void offer(double v, Vec3 cand) {
+    if (v < o) o = v, n = cand;
+  }
+  void consider(Vec3 cand) { offer(s->overlap(cand), cand); }
+};
+
+// The closed-form directions whose overlaps bound collide's depth from
+// above bit for bit (depth_bound): +-u, and per edge +-b1 (the face's
+// normal) and +-u x e. Each pair +-n from one set of dot products (the
+// same bits as overlap(n) and overlap(-n): negation is exact).
+void closed_forms(const MidSpace& s, const EdgeFrame* fr, MidBest& best) {
+  auto both = [&](Vec3 n) {
+    const double nP = dot(n, s.P), nQ = dot(n, s.Q), rim = s.r * detail::safe_length(n - dot(n, s.u) * s.u);
+    const double v0 = dot(n, s.V[0]), v1 = dot(n, s.V[1]), v2 = dot(n, s.V[2]);
+    best.offer(std::max(nP, nQ) + rim - std::min(std::min(v0, v1), v2), n);
+    best.offer(std::max(-nP, -nQ) + rim - std::min(std::min(-v0, -v1), -v2), -1.0 * n);
+  };
+  both(s.u);
+  for (int k = 0; k < 3; ++k) {
+    both(fr[k].b1);
+    if (max_abs(fr[k].x) > 0) both(fr[k].x);
+  }
+}
+
+// The circle of normals perpendicular to an edge: K in the frame (b1, b2).
+class EdgeCircle {
+ public:
+  void init(const MidSpace& s, const EdgeFrame& f, MidBest& best) {
+    f_ = &f;
+    r_ = s.r;
+    tiny2_ = 0x1p-44 * s.size * (0x1p-44 * s.size);
+    near_ = 0x1p-40 * s.size;
+    u1_ = dot(s.u, f.b1), u2_ = dot(s.u, f.b2), u3_ = dot(s.u, f.e);
+    P_ = {dot(s.P, f.b1), dot(s.P, f.b2)}, Q_ = {dot(s.Q, f.b1), dot(s.Q, f.b2)};
+    mid_ = {0.5 * (P_.x + Q_.x), 0.5 * (P_.y + Q_.y)};
+    for (int i = 0; i < 3; ++i) X_[i] = {dot(s.V[i], f.b1), dot(s.V[i], f.b2)};
+    m_ = 0;
+    // 1 / |u x b1|, 1 / |u x b2|, 1 / |u x e|, each from the other two
+    // components of u (1 - u_i^2 would cancel where u is near the axis).
+    auto inv = [](double a, double b) {
+      const double w = a * a + b * b;
+      return w > 0x1p-100 ? 1 / std::sqrt(w) : 0.0;
+    };
+    const double is1 = inv(u2_, u3_), is2 = inv(u1_, u3_), ise = inv(u1_, u2_);
+    static constexpr double kN[4][2] = {{1, 0}, {0, 1}, {-1, 0}, {0, -1}};
+    const double fq[2] = {r_ * is1, r_ * is2};
+    double low = kInf;
+    Pt low_n{1, 0};
+    auto axis = [&](int q) {
+      const double c = kN[q][0], sn = kN[q][1];
+      const double t = c * u1_ + sn * u2_;
+      // The cap n . u picks; where n . u = 0 the side's segment lies along
+      // the tangent, and its ends go behind and ahead (as the box's).
+      const bool q_behind = -sn * Q_.x + c * Q_.y < -sn * P_.x + c * P_.y;
+      const Pt& Xb = t > 0 ? Q_ : (t < 0 ? P_ : (q_behind ? Q_ : P_));
+      const Pt& Xa = t > 0 ? Q_ : (t < 0 ? P_ : (q_behind ? P_ : Q_));
+      const Pt w = scaled_rim(c, sn, fq[q & 1]);
+      // The triangle's support set along n: its vertices within `near_` of
+      // the least n . X (the whole triangle along its face normal, where
+      // rounding alone separates them), the ends along the tangent.
+      int ib, ia;
+      tri_ends(c, sn, ib, ia);
+      add({Xb.x + w.x - X_[ib].x, Xb.y + w.y - X_[ib].y});
+      add({Xa.x + w.x - X_[ia].x, Xa.y + w.y - X_[ia].y});
+      const double g = c * px_[m_ - 1] + sn * py_[m_ - 1];
+      if (g < low) low = g, low_n = {c, sn};
+    };
+    // Across u: m = (-u2, u1) / |.| and -m.
+    const bool split = ise > 0 && u1_ != 0 && u2_ != 0;
+    const double mk = -u2_ * ise, ml = u1_ * ise;
+    auto across = [&](double sg) {
+      const double vk = sg * mk, vl = sg * ml;
+      const Pt w = scaled_rim(vk, vl, r_);  // |n x u| = 1
+      int ib, ia;
+      tri_ends(vk, vl, ib, ia);
+      // Both caps' points, with the triangle's ends behind and ahead.
+      const Pt p = {P_.x + w.x, P_.y + w.y}, pq = {Q_.x + w.x, Q_.y + w.y};
+      const bool p_first = -vl * p.x + vk * p.y <= -vl * pq.x + vk * pq.y;
+      const Pt& first = p_first ? p : pq;
+      const Pt& second = p_first ? pq : p;
+      add({first.x - X_[ib].x, first.y - X_[ib].y});
+      add({second.x - X_[ia].x, second.y - X_[ia].y});
+      const double g = std::max(vk * p.x + vl * p.y, vk * pq.x + vl * pq.y) -
+                       std::min(std::min(vk * X_[0].x + vl * X_[0].y, vk * X_[1].x + vl * X_[1].y),
+                                vk * X_[2].x + vl * X_[2].y);
+      if (g < low) low = g, low_n = {vk, vl};
+    };
+    if (split) {
+      const int qm = (mk > 0) == (ml > 0) ? (mk > 0 ? 0 : 2) : (mk > 0 ? 3 : 1);
+      across(1.0);
+      axis((qm + 1) & 3);
+      axis((qm + 2) & 3);
+      across(-1.0);
+      axis((qm + 3) & 3);
+      axis(qm);
+    } else {
+      for (int q = 0; q < 4; ++q) axis(q);
+    }
+    if (low < best.o) offer(best, low_n.x, low_n.y, low);
+    for (int i = 0; i < m_; ++i) edge(i);
+  }
+
+  // EPA steps until (1 + kEps) times the nearest edge's distance reaches
+  // the least of `bound` and this circle's own least overlap (offered to
+  // `best`).
+  void refine(double bound, double floor, MidBest& best) {
+    constexpr double o1 = 1 / (1 + kEps);
+    MidBest own{best.s};
+    own.o = bound;
+    for (int it = 0; it < kMaxIter; ++it) {
+      double dm = kInf;
+      for (int i = 0; i < m_; ++i) dm = d2_[i] < dm ? d2_[i] : dm;
+      const double ob = own.o * o1;
+      if (!(dm < ob * std::fabs(ob)) || !(own.o > floor)) break;
+      // Every edge at that distance (a tie is refined whole, so that a
+      // mirrored or reordered scene takes the same steps), the last first.
+      int tied[kMax], nt = 0;
+      for (int i = 0; i < m_; ++i)
+        if (d2_[i] == dm) tied[nt++] = i;
+      if (m_ + nt > kMax) break;
+      for (int q = nt - 1; q >= 0; --q) {
+        const int im = tied[q], i1 = im + 1 == m_ ? 0 : im + 1;
+        const double dx = px_[i1] - px_[im], dy = py_[i1] - py_[im];
+        const double il = 1 / std::sqrt(dx * dx + dy * dy);
+        const double c = dy * il, sn = -dx * il;  // the edge's outward normal
+        if (!(std::fabs(c) <= 1 && std::fabs(sn) <= 1)) return finish(own, bound, best);
+        const Pt p = support(c, sn);
+        offer(own, c, sn, c * p.x + sn * p.y);
+        for (int i = m_; i > im + 1; --i) px_[i] = px_[i - 1], py_[i] = py_[i - 1], d2_[i] = d2_[i - 1];
+        px_[im + 1] = p.x, py_[im + 1] = p.y;
+        ++m_;
+        edge(im);
+        edge(im + 1);
+      }
+    }
+    finish(own, bound, best);
+  }
+
+ private:
+  struct Pt {
+    double x, y;
+  };
+  static constexpr int kMax = 12 + kMaxIter + 12;
+
+  // The rim's share of the support along unit n = (c, sn): the projection
+  // of n - (n.u) u, as u x (n x u) (no cancellation where n is near u);
+  // t1 = (n x u) . e up to sign; |n x u|^2 = u3^2 + t1^2.
+  Pt rim(double c, double sn, double t1) const {
+    const double u32 = u3_ * u3_;
+    return {u2_ * t1 + u32 * c, u32 * sn - u1_ * t1};
+  }
+  Pt scaled_rim(double c, double sn, double f) const {
+    const Pt w = rim(c, sn, c * u2_ - sn * u1_);
+    return {f * w.x, f * w.y};
+  }
+  // The triangle's vertices at the ends (behind, ahead along the tangent
+  // (-sn, c)) of its support set along (c, sn) in K, -X: the vertices
+  // within `near_` of the least (c, sn) . X.
+  void tri_ends(double c, double sn, int& ib, int& ia) const {
+    double v[3];
+    for (int i = 0; i < 3; ++i) v[i] = c * X_[i].x + sn * X_[i].y;
+    const double lo = std::min(std::min(v[0], v[1]), v[2]) + near_;
+    ends(c, sn, [&](int i) { return v[i] <= lo; }, ib, ia);
+  }
+  // Among the vertices `in` selects, the ends along the tangent (-sn, c)
+  // of K's points -X_i: the least and the greatest tangent coordinate, a
+  // tie decided by the vertices' coordinates (their values, not their
+  // order: the vertices' order is the triangle's representation).
+  template <class In>
+  void ends(double c, double sn, In&& in, int& ib, int& ia) const {
+    auto before = [&](int i, double ti, int j, double tj) {
+      return ti < tj || (ti == tj && (X_[i].x < X_[j].x || (X_[i].x == X_[j].x && X_[i].y < X_[j].y)));
+    };
+    double tb = 0, ta = 0;
+    ib = ia = -1;
+    for (int i = 0; i < 3; ++i) {
+      if (!in(i)) continue;
+      const double t = sn * X_[i].x - c * X_[i].y;  // the tangent coordinate of -X_i
+      if (ib < 0 || before(i, t, ib, tb)) tb = t, ib = i;
+      if (ia < 0 || before(ia, ta, i, t)) ta = t, ia = i;
+    }
+  }
+  // K's support point along any unit (c, sn). Where a support set is a
+  // segment (n . u = 0: the side; vertices of the triangle at one least
+  // value) its midpoint, which a reflection or a swap of the caps or of the
+  // vertices maps to itself.
+  Pt support(double c, double sn) const {
+    const double t = c * u1_ + sn * u2_, t1 = c * u2_ - sn * u1_;
+    const double w = u3_ * u3_ + t1 * t1;
+    const double f = w > 0x1p-100 ? r_ / std::sqrt(w) : 0.0;
+    const Pt rw = rim(c, sn, t1);
+    const Pt& X = t > 0 ? Q_ : (t < 0 ? P_ : mid_);
+    double v[3];
+    for (int i = 0; i < 3; ++i) v[i] = c * X_[i].x + sn * X_[i].y;
+    const double lo = std::min(std::min(v[0], v[1]), v[2]);
+    int ib, ia;
+    ends(c, sn, [&](int i) { return v[i] == lo; }, ib, ia);
+    const double tx = 0.5 * (X_[ib].x + X_[ia].x), ty = 0.5 * (X_[ib].y + X_[ia].y);
+    return {X.x + f * rw.x - tx, X.y + f * rw.y - ty};
+  }
+  void finish(const MidBest& own, double bound, MidBest& best) const {
+    if (own.o < bound) best.offer(own.o, own.n);
+  }
+  void add(Pt p) { px_[m_] = p.x, py_[m_] = p.y, ++m_; }
+  void offer(MidBest& best, double c, double sn, double g) const { best.offer(g, c * f_->b1 + sn * f_->b2); }
+  // Edge i (point i to point i + 1): its signed squared distance from the
+  // origin, cross * |cross| / length^2; an edge shorter than 2^-44 times the
+  // scene's size is never the nearest (its line is rounding noise).
+  void edge(int i) {
+    const int i1 = i + 1 == m_ ? 0 : i + 1;
+    const double dx = px_[i1] - px_[i], dy = py_[i1] - py_[i];
+    const double l2 = dx * dx + dy * dy;
+    const double cr = px_[i] * py_[i1] - py_[i] * px_[i1];
+    d2_[i] = l2 > tiny2_ ? cr * std::fabs(cr) / l2 : kInf;
+  }
+
+  const EdgeFrame* f_ = nullptr;
+  double r_ = 0, u1_ = 0, u2_ = 0, u3_ = 0, tiny2_ = 0, near_ = 0;
+  Pt P_{0, 0}, Q_{0, 0}, mid_{0, 0}, X_[3];
+  int m_ = 0;
+  double px_[kMax], py_[kMax], d2_[kMax];
+};
+
+// The consistent contact of a cylinder and a proper triangle (all three
+// edge frames made), the verdict's point given.
+Contact consistent_contact(const MidSpace& s, const EdgeFrame* fr, bool refine) {
+  Contact out;
+  MidBest best{&s};
+  closed_forms(s, fr, best);
+  const double cf = best.o;
+  const Vec3 cf_n = best.n;
+  EdgeCircle circle[3];
+  for (int k = 0; k < 3; ++k) circle[k].init(s, fr[k], best);
+  // Side x vertex: the radial direction of each vertex within best.o of the
+  // side and inside the slab by as much (a minimal translation along it
+  // moves the vertex onto the side), measured from the axis's midpoint; a
+  // vertex within 2^-44 times the scene's size of the axis line has no
+  // radial direction but rounding noise.
+  {
+    const double tiny2 = 0x1p-44 * s.size * (0x1p-44 * s.size);
+    const double o = best.o, half = 0.5 * detail::safe_length(s.Q - s.P), hi = s.r + o, lo = std::max(s.r - o, 0.0);
+    for (int k = 0; k < 3; ++k) {
+      const double z = dot(s.V[k], s.u);
+      const Vec3 wr = s.V[k] - z * s.u;
+      const double rho2 = dot(wr, wr);
+      if (std::fabs(z) <= half + o && rho2 <= hi * hi && rho2 >= lo * lo && rho2 > tiny2)
+        best.consider((1 / std::sqrt(rho2)) * wr);
+    }
+  }
+  const double bound = best.o;
+  const double floor = 0x1p-40 * s.size;
+  if (refine)
+    for (int k = 0; k < 3; ++k) circle[k].refine(bound, floor, best);
+  const Vec3 nb = max_abs(best.n) > 0 ? detail::normalized(best.n) : Vec3{0, 0, 1};
+  const double d = s.overlap(nb);
+  // Never above the closed forms' least overlap (depth_bound), measured
+  // the same way.
+  const bool keep = d <= cf;
+  out.normal = keep ? nb : cf_n;
+  out.depth = std::min(std::max(keep ? d : cf, 0.0), std::numeric_limits<double>::max());
+  return out;
+}
+
+Contact collide_consistent_scaled(const Cylinder& cyl, const Triangle& tri, bool refine) {
+  const TriSpace ts(cyl, tri);
+  const Verdict v = decide(ts, detail::TriCapStage::Exact);
+  if (!v.hit) return Contact{};
+  const MidSpace s(cyl, tri);
+  EdgeFrame fr[3];
+  for (int k = 0; k < 3; ++k)
+    if (!edge_frame(s, k, fr[k])) return collide_scaled(cyl, tri, detail::TriCapStage::Exact);
+  Contact out = consistent_contact(s, fr, refine);
+  out.hit = true;
+  out.point = cyl.p + v.point;
+  return out;
+}
+
 }  // namespace
 
 namespace detail {
@@ -570,6 +971,20 @@ bool overlap_with_stage(const Cylinder& cyl, const Triangle& tri, TriCapStage st
 bool depth_bound(const Cylinder& cyl, const Triangle& tri, double* bound) {
   if (!is_valid(cyl) || !is_valid(tri)) return false;
   const SceneScale sc(std::max(largest(cyl), largest(tri)));
+  {
+    // A proper triangle: the consistent contact's closed forms, which its
+    // depth never exceeds (consistent_contact).
+    const MidSpace ms(sc.in(cyl), sc.in(tri));
+    EdgeFrame fr[3];
+    if (edge_frame(ms, 0, fr[0]) && edge_frame(ms, 1, fr[1]) && edge_frame(ms, 2, fr[2])) {
+      MidBest best{&ms};
+      closed_forms(ms, fr, best);
+      const double o = std::min(std::max(best.o, 0.0), std::numeric_limits<double>::max());
+      *bound = std::min(sc.out(o), std::numeric_limits<double>::max());
+      return true;
+    }
+  }
+  // A degenerate triangle: the exact search's candidates (collide_scaled).
   const TriSpace s(sc.in(cyl), sc.in(tri));
   double o = std::min(overlap_along(s, s.u), overlap_along(s, -s.u));
   auto both = [&](Vec3 w) { o = std::min(o, std::min(overlap_along(s, w), overlap_along(s, -w))); };
@@ -589,14 +1004,17 @@ Contact collide_with_stage(const Cylinder& cyl, const Triangle& tri, TriCapStage
   return collide_rescaled(cyl, tri, [&](const Cylinder& c, const Triangle& t) { return collide_scaled(c, t, stage); });
 }
 
+Contact collide_consistent(const Cylinder& cyl, const Triangle& tri, bool refine) {
+  return collide_rescaled(cyl, tri,
+                          [&](const Cylinder& c, const Triangle& t) { return collide_consistent_scaled(c, t, refine); });
+}
+
 }  // namespace detail
 
 bool overlap(const Cylinder& cyl, const Triangle& tri) {
   return detail::overlap_with_stage(cyl, tri, detail::TriCapStage::Exact);
 }
 
-Contact collide(const Cylinder& cyl, const Triangle& tri) {
-  return detail::collide_with_stage(cyl, tri, detail::TriCapStage::Exact);
-}
+Contact collide(const Cylinder& cyl, const Triangle& tri) { return detail::collide_consistent(cyl, tri); }
 
 }  // namespace geomcheck

@@ -11,10 +11,10 @@
 
 namespace geomcheck {
 
-// The spec of collide_cylinder_triangle: cylinder/triangle: exact verdict; the penetration depth over the Minkowski patches.
+// The spec of collide_cylinder_triangle: cylinder/triangle: exact verdict; a consistent contact (depth = overlap along the normal, at most 1.5 times the penetration depth).
 GEOMCHECK_SPEC(collide_cylinder_triangle, 100000,
-               (Claims{true, Claims::Depth::Penetration, true, "unit, from the cylinder towards the triangle: the minimal translation", "certified engine: exact verdict, certified signed distance, EPA penetration depth enclosure"}),
-               &teeth::kTriangleNoCapStage)
+               (Claims{true, Claims::Depth::UpperBound, true, "unit, from the cylinder towards the triangle: a consistent contact, not the minimal translation", "certified engine: exact verdict, certified signed distance, EPA penetration depth as a lower bound of the depth"}),
+               &teeth::kTriangleNoCapStage, &teeth::kTriangleNoCircleSearch)
 
 GEOMCHECK_PAIR_CHECKS(triangle_checks)
 

@@ -207,6 +207,10 @@ const CylinderTriangleImpl kTriangleNoCapStage = {
     [](const Cylinder& c, const Triangle& t) { return detail::overlap_with_stage(c, t, detail::TriCapStage::None); },
     [](const Cylinder& c, const Triangle& t) { return detail::collide_with_stage(c, t, detail::TriCapStage::None); }};
 
+const CylinderTriangleImpl kTriangleNoCircleSearch = {
+    "triangle-without-circle-search", [](const Cylinder& c, const Triangle& t) { return overlap(c, t); },
+    [](const Cylinder& c, const Triangle& t) { return detail::collide_consistent(c, t, false); }};
+
 namespace {
 detail::CylinderPairOptions without(int part) {
   detail::CylinderPairOptions o;

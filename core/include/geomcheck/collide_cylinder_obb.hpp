@@ -46,7 +46,7 @@
 // span a polygon inside the body, whose nearest edge bounds the distance
 // from below, and the support along that edge's normal is a new vertex and
 // an overlap (from above). A circle is refined until (1 + 1/64) times its
-// lower bound reaches the least overlap found (at most 32 steps per
+// lower bound reaches the least overlap found (at most 64 steps per
 // circle); each circle is refined against the same bound, so the box axes'
 // order changes no answer. The exact minimum, with its direction, is the
 // query penetration(Cylinder, Obb) (penetration_cylinder_obb.hpp).

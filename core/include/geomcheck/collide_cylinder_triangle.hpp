@@ -28,26 +28,42 @@
 //   zeros handled (a vertex on the plane, an edge in it, the whole triangle
 //   in it).
 //
-// `collide` CLAIMS THE PENETRATION DEPTH: `depth` is the minimum
-// translation distance and `normal` (unit, from the cylinder towards the
-// triangle) its direction; `point` is Ptri (step 2) or the section point
-// nearest the cap centre (step 3), in both shapes up to rounding. The
-// minimising direction is the normal of a smooth patch of the Minkowski
-// difference; the candidates are its patch families:
+// `collide` is a CONSISTENT CONTACT, not the minimal translation: `depth`
+// is the overlap of the shapes along `normal` (unit, from the cylinder
+// towards the triangle), h_cyl(n) + h_tri(-n), so it is never below the
+// penetration depth, and by construction at most (1 + 1/64) times it (to
+// rounding); `point` is Ptri (step 2) or the section point nearest the cap
+// centre (step 3), in both shapes up to rounding. The penetration depth is
+// the least overlap over unit n, taken at a boundary point of the Minkowski
+// difference with a single normal; such normals are
 //   - cap x vertex: the axis, both ways;
-//   - triangle face x cylinder: the triangle's normal, both ways;
-//   - side x edge: axis x edge, both ways (the radial direction of the edge
-//     line when the edge is parallel to the axis);
-//   - side x vertex: the radial direction through each vertex within the
-//     best overlap so far of the side;
-//   - rim x edge (curved): the roots of a trigonometric polynomial of degree
-//     2 in the rim angle (a quartic in tan(phi / 2), and a local cubic at
-//     the tips of the rim's projection), for
-//     edges passing within the best overlap so far of the rim circle (the
-//     search shared with collide_cylinder_obb, detail/rim_edge.hpp).
-// `depth` is always the overlap of the shapes along `normal`. The same
-// depth is also a query of its own, penetration(Cylinder, Triangle)
-// (penetration_cylinder_triangle.hpp).
+//   - side x vertex: the radial direction through the vertex;
+//   - every other one is perpendicular to an edge e (the triangle's face,
+//     side x edge, rim x edge).
+// The first two are offered exactly. On the circle n . e = 0 the overlap
+// is the support function of the shapes' projection along e (the
+// triangle's projection, a segment, plus the hull of the caps' two
+// ellipses: a convex body containing the origin), so its least value there
+// is the distance from the origin to that body's boundary, found as EPA
+// finds it in the plane: the support points along the face's normal, the
+// edge's normal in the face and the directions across u span a polygon
+// inside the body, whose nearest edge bounds the distance from below, and
+// the support along that edge's normal is a new vertex and an overlap (from
+// above). A circle is refined until (1 + 1/64) times its lower bound
+// reaches the least overlap found (at most 64 steps per circle); each
+// circle is refined against the same bound and its frame is made from its
+// edge alone, so rotating or reversing the vertices, or swapping the caps,
+// changes no depth, and a reflection of the scene reflects the answer bit
+// for bit (as below). A degenerate triangle (collinear vertices, to 2^-30
+// of their offsets) has no circle frames; its contact is the exact minimum.
+// The exact minimum, with its direction, is the query
+// penetration(Cylinder, Triangle) (penetration_cylinder_triangle.hpp): the
+// same candidates but the circles, whose rim x edge minima it finds as the
+// roots of a trigonometric polynomial of degree 2 in the rim angle (a
+// quartic in tan(phi / 2), and a local cubic at the tips of the rim's
+// projection), for edges passing within the best overlap so far of the rim
+// circle (the search shared with penetration_cylinder_obb,
+// detail/rim_edge.hpp).
 //
 // Reflections of the scene give bit-identical answers, except where the
 // cylinder's axis lies exactly in the triangle's plane: there the scene is

@@ -4,8 +4,10 @@
 // A query of its own beside collide_cylinder_triangle, over the same two
 // shapes: the minimum over every Minkowski patch, the closed roots of the
 // curved ones included, asked and verified by that name (its own cases,
-// checks, case files, fuzz target and report rows). collide(Cylinder, B)
-// answers the same contact, bit for bit.
+// checks, case files, fuzz target and report rows). collide(Cylinder,
+// Triangle) is a consistent contact instead (at most 1 + 1/64 times this
+// depth, and faster), but for a degenerate triangle, where it answers this
+// contact bit for bit.
 //
 // Semantics: as collide_cylinder_triangle.hpp (closed solids, touching counts,
 // the same overlap and the same contact point); `overlap` is that query's.
@@ -26,7 +28,7 @@
 //     2 in the rim angle (a quartic in tan(phi / 2), and a local cubic at
 //     the tips of the rim's projection), for
 //     edges passing within the best overlap so far of the rim circle (the
-//     search shared with collide_cylinder_obb, detail/rim_edge.hpp).
+//     search shared with penetration_cylinder_obb, detail/rim_edge.hpp).
 // `depth` is always the overlap of the shapes along `normal`.
 //
 // Scale: the scene is rescaled by an exact power of two when its magnitude

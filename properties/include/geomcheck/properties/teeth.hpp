@@ -38,6 +38,12 @@ extern const CylinderObbImpl kBoxNoCircleSearch;
 /// nearest the axis segment lies beyond a cap is taken as a miss (the talk's
 /// steps 1 and 2 only), though it may still cut into the cap's disc.
 extern const CylinderTriangleImpl kTriangleNoCapStage;
+/// collide_cylinder_triangle without the EPA steps on its circles of
+/// normals: the best of the closed-form candidates (+-u, the face normal,
+/// u x each edge, the directions across u and along the face in each
+/// edge's plane, the side x vertex radial directions), no rim x edge
+/// direction (caught by the depth-ratio bound).
+extern const CylinderTriangleImpl kTriangleNoCircleSearch;
 
 /// collide_cylinder_cylinder without its false-positive planes: every slice
 /// holds A to B's cap planes pushed out by A's full reach r_A sin theta (and

@@ -32,7 +32,7 @@
 //            same for the ball (its gap from the cylinder at t, and its path
 //            up to t certified never that deep inside, by the engine)
 //   unit     | |normal| - 1 | (absolute, not scaled)
-//   depth_ratio  consistent contacts (collide_cylinder_cylinder, _obb): depth /
+//   depth_ratio  consistent contacts (collide_cylinder_cylinder, _obb, _triangle): depth /
 //            penetration depth, where that is at least 1e-9 * scale and
 //            enclosed within 1% (a ratio, not scaled; 0: no bound). A case
 //            whose depth certainly exceeds it fails like any property.
@@ -71,7 +71,9 @@ constexpr Tolerances tolerances(QueryId id) {
       return {/*verdict*/ 1e-14, /*depth*/ 1e-14, /*normal*/ 0, /*point*/ 1e-14, /*t*/ 0, /*unit*/ 1e-14,
               /*depth_ratio*/ 1.5};
     case QueryId::collide_cylinder_triangle:
-      return {/*verdict*/ 1e-14, /*depth*/ 1e-14, /*normal*/ 1e-14, /*point*/ 1e-14, /*t*/ 0, /*unit*/ 1e-14};
+      // A consistent contact, as the box's (above).
+      return {/*verdict*/ 1e-14, /*depth*/ 1e-14, /*normal*/ 0, /*point*/ 1e-14, /*t*/ 0, /*unit*/ 1e-14,
+              /*depth_ratio*/ 1.5};
     case QueryId::penetration_cylinder_obb:
       return {/*verdict*/ 1e-14, /*depth*/ 1e-14, /*normal*/ 1e-14, /*point*/ 1e-14, /*t*/ 0, /*unit*/ 1e-14};
     case QueryId::penetration_cylinder_triangle:
