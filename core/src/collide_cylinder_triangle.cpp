@@ -914,8 +914,43 @@ Contact consistent_contact(const MidSpace& s, const EdgeFrame* fr, bool refine) 
   closed_forms(s, fr, best);
   const double cf = best.o;
   const Vec3 cf_n = best.n;
+  // The circles whose edge can hold the penetration depth's normal on its
+  // rim x edge patch: a minimal translation along such a normal moves the
+  // triangle by the penetration depth (<= best.o) to touch a rim point
+  // with a point of the edge, so the edge passes within best.o of that
+  // rim's circle; an edge farther from both has its circle skipped (the
+  // face and side x edge normals on it were offered in closed form).
+  // Bounds of that distance from below: the edge's gap to the cap plane
+  // and the gap of its distance from the axis to r (convex along the
+  // edge: its range is [the closest approach, the larger end]), computed
+  // from the edge's midpoint and half, so that the edge's two ends enter
+  // alike.
   EdgeCircle circle[3];
-  for (int k = 0; k < 3; ++k) circle[k].init(s, fr[k], best);
+  bool live[3];
+  {
+    const double o = best.o;
+    for (int k = 0; k < 3; ++k) {
+      const int l = k == 2 ? 0 : k + 1;
+      const Vec3 mid = 0.5 * (s.V[k] + s.V[l]), half = 0.5 * (s.V[l] - s.V[k]);
+      const Vec3 wm = mid - dot(mid, s.u) * s.u, wh = half - dot(half, s.u) * s.u;
+      const double wh2 = dot(wh, wh);
+      const double tc = wh2 > 0 ? std::clamp(-dot(wm, wh) / wh2, -1.0, 1.0) : 0.0;
+      const Vec3 wc = wm + tc * wh;
+      const double rmin = std::sqrt(dot(wc, wc)), rmax = std::sqrt(std::max(dot(wm - wh, wm - wh), dot(wm + wh, wm + wh)));
+      const double rgap = rmin > s.r ? rmin - s.r : (rmax < s.r ? s.r - rmax : 0.0);
+      bool near = false;
+      for (int cap = 0; cap < 2; ++cap) {
+        const Vec3& C = cap ? s.Q : s.P;
+        const double sg = cap ? 1.0 : -1.0;
+        const double hk = sg * dot(s.V[k] - C, s.u), hl = sg * dot(s.V[l] - C, s.u);
+        const double hlo = std::min(hk, hl), hhi = std::max(hk, hl);
+        const double hgap = hlo > 0 ? hlo : (hhi < 0 ? -hhi : 0.0);
+        near = near || std::max(hgap, rgap) <= o;
+      }
+      live[k] = near;
+      if (near) circle[k].init(s, fr[k], best);
+    }
+  }
   // Side x vertex: the radial direction of each vertex within best.o of the
   // side and inside the slab by as much (a minimal translation along it
   // moves the vertex onto the side), measured from the axis's midpoint; a
@@ -935,7 +970,8 @@ Contact consistent_contact(const MidSpace& s, const EdgeFrame* fr, bool refine) 
   const double bound = best.o;
   const double floor = 0x1p-40 * s.size;
   if (refine)
-    for (int k = 0; k < 3; ++k) circle[k].refine(bound, floor, best);
+    for (int k = 0; k < 3; ++k)
+      if (live[k]) circle[k].refine(bound, floor, best);
   const Vec3 nb = max_abs(best.n) > 0 ? detail::normalized(best.n) : Vec3{0, 0, 1};
   const double d = s.overlap(nb);
   // Never above the closed forms' least overlap (depth_bound), measured

@@ -30,7 +30,7 @@
   X(collide_cylinder_obb, Collide, Cylinder, Obb,                                        \
     "overlap/collide(Cylinder, Obb): exact verdict; consistent contact (depth = overlap along the normal, within 1 + 1/64 of the penetration depth)") \
   X(collide_cylinder_triangle, Collide, Cylinder, Triangle,                              \
-    "overlap/collide(Cylinder, Triangle): exact verdict; penetration depth over the Minkowski patches") \
+    "overlap/collide(Cylinder, Triangle): exact verdict; consistent contact (depth = overlap along the normal, within 1 + 1/64 of the penetration depth)") \
   X(collide_cylinder_cylinder, Collide, Cylinder, Cylinder,                              \
     "overlap/collide(Cylinder, Cylinder): exact verdict; consistent contact (depth = overlap along the normal, an upper bound)") \
   X(penetration_cylinder_obb, Collide, Cylinder, Obb,                                    \
