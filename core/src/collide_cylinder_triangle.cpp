@@ -619,12 +619,8 @@ struct MidSpace {
 // scene): symmetric in A and B and in C and D, negated with w by a
 // reflection of the scene.
 int exact_sign_4(Vec3 w, Vec3 A, Vec3 B, Vec3 C, Vec3 D) {
-  double v = 0, m = 0;
-  for (int i = 0; i < 3; ++i) {
-    v += w[i] * ((A[i] + B[i]) - (C[i] + D[i]));
-    m += std::fabs(w[i]) * (std::fabs(A[i]) + std::fabs(B[i]) + std::fabs(C[i]) + std::fabs(D[i]));
-  }
-  if (std::fabs(v) > 0x1p-49 * m + 0x1p-1000) return v > 0 ? 1 : -1;
+  const detail::FilterValue f = detail::sum_difference_filter(w, A, B, C, D);
+  if (std::fabs(f.value) > f.bound) return f.value > 0 ? 1 : -1;
   ExactSum<32> e;
   for (int i = 0; i < 3; ++i) {
     e.add_product(w[i], A[i]), e.add_product(w[i], B[i]);

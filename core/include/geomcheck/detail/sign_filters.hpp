@@ -1,5 +1,6 @@
 // geomcheck — internal: the sign filters of the cylinder/triangle query's
-// exact orientation tests, in one place so that production and its tests
+// exact orientation tests (the exact search's keys and the consistent
+// contact's frames), in one place so that production and its tests
 // (oracles/tests/test_filters.cpp) evaluate the same expressions.
 //
 // Each gives the rounded value and a bound of its rounding error: wherever
@@ -34,6 +35,23 @@ inline FilterValue dot_difference_filter(Vec3 w, Vec3 x, Vec3 y) {
 inline FilterValue triple_filter(Vec3 q, Vec3 a, Vec3 b) {
   const double mq = max_abs(q);
   return {dot(q, cross(a, b)), 0x1p-46 * (mq * max_abs(a) * max_abs(b)) + 0x1p-1020 * (1 + mq), true};
+}
+
+/// w . ((a + b) - (c + d)) (the sign of w against the midpoint of a and b
+/// from that of c and d): each coordinate's sums and difference within
+/// 3 * 2^-53 of |a_i| + |b_i| + |c_i| + |d_i|, the products and the dot
+/// product's two sums within 3 * 2^-53 more of |w_i| times that; bound 2^-49
+/// of sum |w_i| (|a_i| + |b_i| + |c_i| + |d_i|) (about 2.7 times that
+/// analysis), plus 2^-1000 for products that underflow. Symmetric in a and
+/// b and in c and d (the sums commute), and negated exactly with w and the
+/// points by a reflection.
+inline FilterValue sum_difference_filter(Vec3 w, Vec3 a, Vec3 b, Vec3 c, Vec3 d) {
+  double v = 0, m = 0;
+  for (int i = 0; i < 3; ++i) {
+    v += w[i] * ((a[i] + b[i]) - (c[i] + d[i]));
+    m += std::fabs(w[i]) * (std::fabs(a[i]) + std::fabs(b[i]) + std::fabs(c[i]) + std::fabs(d[i]));
+  }
+  return {v, 0x1p-49 * m + 0x1p-1000, true};
 }
 
 }  // namespace geomcheck::detail
