@@ -631,10 +631,11 @@ int exact_sign_4(Vec3 w, Vec3 A, Vec3 B, Vec3 C, Vec3 D) {
 
 // Circle k's frame: e along edge k (either way), b2 across it towards the
 // third vertex, b1 = e x b2 turned towards the axis's midpoint, else
-// towards the third vertex, from the edge's midpoint (exact signs). False for a
-// degenerate triangle (an edge of length 0, or a vertex on the line of the
-// other two to rounding): collide then takes the exact search. `x` is u x e
-// up to sign (zero where u is along e), made from the frame.
+// towards the third vertex, from the edge's midpoint (exact signs). False
+// for a degenerate triangle (an edge of length 0, or the third vertex
+// within 2^-30 of its offset of the edge's line): collide then takes the
+// exact search. `x` is u x e up to sign (zero where u is along e), made
+// from the frame.
 struct EdgeFrame {
   Vec3 e, b1, b2, x;
 };
