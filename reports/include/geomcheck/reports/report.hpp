@@ -84,7 +84,7 @@ struct QueryReport {
   int shrunk = 0;  ///< saved counterexamples made simpler before saving (shrink.hpp)
   Tolerances tol{};
   // Queries whose depth is an upper bound, not the penetration depth
-  // (collide_cylinder_cylinder, _obb): depth / certified penetration depth over
+  // (collide_cylinder_cylinder, _obb, _triangle): depth / certified penetration depth over
   // the overlapping cases where the engine encloses it within 1%.
   bool depth_is_bound = false;
   Series depth_ratio;
