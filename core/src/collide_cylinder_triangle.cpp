@@ -640,15 +640,25 @@ struct EdgeFrame {
   Vec3 e, b1, b2, x;
 };
 
-// w turned towards the axis's midpoint, else towards the third vertex T_m,
-// from the midpoint of T_k and T_l (exact signs, symmetric in the caps and
-// in k and l): a reflection of the scene reflects the choice, where the
-// cross product that made w would be negated instead, and a swap of the
-// caps or of the edge's ends leaves it. Left as it is where w is normal to
-// both.
-void orient_across_edge(const MidSpace& s, int k, int l, int m, Vec3& w) {
+// The sign of a . b, exactly.
+int exact_sign_of_dot(Vec3 a, Vec3 b) {
+  ExactSum<6> e;
+  for (int i = 0; i < 3; ++i) e.add_product(a[i], b[i]);
+  return e.sign();
+}
+
+// w (normal to the edge and to b2) turned towards the axis's midpoint, else
+// towards the third vertex T_m, from the midpoint of T_k and T_l, else so
+// that w . u and b2 . u have one sign (exact signs; each key symmetric in
+// the caps, whose swap negates u, and in k and l): a reflection of the
+// scene reflects the choice, where the cross product that made w would be
+// negated instead, and a swap of the caps or of the edge's ends leaves it.
+// Left as it is where all three are zero (the axis in the plane of w's
+// normal, to within its rounding).
+void orient_across_edge(const MidSpace& s, int k, int l, int m, Vec3 b2, Vec3& w) {
   int sg = exact_sign_4(w, s.P0, s.Q0, s.T[k], s.T[l]);
   if (sg == 0) sg = exact_sign_4(w, s.T[m], s.T[m], s.T[k], s.T[l]);
+  if (sg == 0) sg = exact_sign_of_dot(w, s.u) * exact_sign_of_dot(b2, s.u);
   if (sg < 0) w = -1.0 * w;
 }
 
@@ -663,9 +673,10 @@ bool edge_frame(const MidSpace& s, int k, EdgeFrame& f) {
   // it is mostly the rounding of the projection (a collinear triangle).
   if (!(max_abs(w1) > 0x1p-30 * max_abs(w))) return false;
   w1 = w1 - dot(w1, f.e) * f.e;
+  if (!(max_abs(w1) > 0)) return false;  // subnormal offsets: the second projection underflowed
   f.b2 = detail::normalized(w1);
   f.b1 = cross(f.e, f.b2);
-  orient_across_edge(s, k, l, m, f.b1);
+  orient_across_edge(s, k, l, m, f.b2, f.b1);
   // u x e up to sign, from the oriented frame: (-(u.b2) b1 + (u.b1) b2) /
   // its length (a reflection of the scene reflects it, as it does b1 and
   // b2; the cross product would be negated).
