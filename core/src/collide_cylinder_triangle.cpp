@@ -667,13 +667,18 @@ bool edge_frame(const MidSpace& s, int k, EdgeFrame& f) {
   const Vec3 E = s.V[l] - s.V[k];
   if (!(max_abs(E) > 0)) return false;
   f.e = detail::normalized(E);
-  const Vec3 w = s.V[m] - 0.5 * (s.V[k] + s.V[l]);
+  const Vec3 w0 = s.V[m] - 0.5 * (s.V[k] + s.V[l]);
+  if (!(max_abs(w0) > 0)) return false;
+  // Scaled by a power of two to magnitude about 1 (exactly), so that the
+  // projections below do not underflow for a triangle far smaller than the
+  // scene (its offsets subnormal).
+  const Vec3 w = detail::scaled_down(w0, max_abs(w0));
   Vec3 w1 = w - dot(w, f.e) * f.e;
   // Within 2^-30 of w of the edge's line, the third vertex's offset across
   // it is mostly the rounding of the projection (a collinear triangle).
   if (!(max_abs(w1) > 0x1p-30 * max_abs(w))) return false;
   w1 = w1 - dot(w1, f.e) * f.e;
-  if (!(max_abs(w1) > 0)) return false;  // subnormal offsets: the second projection underflowed
+  if (!(max_abs(w1) > 0)) return false;
   f.b2 = detail::normalized(w1);
   f.b1 = cross(f.e, f.b2);
   orient_across_edge(s, k, l, m, f.b2, f.b1);
