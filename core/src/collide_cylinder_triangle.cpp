@@ -669,10 +669,10 @@ bool edge_frame(const MidSpace& s, int k, EdgeFrame& f) {
   f.e = detail::normalized(E);
   const Vec3 w0 = s.V[m] - 0.5 * (s.V[k] + s.V[l]);
   if (!(max_abs(w0) > 0)) return false;
-  // Scaled by a power of two to magnitude about 1 (exactly), so that the
-  // projections below do not underflow for a triangle far smaller than the
-  // scene (its offsets subnormal).
-  const Vec3 w = detail::scaled_down(w0, max_abs(w0));
+  // Below 2^-300, scaled by a power of two to magnitude about 1 (exactly),
+  // so that the projections below do not underflow for a triangle far
+  // smaller than the scene (its offsets subnormal).
+  const Vec3 w = max_abs(w0) < 0x1p-300 ? detail::scaled_down(w0, max_abs(w0)) : w0;
   Vec3 w1 = w - dot(w, f.e) * f.e;
   // Within 2^-30 of w of the edge's line, the third vertex's offset across
   // it is mostly the rounding of the projection (a collinear triangle).
