@@ -21,7 +21,7 @@
 #include <cstddef>
 #include <cstdlib>
 #include <cstring>
-#include <mutex>
+#include <atomic>
 
 namespace {
 
@@ -30,13 +30,24 @@ struct Node {
   Node* next;
 };
 Node* free_list[kLargest + 1];
-std::mutex lock;
+// A spin lock: the targets run their checks on one thread, so it is never
+// contended, and an atomic exchange costs far less than a mutex behind the
+// sanitizers' interceptors (pthread_mutex_lock and unlock were 7% of an
+// engine-backed target's run).
+std::atomic_flag busy = ATOMIC_FLAG_INIT;
+struct Hold {
+  Hold() {
+    while (busy.test_and_set(std::memory_order_acquire)) {
+    }
+  }
+  ~Hold() { busy.clear(std::memory_order_release); }
+};
 
 bool pooled(std::size_t n) { return n >= sizeof(Node) && n <= kLargest; }
 
 void* allocate(std::size_t n) {
   if (pooled(n)) {
-    const std::lock_guard<std::mutex> hold(lock);
+    const Hold hold;
     if (Node* b = free_list[n]) {
       free_list[n] = b->next;
       return b;
@@ -53,7 +64,7 @@ void release(void* p, std::size_t n) {
     std::free(p);
     return;
   }
-  const std::lock_guard<std::mutex> hold(lock);
+  const Hold hold;
   Node* b = static_cast<Node*>(p);
   b->next = free_list[n];
   free_list[n] = b;
