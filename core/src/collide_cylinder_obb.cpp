@@ -10,6 +10,7 @@
 
 #include "geomcheck/detail/frame.hpp"
 #include "geomcheck/detail/obb_stages.hpp"
+#include "geomcheck/detail/planar_epa.hpp"
 #include "geomcheck/detail/rim_edge.hpp"
 
 namespace geomcheck {
@@ -409,11 +410,11 @@ Contact collide_scaled(const Cylinder& cyl, const Obb& box, detail::ObbCapStage 
 // steps (met only by very shallow contacts, whose polygon must close in on
 // a sharply curved boundary) and once its least g is below 2^-40 times the
 // scene's size (touching, to rounding: its lower bound would never leave
-// zero). The penetration depth itself is penetration(Cylinder, Obb).
-constexpr double kEps = 1.0 / 64;
-constexpr int kMaxIter = 64;
+// zero). kEps = 1/64 and kMaxIter = 64 are detail::PlanarEpa's. The
+// penetration depth itself is penetration(Cylinder, Obb).
 
-// Circle j's body K_j and its polygon; coordinates (k, l) = (j + 1, j + 2).
+// Circle j's body K_j and its polygon (detail/planar_epa.hpp); coordinates
+// (k, l) = (j + 1, j + 2).
 class Circle {
  public:
   // The support points, counter-clockwise: along each axis direction both
@@ -426,11 +427,11 @@ class Circle {
   // `is[i]` = 1 / |u x a_i| (0 where u is along a_i to rounding).
   void init(const BoxSpace& s, int j, const double is[3], double size, Best& best) {
     s_ = &s;
-    tiny2_ = 0x1p-44 * size * (0x1p-44 * size);
+    epa_.start(0x1p-44 * size * (0x1p-44 * size));
     k_ = (j + 1) % 3, l_ = (j + 2) % 3;
-    uk_ = s.u[k_], ul_ = s.u[l_], uj_ = s.u[j], ek_ = s.e[k_], el_ = s.e[l_];
+    ru_ = {s.u[k_], s.u[l_], s.u[j]};
+    ek_ = s.e[k_], el_ = s.e[l_];
     midk_ = 0.5 * (s.P[k_] + s.Q[k_]), midl_ = 0.5 * (s.P[l_] + s.Q[l_]);
-    m_ = 0;
     // Axis direction q (counter-clockwise from (1, 0)): its normal, the
     // rectangle corners behind and ahead of it along the boundary.
     static constexpr double kN[4][2] = {{1, 0}, {0, 1}, {-1, 0}, {0, -1}};
@@ -441,7 +442,7 @@ class Circle {
     int low_q = 0;  // 0..3 an axis, 4 or 5 the direction across u (+ or -)
     auto axis = [&](int q) {
       const double c = kN[q][0], sn = kN[q][1];
-      const double t = c * uk_ + sn * ul_;
+      const double t = c * ru_.uk + sn * ru_.ul;
       // The cap: the one n . u picks; where n . u = 0 the side's segment
       // lies along the rectangle edge, and its ends go with the corners
       // (the cap behind along the tangent (-sn, c) with the corner behind).
@@ -449,27 +450,27 @@ class Circle {
       const Vec3& Xb = t > 0 ? s.Q : (t < 0 ? s.P : (q_behind ? s.Q : s.P));
       const Vec3& Xa = t > 0 ? s.Q : (t < 0 ? s.P : (q_behind ? s.P : s.Q));
       const double f = fq[q & 1];
-      const Pt w = scaled_rim(c, sn, f);
-      add(support(Xb, kBehind[q][0], kBehind[q][1], w));
-      add(support(Xa, kAhead[q][0], kAhead[q][1], w));
-      const double g = c * px_[m_ - 1] + sn * py_[m_ - 1];
+      const detail::PlanarPt w = ru_.scaled(c, sn, f);
+      epa_.add(support(Xb, kBehind[q][0], kBehind[q][1], w));
+      epa_.add(support(Xa, kAhead[q][0], kAhead[q][1], w));
+      const detail::PlanarPt pa = epa_.last();
+      const double g = c * pa.x + sn * pa.y;
       const bool lt = g < low;
       low = lt ? g : low;
       low_q = lt ? q : low_q;
     };
     // Across u: m = (u x a_j) / |u x a_j| = (-ul, uk) / |.|, in the
     // quadrant qm (strictly, when uk and ul are not zero); -m in qm + 2.
-    const bool split = is[j] > 0 && uk_ != 0 && ul_ != 0;
-    const double mk = -ul_ * is[j], ml = uk_ * is[j];
+    const bool split = is[j] > 0 && ru_.uk != 0 && ru_.ul != 0;
+    const double mk = -ru_.ul * is[j], ml = ru_.uk * is[j];
     auto across = [&](double sg) {
       const double vk = sg * mk, vl = sg * ml;
       const double sk = vk > 0 ? 1.0 : -1.0, sl = vl > 0 ? 1.0 : -1.0;
-      const Pt w = scaled_rim(vk, vl, s.r);  // |n x u| = 1
-      const Pt p = support(s.P, sk, sl, w), pq = support(s.Q, sk, sl, w);
+      const detail::PlanarPt w = ru_.scaled(vk, vl, s.r);  // |n x u| = 1
+      const detail::PlanarPt p = support(s.P, sk, sl, w), pq = support(s.Q, sk, sl, w);
       const bool p_first = -vl * p.x + vk * p.y <= -vl * pq.x + vk * pq.y;
-      const int i0 = m_ + (p_first ? 0 : 1), i1 = m_ + (p_first ? 1 : 0);
-      px_[i0] = p.x, py_[i0] = p.y, px_[i1] = pq.x, py_[i1] = pq.y;
-      m_ += 2;
+      epa_.add(p_first ? p : pq);
+      epa_.add(p_first ? pq : p);
       const double g = std::max(vk * p.x + vl * p.y, vk * pq.x + vl * pq.y);
       const bool lt = g < low;
       low = lt ? g : low;
@@ -490,7 +491,7 @@ class Circle {
       const double sg = low_q == 4 ? 1.0 : -1.0;
       offer(best, low_q < 4 ? kN[low_q][0] : sg * mk, low_q < 4 ? kN[low_q][1] : sg * ml, low);
     }
-    for (int i = 0; i < m_; ++i) edge(i);
+    epa_.close();
   }
 
   // EPA steps until (1 + kEps) times the nearest edge's distance reaches
@@ -498,101 +499,40 @@ class Circle {
   // `best`). The circles do not see each other's results, so that their
   // order (the box's axes' order) changes no answer.
   void refine(double bound, double floor, Best& best) {
-    constexpr double o1 = 1 / (1 + kEps);
-    Best own{s_};
-    own.o = bound;
-    for (int it = 0; it < kMaxIter; ++it) {
-      double dm = std::numeric_limits<double>::infinity();
-      for (int i = 0; i < m_; ++i) dm = d2_[i] < dm ? d2_[i] : dm;
-      const double ob = own.o * o1;
-      if (!(dm < ob * std::fabs(ob)) || !(own.o > floor)) break;
-      // Every edge at that distance (a tie is refined whole, so that a
-      // mirrored or reordered scene takes the same steps), the last first.
-      int tied[kMax], nt = 0;
-      for (int i = 0; i < m_; ++i)
-        if (d2_[i] == dm) tied[nt++] = i;
-      if (m_ + nt > kMax) break;
-      for (int q = nt - 1; q >= 0; --q) {
-        const int im = tied[q], i1 = im + 1 == m_ ? 0 : im + 1;
-        const double dx = px_[i1] - px_[im], dy = py_[i1] - py_[im];
-        const double il = 1 / std::sqrt(dx * dx + dy * dy);
-        const double c = dy * il, sn = -dx * il;  // the edge's outward normal
-        if (!(std::fabs(c) <= 1 && std::fabs(sn) <= 1)) return finish(own, bound, best);  // too short to have one
-        const Pt p = support(c, sn);
-        offer(own, c, sn, c * p.x + sn * p.y);
-        for (int i = m_; i > im + 1; --i) px_[i] = px_[i - 1], py_[i] = py_[i - 1], d2_[i] = d2_[i - 1];
-        px_[im + 1] = p.x, py_[im + 1] = p.y;
-        ++m_;
-        edge(im);
-        edge(im + 1);
-      }
-    }
-    finish(own, bound, best);
+    const detail::PlanarEpa::Least r = epa_.refine(bound, floor, [&](double c, double sn) { return support(c, sn); });
+    if (r.found) offer(best, r.c, r.sn, r.o);
   }
 
  private:
-  struct Pt {
-    double x, y;
-  };
-  static constexpr int kMax = 12 + kMaxIter + 12;  // the start, a step each, room for ties
-
-  // The rim's share of the support along unit n = (c, sn) (n_j = 0): the
-  // projection of n - (n.u) u, computed as u x (n x u), whose components
-  // do not cancel where n is near u (c - t uk would, and the rim term
-  // divides by the small |n - t u|). t1 = (n x u)_j; |n x u|^2 = uj^2 + t1^2.
-  Pt rim(double c, double sn, double t1) const {
-    const double uj2 = uj_ * uj_;
-    return {ul_ * t1 + uj2 * c, uj2 * sn - uk_ * t1};
-  }
   // K_j's support point with the cap X, the rectangle corner (sk ek, sl el)
-  // and the rim's share w (rim(), times r / |n x u|) given.
-  Pt support(const Vec3& X, double sk, double sl, Pt w) const {
+  // and the rim's share w (times r / |n x u|) given.
+  detail::PlanarPt support(const Vec3& X, double sk, double sl, detail::PlanarPt w) const {
     return {X[k_] + sk * ek_ + w.x, X[l_] + sl * el_ + w.y};
-  }
-  Pt scaled_rim(double c, double sn, double f) const {
-    const Pt w = rim(c, sn, c * ul_ - sn * uk_);
-    return {f * w.x, f * w.y};
   }
   // K_j's support point along any unit (c, sn). Where the support set is a
   // segment (n . u = 0: the side; c or sn = 0: a rectangle edge) its
   // midpoint, which a reflection or a swap of the caps maps to itself.
-  Pt support(double c, double sn) const {
-    const double t = c * uk_ + sn * ul_, t1 = c * ul_ - sn * uk_;
-    const double w = uj_ * uj_ + t1 * t1;
+  detail::PlanarPt support(double c, double sn) const {
+    const double t = c * ru_.uk + sn * ru_.ul, t1 = c * ru_.ul - sn * ru_.uk;
+    const double w = ru_.uj * ru_.uj + t1 * t1;
     const double f = w > 0x1p-100 ? s_->r / std::sqrt(w) : 0.0;
-    const Pt rw = rim(c, sn, t1);
+    const detail::PlanarPt rw = ru_.rim(c, sn, t1);
     const double sk = c > 0 ? 1.0 : (c < 0 ? -1.0 : 0.0), sl = sn > 0 ? 1.0 : (sn < 0 ? -1.0 : 0.0);
     const double xk = t > 0 ? s_->Q[k_] : (t < 0 ? s_->P[k_] : midk_);
     const double xl = t > 0 ? s_->Q[l_] : (t < 0 ? s_->P[l_] : midl_);
     return {xk + sk * ek_ + f * rw.x, xl + sl * el_ + f * rw.y};
   }
-  void finish(const Best& own, double bound, Best& best) const {
-    if (own.o < bound) best.offer(own.o, own.n);
-  }
-  void add(Pt p) { px_[m_] = p.x, py_[m_] = p.y, ++m_; }
   void offer(Best& best, double c, double sn, double g) const {
     Vec3 n{0, 0, 0};
     n[k_] = c, n[l_] = sn;
     best.offer(g, n);
   }
-  // Edge i (point i to point i + 1): its signed squared distance from the
-  // origin, cross * |cross| / length^2 (no square root; in the distances'
-  // order). An edge shorter than 2^-44 times the scene's size joins two
-  // points that are one to rounding (their line is noise: a cross product
-  // of nearly equal points cancels to 0): it is never the nearest, which
-  // is the polygon with those points merged, to rounding.
-  void edge(int i) {
-    const int i1 = i + 1 == m_ ? 0 : i + 1;
-    const double dx = px_[i1] - px_[i], dy = py_[i1] - py_[i];
-    const double l2 = dx * dx + dy * dy;
-    const double cr = px_[i] * py_[i1] - py_[i] * px_[i1];
-    d2_[i] = l2 > tiny2_ ? cr * std::fabs(cr) / l2 : std::numeric_limits<double>::infinity();
-  }
 
   const BoxSpace* s_ = nullptr;
-  int k_ = 1, l_ = 2, m_ = 0;
-  double uk_ = 0, ul_ = 0, uj_ = 0, ek_ = 0, el_ = 0, midk_ = 0, midl_ = 0, tiny2_ = 0;
-  double px_[kMax], py_[kMax], d2_[kMax];
+  int k_ = 1, l_ = 2;
+  detail::RimShare ru_;
+  double ek_ = 0, el_ = 0, midk_ = 0, midl_ = 0;
+  detail::PlanarEpa epa_;
 };
 
 Contact collide_consistent_scaled(const Cylinder& cyl, const Obb& box, bool refine) {

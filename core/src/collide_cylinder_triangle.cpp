@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "geomcheck/detail/frame.hpp"
+#include "geomcheck/detail/planar_epa.hpp"
 #include "geomcheck/detail/sign_filters.hpp"
 #include "geomcheck/detail/rim_edge.hpp"
 #include "geomcheck/detail/triangle_stages.hpp"
@@ -581,7 +582,8 @@ Contact collide_scaled(const Cylinder& cyl, const Triangle& tri, detail::TriCapS
 // than the answer, the cap and side x vertex normals were offered exactly,
 // and the depth is at most (1 + kEps) times the penetration depth (to
 // rounding). A circle also stops after kMaxIter steps and once its least g
-// is below 2^-40 times the scene's size (touching, to rounding).
+// is below 2^-40 times the scene's size (touching, to rounding). kEps =
+// 1/64 and kMaxIter = 64 are detail::PlanarEpa's (detail/planar_epa.hpp).
 //
 // Representation: the scene is taken from the axis's midpoint (a swap of
 // the caps changes no offset), each circle's frame is made from its edge's
@@ -591,8 +593,6 @@ Contact collide_scaled(const Cylinder& cyl, const Triangle& tri, detail::TriCapS
 // see each other's results: rotating or reversing the triangle's vertices,
 // or swapping the caps, gives the same circles, and a reflection of the
 // scene the reflected ones, bit for bit.
-constexpr double kEps = 1.0 / 64;
-constexpr int kMaxIter = 64;
 
 // The scene as offsets from the axis's midpoint.
 struct MidSpace {
@@ -720,55 +720,56 @@ void closed_forms(const MidSpace& s, const EdgeFrame* fr, MidBest& best) {
   }
 }
 
-// The circle of normals perpendicular to an edge: K in the frame (b1, b2).
+// The circle of normals perpendicular to an edge: K in the frame (b1, b2),
+// and its polygon (detail/planar_epa.hpp).
 class EdgeCircle {
  public:
   void init(const MidSpace& s, const EdgeFrame& f, MidBest& best) {
     f_ = &f;
     r_ = s.r;
-    tiny2_ = 0x1p-44 * s.size * (0x1p-44 * s.size);
+    epa_.start(0x1p-44 * s.size * (0x1p-44 * s.size));
     near_ = 0x1p-40 * s.size;
-    u1_ = dot(s.u, f.b1), u2_ = dot(s.u, f.b2), u3_ = dot(s.u, f.e);
+    ru_ = {dot(s.u, f.b1), dot(s.u, f.b2), dot(s.u, f.e)};
     P_ = {dot(s.P, f.b1), dot(s.P, f.b2)}, Q_ = {dot(s.Q, f.b1), dot(s.Q, f.b2)};
     mid_ = {0.5 * (P_.x + Q_.x), 0.5 * (P_.y + Q_.y)};
     for (int i = 0; i < 3; ++i) X_[i] = {dot(s.V[i], f.b1), dot(s.V[i], f.b2)};
-    m_ = 0;
     // 1 / |u x b1|, 1 / |u x b2|, 1 / |u x e|, each from the other two
     // components of u (1 - u_i^2 would cancel where u is near the axis).
     auto inv = [](double a, double b) {
       const double w = a * a + b * b;
       return w > 0x1p-100 ? 1 / std::sqrt(w) : 0.0;
     };
-    const double is1 = inv(u2_, u3_), is2 = inv(u1_, u3_), ise = inv(u1_, u2_);
+    const double is1 = inv(ru_.ul, ru_.uj), is2 = inv(ru_.uk, ru_.uj), ise = inv(ru_.uk, ru_.ul);
     static constexpr double kN[4][2] = {{1, 0}, {0, 1}, {-1, 0}, {0, -1}};
     const double fq[2] = {r_ * is1, r_ * is2};
     double low = kInf;
     Pt low_n{1, 0};
     auto axis = [&](int q) {
       const double c = kN[q][0], sn = kN[q][1];
-      const double t = c * u1_ + sn * u2_;
+      const double t = c * ru_.uk + sn * ru_.ul;
       // The cap n . u picks; where n . u = 0 the side's segment lies along
       // the tangent, and its ends go behind and ahead (as the box's).
       const bool q_behind = -sn * Q_.x + c * Q_.y < -sn * P_.x + c * P_.y;
       const Pt& Xb = t > 0 ? Q_ : (t < 0 ? P_ : (q_behind ? Q_ : P_));
       const Pt& Xa = t > 0 ? Q_ : (t < 0 ? P_ : (q_behind ? P_ : Q_));
-      const Pt w = scaled_rim(c, sn, fq[q & 1]);
+      const Pt w = ru_.scaled(c, sn, fq[q & 1]);
       // The triangle's support set along n: its vertices within `near_` of
       // the least n . X (the whole triangle along its face normal, where
       // rounding alone separates them), the ends along the tangent.
       int ib, ia;
       tri_ends(c, sn, ib, ia);
-      add({Xb.x + w.x - X_[ib].x, Xb.y + w.y - X_[ib].y});
-      add({Xa.x + w.x - X_[ia].x, Xa.y + w.y - X_[ia].y});
-      const double g = c * px_[m_ - 1] + sn * py_[m_ - 1];
+      epa_.add({Xb.x + w.x - X_[ib].x, Xb.y + w.y - X_[ib].y});
+      epa_.add({Xa.x + w.x - X_[ia].x, Xa.y + w.y - X_[ia].y});
+      const Pt pa = epa_.last();
+      const double g = c * pa.x + sn * pa.y;
       if (g < low) low = g, low_n = {c, sn};
     };
     // Across u: m = (-u2, u1) / |.| and -m.
-    const bool split = ise > 0 && u1_ != 0 && u2_ != 0;
-    const double mk = -u2_ * ise, ml = u1_ * ise;
+    const bool split = ise > 0 && ru_.uk != 0 && ru_.ul != 0;
+    const double mk = -ru_.ul * ise, ml = ru_.uk * ise;
     auto across = [&](double sg) {
       const double vk = sg * mk, vl = sg * ml;
-      const Pt w = scaled_rim(vk, vl, r_);  // |n x u| = 1
+      const Pt w = ru_.scaled(vk, vl, r_);  // |n x u| = 1
       int ib, ia;
       tri_ends(vk, vl, ib, ia);
       // Both caps' points, with the triangle's ends behind and ahead.
@@ -776,8 +777,8 @@ class EdgeCircle {
       const bool p_first = -vl * p.x + vk * p.y <= -vl * pq.x + vk * pq.y;
       const Pt& first = p_first ? p : pq;
       const Pt& second = p_first ? pq : p;
-      add({first.x - X_[ib].x, first.y - X_[ib].y});
-      add({second.x - X_[ia].x, second.y - X_[ia].y});
+      epa_.add({first.x - X_[ib].x, first.y - X_[ib].y});
+      epa_.add({second.x - X_[ia].x, second.y - X_[ia].y});
       const double g = std::max(vk * p.x + vl * p.y, vk * pq.x + vl * pq.y) -
                        std::min(std::min(vk * X_[0].x + vl * X_[0].y, vk * X_[1].x + vl * X_[1].y),
                                 vk * X_[2].x + vl * X_[2].y);
@@ -795,62 +796,20 @@ class EdgeCircle {
       for (int q = 0; q < 4; ++q) axis(q);
     }
     if (low < best.o) offer(best, low_n.x, low_n.y, low);
-    for (int i = 0; i < m_; ++i) edge(i);
+    epa_.close();
   }
 
   // EPA steps until (1 + kEps) times the nearest edge's distance reaches
   // the least of `bound` and this circle's own least overlap (offered to
   // `best`).
   void refine(double bound, double floor, MidBest& best) {
-    constexpr double o1 = 1 / (1 + kEps);
-    MidBest own{best.s};
-    own.o = bound;
-    for (int it = 0; it < kMaxIter; ++it) {
-      double dm = kInf;
-      for (int i = 0; i < m_; ++i) dm = d2_[i] < dm ? d2_[i] : dm;
-      const double ob = own.o * o1;
-      if (!(dm < ob * std::fabs(ob)) || !(own.o > floor)) break;
-      // Every edge at that distance (a tie is refined whole, so that a
-      // mirrored or reordered scene takes the same steps), the last first.
-      int tied[kMax], nt = 0;
-      for (int i = 0; i < m_; ++i)
-        if (d2_[i] == dm) tied[nt++] = i;
-      if (m_ + nt > kMax) break;
-      for (int q = nt - 1; q >= 0; --q) {
-        const int im = tied[q], i1 = im + 1 == m_ ? 0 : im + 1;
-        const double dx = px_[i1] - px_[im], dy = py_[i1] - py_[im];
-        const double il = 1 / std::sqrt(dx * dx + dy * dy);
-        const double c = dy * il, sn = -dx * il;  // the edge's outward normal
-        if (!(std::fabs(c) <= 1 && std::fabs(sn) <= 1)) return finish(own, bound, best);
-        const Pt p = support(c, sn);
-        offer(own, c, sn, c * p.x + sn * p.y);
-        for (int i = m_; i > im + 1; --i) px_[i] = px_[i - 1], py_[i] = py_[i - 1], d2_[i] = d2_[i - 1];
-        px_[im + 1] = p.x, py_[im + 1] = p.y;
-        ++m_;
-        edge(im);
-        edge(im + 1);
-      }
-    }
-    finish(own, bound, best);
+    const detail::PlanarEpa::Least r = epa_.refine(bound, floor, [&](double c, double sn) { return support(c, sn); });
+    if (r.found) offer(best, r.c, r.sn, r.o);
   }
 
  private:
-  struct Pt {
-    double x, y;
-  };
-  static constexpr int kMax = 12 + kMaxIter + 12;
+  using Pt = detail::PlanarPt;
 
-  // The rim's share of the support along unit n = (c, sn): the projection
-  // of n - (n.u) u, as u x (n x u) (no cancellation where n is near u);
-  // t1 = (n x u) . e up to sign; |n x u|^2 = u3^2 + t1^2.
-  Pt rim(double c, double sn, double t1) const {
-    const double u32 = u3_ * u3_;
-    return {u2_ * t1 + u32 * c, u32 * sn - u1_ * t1};
-  }
-  Pt scaled_rim(double c, double sn, double f) const {
-    const Pt w = rim(c, sn, c * u2_ - sn * u1_);
-    return {f * w.x, f * w.y};
-  }
   // The triangle's vertices at the ends (behind, ahead along the tangent
   // (-sn, c)) of its support set along (c, sn) in K, -X: the vertices
   // within `near_` of the least (c, sn) . X.
@@ -883,10 +842,10 @@ class EdgeCircle {
   // value) its midpoint, which a reflection or a swap of the caps or of the
   // vertices maps to itself.
   Pt support(double c, double sn) const {
-    const double t = c * u1_ + sn * u2_, t1 = c * u2_ - sn * u1_;
-    const double w = u3_ * u3_ + t1 * t1;
+    const double t = c * ru_.uk + sn * ru_.ul, t1 = c * ru_.ul - sn * ru_.uk;
+    const double w = ru_.uj * ru_.uj + t1 * t1;
     const double f = w > 0x1p-100 ? r_ / std::sqrt(w) : 0.0;
-    const Pt rw = rim(c, sn, t1);
+    const Pt rw = ru_.rim(c, sn, t1);
     const Pt& X = t > 0 ? Q_ : (t < 0 ? P_ : mid_);
     double v[3];
     for (int i = 0; i < 3; ++i) v[i] = c * X_[i].x + sn * X_[i].y;
@@ -896,27 +855,13 @@ class EdgeCircle {
     const double tx = 0.5 * (X_[ib].x + X_[ia].x), ty = 0.5 * (X_[ib].y + X_[ia].y);
     return {X.x + f * rw.x - tx, X.y + f * rw.y - ty};
   }
-  void finish(const MidBest& own, double bound, MidBest& best) const {
-    if (own.o < bound) best.offer(own.o, own.n);
-  }
-  void add(Pt p) { px_[m_] = p.x, py_[m_] = p.y, ++m_; }
   void offer(MidBest& best, double c, double sn, double g) const { best.offer(g, c * f_->b1 + sn * f_->b2); }
-  // Edge i (point i to point i + 1): its signed squared distance from the
-  // origin, cross * |cross| / length^2; an edge shorter than 2^-44 times the
-  // scene's size is never the nearest (its line is rounding noise).
-  void edge(int i) {
-    const int i1 = i + 1 == m_ ? 0 : i + 1;
-    const double dx = px_[i1] - px_[i], dy = py_[i1] - py_[i];
-    const double l2 = dx * dx + dy * dy;
-    const double cr = px_[i] * py_[i1] - py_[i] * px_[i1];
-    d2_[i] = l2 > tiny2_ ? cr * std::fabs(cr) / l2 : kInf;
-  }
 
   const EdgeFrame* f_ = nullptr;
-  double r_ = 0, u1_ = 0, u2_ = 0, u3_ = 0, tiny2_ = 0, near_ = 0;
+  double r_ = 0, near_ = 0;
+  detail::RimShare ru_;  // u in the frame (b1, b2, e)
   Pt P_{0, 0}, Q_{0, 0}, mid_{0, 0}, X_[3];
-  int m_ = 0;
-  double px_[kMax], py_[kMax], d2_[kMax];
+  detail::PlanarEpa epa_;
 };
 
 // The consistent contact of a cylinder and a proper triangle (all three
