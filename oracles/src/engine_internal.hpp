@@ -2,6 +2,7 @@
 #pragma once
 
 #include <array>
+#include <optional>
 
 #include "geomcheck/oracles/engine.hpp"
 
@@ -25,5 +26,14 @@ bool origin_strictly_inside(const std::array<QVec, 4>& w);
 /// check_overlap; `trust_members` skips containment (points built inside by
 /// construction, e.g. of a swept hull which has no containment test).
 bool check_overlap_impl(const ConvexShape& a, const ConvexShape& b, const OverlapCertificate& c, bool trust_members);
+
+/// The point s.points[i] + radius * v built for a support point whose
+/// radial direction the search gave as w = hi + lo (two doubles a
+/// coordinate), exactly inside the shape: |v| <= 1 checked exactly, and for
+/// a disc v = a x t, exactly perpendicular to the axis a. Integer arithmetic
+/// on `bits`-bit approximations (no rational canonicalisation); nothing when
+/// the shape's data is not dyadic or the exact norm check fails (the caller
+/// then builds the point in rationals).
+std::optional<QVec> radial_point_dyadic(const ConvexShape& s, int i, const Vec3& hi, const Vec3& lo, int bits);
 
 }  // namespace geomcheck::oracle

@@ -13,6 +13,7 @@
 #include <algorithm>
 #include <cmath>
 #include <array>
+#include <type_traits>
 #include <vector>
 
 #include "engine_dd.hpp"
@@ -152,7 +153,8 @@ Sup<T> inner_sup(const ShapeT<T>& s) {
 }
 
 /// The support point built inside the shape, exactly: core point plus
-/// radius * w, w projected onto the disc plane (disc) and shrunk to norm <= 1.
+/// radius * w, w projected onto the disc plane (disc) and shrunk to norm <= 1
+/// (in doubles and double-double: radial_point_dyadic).
 template <class T>
 QVec sup_point_q(const ConvexShape& s, const Sup<T>& sp) {
   if (sp.i < 0) return inner_point(s);  // -1: the inner point
@@ -163,6 +165,17 @@ QVec sup_point_q(const ConvexShape& s, const Sup<T>& sp) {
   }
   QVec base = s.points[sp.i];
   if (s.round == ConvexShape::Round::None || s.radius == 0 || is_zero(sp.w)) return base;
+  if constexpr (std::is_same_v<T, DD> || std::is_same_v<T, double>) {
+    // In integers where the data is dyadic (the common case).
+    Vec3 hi, lo;
+    if constexpr (std::is_same_v<T, DD>) {
+      hi = {sp.w.x.hi, sp.w.y.hi, sp.w.z.hi};
+      lo = {sp.w.x.lo, sp.w.y.lo, sp.w.z.lo};
+    } else {
+      hi = {sp.w.x, sp.w.y, sp.w.z};
+    }
+    if (std::optional<QVec> x = radial_point_dyadic(s, sp.i, hi, lo, bits_of<T>() + 8)) return *x;
+  }
   QVec w = exact_q(sp.w);
   if (s.round == ConvexShape::Round::Disc) w = w - (dot(w, s.axis) / dot(s.axis, s.axis)) * s.axis;
   Q ww = dot(w, w);

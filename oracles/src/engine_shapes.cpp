@@ -4,6 +4,9 @@
 // point, the sign of h(n) - d, the sign of h_A(n) + h_B(-n). Square roots
 // are never taken; a term r*sqrt(u) is compared by squaring with its sign
 // handled first (sign_sqrt below).
+#include <gmp.h>
+
+#include <algorithm>
 #include <cmath>
 #include <initializer_list>
 #include <stdexcept>
@@ -387,6 +390,149 @@ Q pair_scale(const ConvexShape& a, const ConvexShape& b) {
     s = std::max(s, sh->radius);
   }
   return s;
+}
+
+// ---- support points in integers ---------------------------------------------
+
+namespace {
+
+/// Scratch integers of this thread (GMP keeps their limbs between calls).
+struct RadialScratch {
+  mpz_t A[3], W[3], C[3], T[3], V[3], aa, vv, tmp;
+  RadialScratch() {
+    for (auto* v : {A, W, C, T, V})
+      for (int k = 0; k < 3; ++k) mpz_init(v[k]);
+    mpz_init(aa), mpz_init(vv), mpz_init(tmp);
+  }
+  ~RadialScratch() {
+    for (auto* v : {A, W, C, T, V})
+      for (int k = 0; k < 3; ++k) mpz_clear(v[k]);
+    mpz_clear(aa), mpz_clear(vv), mpz_clear(tmp);
+  }
+};
+
+/// x = num / 2^e (e >= 0 when the denominator is a power of two): the
+/// exponent, or -1 when the denominator is not a power of two.
+long dyadic_exponent(const Q& x) {
+  const mpz_srcptr den = mpq_denref(x.backend().data());
+  const mp_bitcnt_t e = mpz_scan1(den, 0);
+  return mpz_sizeinbase(den, 2) == e + 1 ? static_cast<long>(e) : -1;
+}
+
+/// out = round(x * 2^s) towards zero, for a double x.
+void scaled_double(mpz_t out, double x, long s) {
+  if (x == 0) { mpz_set_ui(out, 0); return; }
+  int k = 0;
+  const double m = std::frexp(x, &k);  // x = m 2^k, 0.5 <= |m| < 1
+  // x * 2^s = (m 2^53) * 2^(k + s - 53)
+  mpz_set_d(out, std::ldexp(m, 53));
+  const long sh = k + s - 53;
+  if (sh >= 0) mpz_mul_2exp(out, out, static_cast<mp_bitcnt_t>(sh));
+  else mpz_tdiv_q_2exp(out, out, static_cast<mp_bitcnt_t>(-sh));
+}
+
+/// out = a x b.
+void zcross3(mpz_t* out, mpz_t* a, mpz_t* b, mpz_t tmp) {
+  mpz_mul(out[0], a[1], b[2]), mpz_mul(tmp, a[2], b[1]), mpz_sub(out[0], out[0], tmp);
+  mpz_mul(out[1], a[2], b[0]), mpz_mul(tmp, a[0], b[2]), mpz_sub(out[1], out[1], tmp);
+  mpz_mul(out[2], a[0], b[1]), mpz_mul(tmp, a[1], b[0]), mpz_sub(out[2], out[2], tmp);
+}
+void zdot3(mpz_t out, mpz_t* a, mpz_t* b, mpz_t tmp) {
+  mpz_mul(out, a[0], b[0]);
+  mpz_mul(tmp, a[1], b[1]), mpz_add(out, out, tmp);
+  mpz_mul(tmp, a[2], b[2]), mpz_add(out, out, tmp);
+}
+/// x <= 2^e for x >= 0.
+bool at_most_pow2(mpz_t x, long e) {
+  if (mpz_sgn(x) == 0) return true;
+  const long n = static_cast<long>(mpz_sizeinbase(x, 2));  // 2^(n-1) <= x < 2^n
+  if (n <= e) return true;
+  return n == e + 1 && mpz_scan1(x, 0) == static_cast<mp_bitcnt_t>(e);
+}
+/// Q of x / 2^e.
+Q q_of_scaled(mpz_t x, long e) {
+  Q out;
+  mpq_set_z(out.backend().data(), x);
+  if (e > 0) mpq_div_2exp(out.backend().data(), out.backend().data(), static_cast<mp_bitcnt_t>(e));
+  else if (e < 0) mpq_mul_2exp(out.backend().data(), out.backend().data(), static_cast<mp_bitcnt_t>(-e));
+  return out;
+}
+
+}  // namespace
+
+std::optional<QVec> radial_point_dyadic(const ConvexShape& s, int i, const Vec3& hi, const Vec3& lo, int bits) {
+  const double mx = std::max({std::abs(hi.x), std::abs(hi.y), std::abs(hi.z)});
+  if (!(mx > 0) || !std::isfinite(mx) || bits < 40 || bits > 400) return std::nullopt;
+  thread_local RadialScratch z;
+  // w ~ W / 2^sw, W of about `bits` bits.
+  int kw = 0;
+  std::frexp(mx, &kw);
+  const long sw = bits - kw;
+  const double h[3] = {hi.x, hi.y, hi.z}, l[3] = {lo.x, lo.y, lo.z};
+  for (int k = 0; k < 3; ++k) {
+    scaled_double(z.W[k], h[k], sw);
+    scaled_double(z.tmp, l[k], sw);
+    mpz_add(z.W[k], z.W[k], z.tmp);
+  }
+  // The shrink 1 - 2^-(bits - 14), only where the norm check needs it (an
+  // exact unit vector stays exact: a touching point found by the search
+  // stays on the boundary).
+  const mp_bitcnt_t shrink = static_cast<mp_bitcnt_t>(bits - 14);
+  auto shrunk = [&](mpz_t* X) {
+    for (int k = 0; k < 3; ++k) {
+      mpz_tdiv_q_2exp(z.tmp, X[k], shrink);
+      mpz_sub(X[k], X[k], z.tmp);
+    }
+  };
+  auto norm_ok = [&](mpz_t* X, long sx) {
+    zdot3(z.vv, X, X, z.tmp);
+    return at_most_pow2(z.vv, 2 * sx);
+  };
+  long sv = sw;  // v = V / 2^sv
+  mpz_t* V = z.W;
+  if (s.round == ConvexShape::Round::Disc) {
+    // a = A / 2^ea.
+    const Q* ac[3] = {&s.axis.x, &s.axis.y, &s.axis.z};
+    long ea = 0;
+    for (const Q* c : ac) {
+      const long e = dyadic_exponent(*c);
+      if (e < 0) return std::nullopt;
+      ea = std::max(ea, e);
+    }
+    for (int k = 0; k < 3; ++k)
+      mpz_mul_2exp(z.A[k], mpq_numref(ac[k]->backend().data()),
+                   static_cast<mp_bitcnt_t>(ea - dyadic_exponent(*ac[k])));
+    zdot3(z.aa, z.A, z.A, z.tmp);
+    if (mpz_sgn(z.aa) == 0) return std::nullopt;
+    zdot3(z.vv, z.W, z.A, z.tmp);
+    const bool perpendicular = mpz_sgn(z.vv) == 0;
+    if (!(perpendicular && norm_ok(z.W, sw))) {
+      // t = (w x a) / (a . a) ~ T / 2^st: C = W x A is (w x a) 2^(sw + ea),
+      // A.A is (a.a) 2^(2 ea), so T = C 2^K / (A.A) is t 2^(sw - ea + K);
+      // v = a x t = (A x T) / 2^(sw + K).
+      zcross3(z.C, z.W, z.A, z.tmp);
+      const long cbits = static_cast<long>(std::max(
+          {mpz_sizeinbase(z.C[0], 2), mpz_sizeinbase(z.C[1], 2), mpz_sizeinbase(z.C[2], 2)}));
+      const long K = std::max(0L, bits + static_cast<long>(mpz_sizeinbase(z.aa, 2)) - cbits);
+      for (int k = 0; k < 3; ++k) {
+        mpz_mul_2exp(z.T[k], z.C[k], static_cast<mp_bitcnt_t>(K));
+        mpz_tdiv_q(z.T[k], z.T[k], z.aa);
+      }
+      zcross3(z.V, z.A, z.T, z.tmp);
+      V = z.V;
+      sv = sw + K;
+      if (!norm_ok(V, sv)) {
+        shrunk(z.T);
+        zcross3(z.V, z.A, z.T, z.tmp);
+        if (!norm_ok(V, sv)) return std::nullopt;
+      }
+    }
+  } else if (!norm_ok(z.W, sw)) {
+    shrunk(z.W);  // towards zero coordinate by coordinate: only shorter
+    if (!norm_ok(z.W, sw)) return std::nullopt;
+  }
+  const QVec v{q_of_scaled(V[0], sv), q_of_scaled(V[1], sv), q_of_scaled(V[2], sv)};
+  return s.points[i] + s.radius * v;
 }
 
 }  // namespace geomcheck::oracle

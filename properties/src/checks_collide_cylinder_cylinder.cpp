@@ -115,7 +115,7 @@ void hold_to_truth(Evaluation& e, const CylinderCylinderCase& c, const Contact& 
   // has no error of its own (consistency holds the depth to the overlap
   // along it); the depth only fails below the penetration depth.
   const oracle::QCylinder qa = oracle::to_q(c.a), qb = oracle::to_q(c.b);
-  std::optional<oracle::PenetrationResult> pd;
+  std::optional<oracle::PenetrationResult> pd = truth.penetration;
   const Score m = score_contact(ct, e.truth_hit, truth.verdict, qa, qb, sa, sb, e.scale, pd);
   e.unit_err = m.unit, e.depth_err = m.depth, e.point_err = m.point, e.depth_ratio = m.ratio;
   e.depth_ratio_lo = m.ratio_lo;

@@ -73,10 +73,20 @@ PolytopeTruth polytope_truth(const oracle::ConvexShape& cyl, const oracle::Conve
   oracle::EngineOptions opt;
   opt.certificates = false;
   // Refined to 1e-20 * scale where separated, and where overlapping only if
-  // the overlap may be within 2 band (that refinement runs EPA). One call.
+  // the overlap may be within 2 band: that refinement (EPA) is classify's,
+  // done here so that its answer is kept for the contact's scoring.
   opt.rel_width = 1e-20;
-  opt.refine_overlap_within = 2 * band;
-  const oracle::DistanceResult d = oracle::classify(cyl, shape, opt);
+  opt.refine_overlap_within = Q(-1);
+  oracle::DistanceResult d = oracle::classify(cyl, shape, opt);
+  if (d.verdict == Verdict::Overlapping && d.distance.hi - d.distance.lo > oracle::pair_scale(cyl, shape) * oracle::to_q(opt.rel_width) &&
+      !(Q(-d.distance.hi) > 2 * band)) {
+    oracle::PenetrationResult p = oracle::penetration(cyl, shape, opt.rel_width, opt.double_double);
+    if (p.overlapping && p.depth.hi - p.depth.lo < d.distance.hi - d.distance.lo) {
+      d.distance = {Q(-p.depth.hi), Q(-p.depth.lo)};
+      d.note += " depth: " + p.note;
+    }
+    t.penetration = std::move(p);
+  }
   t.verdict = d.verdict;
   t.signed_distance = d.verdict == Verdict::Touching ? oracle::point(Q(0)) : d.distance;
   t.text = std::string(oracle::to_string(t.verdict)) + " signed_distance=" + oracle::to_string(t.signed_distance);
@@ -160,7 +170,7 @@ void score_polytope_contacts(Evaluation& e, const Contact& mine, const Contact* 
                              const oracle::QCylinder& qcyl, const oracle::ConvexShape& cyl,
                              const oracle::ConvexShape& shape, double depth_bound,
                              const std::function<Q(Vec3)>& outside_b, bool upper_bound) {
-  std::optional<oracle::PenetrationResult> pd;
+  std::optional<oracle::PenetrationResult> pd = truth.penetration;
   std::string wide;
   const ContactErrors m = score_polytope_contact(mine, e.truth_hit, truth, qcyl, cyl, shape, e.scale, depth_bound, pd,
                                                  outside_b, &wide, upper_bound);

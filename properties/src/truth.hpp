@@ -44,6 +44,10 @@ struct PolytopeTruth {
   /// -2 band; a deeper overlap keeps that first (wide) enclosure.
   oracle::QInterval signed_distance;
   std::string text;  ///< human readable
+  /// The certified penetration depth at 1e-20 * scale where the refinement
+  /// above computed it (a shallow overlap): the contact's scoring takes it
+  /// instead of asking the engine again.
+  std::optional<oracle::PenetrationResult> penetration;
 };
 
 /// The engine's answer for `shape` against the cylinder: the verdict, and
