@@ -7,6 +7,7 @@
 #include <string>
 #include <sstream>
 
+#include "engine_interval.hpp"
 #include "engine_search.hpp"
 
 namespace geomcheck::oracle {
@@ -182,33 +183,77 @@ ZPoint to_z(const QVec& p) {
   return {{num(p.x), num(p.y), num(p.z)}, den};
 }
 
+/// One-ulp-wide double enclosure of a rational (mpq_get_d truncates towards
+/// zero); false when it does not fit a finite double.
+bool enclose(const Q& q, Iv& out) {
+  const double d = mpq_get_d(q.backend().data());
+  if (!std::isfinite(d)) return false;
+  const int s = q.sign();
+  out = s > 0 ? Iv{d, up(d)} : (s < 0 ? Iv{dn(d), d} : Iv{0, 0});
+  return true;
+}
+
 /// Smallest face distance of a surface around the origin, certified, or
 /// nothing when the surface is not closed and consistently oriented or a face
 /// does not have the origin strictly on its inner side. Faces are visited in
 /// the given order: the first one's exact distance (bracketed) is the
-/// candidate bound, every other face is checked against it with integers
-/// only. A point is N / den; a face's distance is det(N_a, N_b, N_c) / |M|,
-/// M = den_a (N_b x N_c) + den_c (N_a x N_b) + den_b (N_c x N_a).
+/// candidate bound; every other face is first checked in interval arithmetic
+/// on double enclosures of the points (its orientation determinant certainly
+/// positive and its distance certainly at least the bound), and only where
+/// that cannot decide, with integers: a point is N / den; a face's distance
+/// is det(N_a, N_b, N_c) / |M|, M = den_a (N_b x N_c) + den_c (N_a x N_b) +
+/// den_b (N_c x N_a).
 std::optional<Q> surface_lower_bound(const std::vector<QVec>& points, const std::vector<std::array<int, 3>>& faces,
                                      std::string& why) {
-  std::map<std::pair<int, int>, int> edge_count;
+  // Closed and consistently oriented: every directed edge once, and its
+  // reverse once.
+  std::vector<std::pair<int, int>> edges;
+  edges.reserve(faces.size() * 3);
   for (const auto& f : faces) {
     for (int k = 0; k < 3; ++k) {
       if (f[k] < 0 || f[k] >= static_cast<int>(points.size())) { why = "vertex index out of range"; return {}; }
-      ++edge_count[{f[k], f[(k + 1) % 3]}];
+      edges.emplace_back(f[k], f[(k + 1) % 3]);
     }
   }
-  for (const auto& [ed, n] : edge_count) {
-    if (n != 1) { why = "edge used twice"; return {}; }
-    auto rev = edge_count.find({ed.second, ed.first});
-    if (rev == edge_count.end() || rev->second != 1) { why = "open surface"; return {}; }
+  std::sort(edges.begin(), edges.end());
+  for (std::size_t i = 0; i < edges.size(); ++i) {
+    if (i + 1 < edges.size() && edges[i + 1] == edges[i]) { why = "edge used twice"; return {}; }
+    if (!std::binary_search(edges.begin(), edges.end(), std::make_pair(edges[i].second, edges[i].first))) {
+      why = "open surface";
+      return {};
+    }
   }
-  std::vector<ZPoint> W(points.size());
-  for (std::size_t i = 0; i < points.size(); ++i) W[i] = to_z(points[i]);
+  std::vector<std::optional<ZPoint>> W(points.size());
+  auto zpoint = [&](int i) -> const ZPoint& {
+    if (!W[i]) W[i] = to_z(points[i]);
+    return *W[i];
+  };
+  std::vector<IV3> box(points.size());
+  std::vector<char> boxed(points.size(), 0);  // 1 enclosed, 2 not representable
+  auto enclosed = [&](int i) {
+    if (!boxed[i]) boxed[i] = enclose(points[i].x, box[i].x) && enclose(points[i].y, box[i].y) &&
+                                      enclose(points[i].z, box[i].z) ? 1 : 2;
+    return boxed[i] == 1;
+  };
   Z lo_num, lo_den;  // lo = lo_num / lo_den, lo_den > 0
   bool have_lo = false;
+  double lo_up = 0;  // a double at least lo
   for (const auto& f : faces) {
-    const ZPoint &a = W[f[0]], &b = W[f[1]], &c = W[f[2]];
+    if (have_lo && std::isfinite(lo_up) && enclosed(f[0]) && enclosed(f[1]) && enclosed(f[2])) {
+      const IV3 &a = box[f[0]], &b = box[f[1]], &c = box[f[2]];
+      // det(a, b, c) = a . (b x c) = n . a with n = (b - a) x (c - a); the
+      // face's distance is det / |n|.
+      const Iv det = dot(a, cross(b, c));
+      const IV3 n = cross(b - a, c - a);
+      const Iv nn = dot(n, n);
+      // det / |n| >= lo  <=  det.lo > 0 and det.lo^2 >= lo_up^2 nn.hi.
+      if (det.lo > 0 && nn.hi < INFINITY) {
+        const Iv l2 = Iv::exact(det.lo) * Iv::exact(det.lo);
+        const Iv r2 = Iv::exact(lo_up) * Iv::exact(lo_up) * Iv::exact(nn.hi);
+        if (l2.lo >= r2.hi) continue;
+      }
+    }
+    const ZPoint &a = zpoint(f[0]), &b = zpoint(f[1]), &c = zpoint(f[2]);
     const Z det = zdot(a.n, zcross(b.n, c.n));
     if (det <= 0) { why = "face through or behind the origin"; return {}; }
     const ZVec M = zadd(zadd(zscale(a.den, zcross(b.n, c.n)), zscale(c.den, zcross(a.n, b.n))), zscale(b.den, zcross(c.n, a.n)));
@@ -222,6 +267,7 @@ std::optional<Q> surface_lower_bound(const std::vector<QVec>& points, const std:
     lo_num = mp::numerator(d);
     lo_den = mp::denominator(d);
     have_lo = true;
+    lo_up = to_double_up(d);
   }
   if (!have_lo) { why = "no face"; return {}; }
   return Q(lo_num) / Q(lo_den);
