@@ -495,10 +495,39 @@ bool enclosing_tet(const ShapeT<T>& A, const ShapeT<T>& B, std::vector<Vert<T>> 
     return dot(b - a, cross(c - a, d - a));
   };
   const V3<T> o{};
+  // A prefilter in doubles: a tetrahedron whose barycentric volumes
+  // certainly have both signs cannot hold the origin (its smallest weight is
+  // negative, so T's scores below would reject it too). The doubles are
+  // within a relative 2^-53 of T's values; a 3x3 determinant of differences
+  // of points of norm <= M then errs by less than about 700 * 2^-53 M^3,
+  // bounded here by 2^-36 M^3 (the bound only matters between 2^-300 and
+  // 2^300, where no cube under- or overflows).
+  std::vector<V3<double>> wd;
+  double M = 0;
+  if constexpr (!std::is_same_v<T, double>) {
+    for (const auto& v : cand) {
+      wd.push_back({static_cast<double>(v.w.x), static_cast<double>(v.w.y), static_cast<double>(v.w.z)});
+      M = std::max({M, std::abs(wd.back().x), std::abs(wd.back().y), std::abs(wd.back().z)});
+    }
+  }
+  const bool prefilter = M > 0x1p-300 && M < 0x1p300;
+  const double err = prefilter ? 0x1p-36 * M * M * M : 0.0;
+  auto outside = [&](int i, int j, int k, int l) {
+    const V3<double> od{};
+    const V3<double>&a = wd[i], &b = wd[j], &c = wd[k], &d = wd[l];
+    auto vd = [](const V3<double>& p, const V3<double>& q, const V3<double>& r, const V3<double>& t) {
+      return dot(q - p, cross(r - p, t - p));
+    };
+    const double v[4] = {vd(od, b, c, d), vd(a, od, c, d), vd(a, b, od, d), vd(a, b, c, od)};
+    bool pos = false, neg = false;
+    for (double x : v) pos = pos || x > err, neg = neg || x < -err;
+    return pos && neg;
+  };
   for (int i = 0; i < n; ++i)
     for (int j = i + 1; j < n; ++j)
       for (int k = j + 1; k < n; ++k)
         for (int l = k + 1; l < n; ++l) {
+          if (prefilter && outside(i, j, k, l)) continue;
           const V3<T>&a = cand[i].w, &b = cand[j].w, &c = cand[k].w, &d = cand[l].w;
           const T v = vol(a, b, c, d);
           // Flat (or repeated-vertex) tetrahedra: rounding-level volume.
