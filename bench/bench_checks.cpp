@@ -16,11 +16,15 @@
 // the overlapping pairs among the first 1000 campaign cases of box, triangle
 // and cylinder.
 //   build/release/bench/bench_checks [--benchmark_filter=obb]
+//   GEOMCHECK_BENCH_SLOWEST=10 build/release/bench/bench_checks ...  (also
+//   lists the slowest cases of each "after" run)
 #include <benchmark/benchmark.h>
 
 #include <time.h>
 
 #include <cstdio>
+#include <cstdlib>
+#include <tuple>
 #include <algorithm>
 #include <map>
 #include <string>
@@ -76,10 +80,16 @@ void bm_check(benchmark::State& state, bool after, int n) {
   std::map<std::string, int> stages;
   std::map<std::string, int> stage_cases;  // these two count the invalid inputs too
   std::map<std::string, double> stage_seconds;
+  // GEOMCHECK_BENCH_SLOWEST=<n>: the n slowest cases of the "after" run
+  // (index in the set, CPU time, stage, the truth's text), for profiling.
+  const char* slow_env = std::getenv("GEOMCHECK_BENCH_SLOWEST");
+  const int slowest = after && slow_env ? std::atoi(slow_env) : 0;
+  std::vector<std::tuple<double, std::size_t, std::string, std::string>> slow;
   const double t0 = cpu_seconds();
   std::size_t done = 0;
   for (auto _ : state) {
-    const auto& c = cases[done % cases.size()];
+    const std::size_t index = done % cases.size();
+    const auto& c = cases[index];
     ++done;
     const double c0 = cpu_seconds();
     oracle::reset_deepest_stage();
@@ -91,8 +101,13 @@ void bm_check(benchmark::State& state, bool after, int n) {
     if (e.valid) ++stages[stage];
     ++stage_cases[stage];
     stage_seconds[stage] += cpu_seconds() - c0;
+    if (slowest > 0) slow.emplace_back(cpu_seconds() - c0, index, stage, e.truth_text);
     benchmark::DoNotOptimize(e.truth_hit);
   }
+  std::sort(slow.begin(), slow.end(), [](const auto& x, const auto& y) { return std::get<0>(x) > std::get<0>(y); });
+  for (int i = 0; i < slowest && i < static_cast<int>(slow.size()); ++i)
+    std::printf("slowest %s #%zu: %.2f ms, %s: %s\n", info(Q).name, std::get<1>(slow[i]), 1e3 * std::get<0>(slow[i]),
+                std::get<2>(slow[i]).c_str(), std::get<3>(slow[i]).substr(0, 400).c_str());
   const double s = cpu_seconds() - t0;
   state.SetItemsProcessed(static_cast<std::int64_t>(done));
   state.counters["failures"] = failures;

@@ -531,8 +531,32 @@ std::optional<QVec> radial_point_dyadic(const ConvexShape& s, int i, const Vec3&
     shrunk(z.W);  // towards zero coordinate by coordinate: only shorter
     if (!norm_ok(z.W, sw)) return std::nullopt;
   }
-  const QVec v{q_of_scaled(V[0], sv), q_of_scaled(V[1], sv), q_of_scaled(V[2], sv)};
-  return s.points[i] + s.radius * v;
+  // x = base + r v in integers too where base and r are dyadic: base =
+  // B / 2^eb, r = R / 2^er, x = (B 2^(E - eb) + R V 2^(E - er - sv)) / 2^E.
+  const QVec& base = s.points[i];
+  const long er = dyadic_exponent(s.radius);
+  long eb = 0;
+  for (const Q* c : {&base.x, &base.y, &base.z}) {
+    const long e = dyadic_exponent(*c);
+    eb = e < 0 || eb < 0 ? -1 : std::max(eb, e);
+  }
+  if (er < 0 || eb < 0) {
+    const QVec v{q_of_scaled(V[0], sv), q_of_scaled(V[1], sv), q_of_scaled(V[2], sv)};
+    return base + s.radius * v;
+  }
+  const long E = std::max(eb, er + sv);
+  const Q* bc[3] = {&base.x, &base.y, &base.z};
+  QVec out;
+  Q* oc[3] = {&out.x, &out.y, &out.z};
+  for (int k = 0; k < 3; ++k) {
+    mpz_mul(z.C[k], mpq_numref(s.radius.backend().data()), V[k]);
+    mpz_mul_2exp(z.C[k], z.C[k], static_cast<mp_bitcnt_t>(E - er - sv));
+    mpz_mul_2exp(z.tmp, mpq_numref(bc[k]->backend().data()),
+                 static_cast<mp_bitcnt_t>(E - dyadic_exponent(*bc[k])));
+    mpz_add(z.C[k], z.C[k], z.tmp);
+    *oc[k] = q_of_scaled(z.C[k], E);
+  }
+  return out;
 }
 
 }  // namespace geomcheck::oracle
