@@ -2,7 +2,9 @@
 // certified inner polytope) and time of impact (conservative advancement,
 // then separation/overlap certificates at both ends of the interval).
 #include <algorithm>
+#include <cstdint>
 #include <map>
+#include <unordered_map>
 #include <optional>
 #include <string>
 #include <sstream>
@@ -26,6 +28,24 @@ struct Face {
   double dd;  // the distance and the unit normal, rounded, for the scans
   V3<double> nd;
   bool alive = true;
+};
+
+/// The face on the left of each directed edge (a, b) of the polytope, keyed
+/// by (a, b) packed in 64 bits; only looked up, never iterated, so the
+/// container's order cannot reach an answer.
+struct EdgeMap {
+  std::unordered_map<std::uint64_t, int> m;
+  static std::uint64_t key(const std::pair<int, int>& e) {
+    return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(e.first)) << 32) | static_cast<std::uint32_t>(e.second);
+  }
+  int& operator[](const std::pair<int, int>& e) { return m[key(e)]; }
+  /// The face id, or -1.
+  int find(const std::pair<int, int>& e) const {
+    const auto it = m.find(key(e));
+    return it == m.end() ? -1 : it->second;
+  }
+  void erase(const std::pair<int, int>& e) { m.erase(key(e)); }
+  void clear() { m.clear(); }
 };
 
 template <class T>
@@ -59,7 +79,7 @@ bool make_face(Epa<T>& e, int a, int b, int c, Face<T>& f) {
 /// `start` across edges (so that they form one patch), are replaced by a fan
 /// from their boundary to the new vertex.
 template <class T>
-bool insert_point(Epa<T>& e, std::map<std::pair<int, int>, int>& edge_face, const Vert<T>& v, int start,
+bool insert_point(Epa<T>& e, EdgeMap& edge_face, const Vert<T>& v, int start,
                   double margin) {
   const int vi = static_cast<int>(e.verts.size());
   e.verts.push_back(v);
@@ -81,9 +101,8 @@ bool insert_point(Epa<T>& e, std::map<std::pair<int, int>, int>& edge_face, cons
     const Face<T> f = e.faces[fi];
     for (int k = 0; k < 3; ++k) {
       const int a = f.v[k], b = f.v[(k + 1) % 3];
-      auto it = edge_face.find({b, a});
-      if (it == edge_face.end()) return false;
-      const int g = it->second;
+      const int g = edge_face.find({b, a});
+      if (g < 0) return false;
       if (!e.faces[g].alive) continue;  // already removed
       if (visible(e.faces[g])) {
         e.faces[g].alive = false;
@@ -98,8 +117,8 @@ bool insert_point(Epa<T>& e, std::map<std::pair<int, int>, int>& edge_face, cons
   // whose neighbour was removed after the edge was recorded.
   std::vector<std::pair<int, int>> rim;
   for (const auto& ed : horizon) {
-    auto it = edge_face.find({ed.second, ed.first});
-    if (it != edge_face.end() && e.faces[it->second].alive) rim.push_back(ed);
+    const int g = edge_face.find({ed.second, ed.first});
+    if (g >= 0 && e.faces[g].alive) rim.push_back(ed);
   }
   for (int fi : dead)
     for (int k = 0; k < 3; ++k) edge_face.erase({e.faces[fi].v[k], e.faces[fi].v[(k + 1) % 3]});
@@ -121,7 +140,7 @@ bool insert_point(Epa<T>& e, std::map<std::pair<int, int>, int>& edge_face, cons
 /// run on rounded copies; only close calls are settled in T.
 template <class T>
 Epa<T> epa(const ShapeT<T>& A, const ShapeT<T>& B, std::array<Vert<T>, 4> tet, const T& tol, double scale,
-           int max_iter, std::map<std::pair<int, int>, int>& edge_face) {
+           int max_iter, EdgeMap& edge_face) {
   Epa<T> e;
   {
     const V3<T> n = cross(tet[1].w - tet[0].w, tet[2].w - tet[0].w);
@@ -365,7 +384,7 @@ PenetrationResult penetration(const ConvexShape& a, const ConvexShape& b, double
     const DD sc = from_q<DD>(scale);
     std::array<Vert<DD>, 4> tet;
     if (tet_around_origin(A, B, sc, 98, 400, tet)) {
-      std::map<std::pair<int, int>, int> edge_face;
+      EdgeMap edge_face;
       const Epa<DD> e = epa(A, B, tet, sc * DD(rel_width) / 4, static_cast<double>(sc), 200, edge_face);
       note << "epa106:" << e.iterations;
       PenetrationResult r;
@@ -387,7 +406,7 @@ PenetrationResult penetration(const ConvexShape& a, const ConvexShape& b, double
     return out;
   }
   const HP128 tol = sc * HP128(rel_width) / 4;
-  std::map<std::pair<int, int>, int> edge_face;
+  EdgeMap edge_face;
   Epa<HP128> e = epa(A, B, tet, tol, static_cast<double>(sc), 200, edge_face);
   note << "epa128:" << e.iterations;
   bool done = false;
@@ -409,7 +428,7 @@ PenetrationResult penetration(const ConvexShape& a, const ConvexShape& b, double
       have3 = enclosing_tet(A3, B3, cand, tet3);
     }
     if (have3) {
-      std::map<std::pair<int, int>, int> ef3;
+      EdgeMap ef3;
       Epa<HP384> e3 = epa(A3, B3, tet3, sc3 * HP384(rel_width) / 4, static_cast<double>(sc), 600, ef3);
       note << " epa384:" << e3.iterations;
       PenetrationResult r3;
