@@ -476,6 +476,20 @@ MprOut<T> mpr(const ShapeT<T>& A, const ShapeT<T>& B, int max_iter) {
   return out;
 }
 
+/// enclosing_tet's prefilter: det(q - p, r - p, t - p) in doubles.
+inline double volume_d(const V3<double>& p, const V3<double>& q, const V3<double>& r, const V3<double>& t) {
+  return dot(q - p, cross(r - p, t - p));
+}
+/// Its error bound, for doubles within a relative u = 2^-53 of exact points
+/// whose coordinates are at most M in magnitude. To first order: the
+/// differences (at most 2M) err by 4uM (the inputs' rounding and their own);
+/// a cross product's components (at most 8M^2) by 48uM^2; the dot product's
+/// three terms (at most 16M^3) by 144uM^3 each, and its two sums by 80uM^3:
+/// about 512uM^3 = 2^-44 M^3 in all. The bound is 16 times that. Meant for M
+/// between 2^-300 and 2^300 (no cube under- or overflows). Searched towards
+/// in test_filters (Filters.TetVolume).
+inline double volume_d_bound(double M) { return 0x1p-40 * M * M * M; }
+
 /// Fallback for symmetric and degenerate pairs (the origin on an edge of
 /// every portal, e.g. at the centre of the ball part of A - B): support
 /// points along two tetrahedral frames, plus the given candidates; returns
@@ -498,10 +512,7 @@ bool enclosing_tet(const ShapeT<T>& A, const ShapeT<T>& B, std::vector<Vert<T>> 
   // A prefilter in doubles: a tetrahedron whose barycentric volumes
   // certainly have both signs cannot hold the origin (its smallest weight is
   // negative, so T's scores below would reject it too). The doubles are
-  // within a relative 2^-53 of T's values; a 3x3 determinant of differences
-  // of points of norm <= M then errs by less than about 700 * 2^-53 M^3,
-  // bounded here by 2^-36 M^3 (the bound only matters between 2^-300 and
-  // 2^300, where no cube under- or overflows).
+  // within a relative 2^-53 of T's values (volume_d_bound).
   std::vector<V3<double>> wd;
   double M = 0;
   if constexpr (!std::is_same_v<T, double>) {
@@ -511,14 +522,11 @@ bool enclosing_tet(const ShapeT<T>& A, const ShapeT<T>& B, std::vector<Vert<T>> 
     }
   }
   const bool prefilter = M > 0x1p-300 && M < 0x1p300;
-  const double err = prefilter ? 0x1p-36 * M * M * M : 0.0;
+  const double err = prefilter ? volume_d_bound(M) : 0.0;
   auto outside = [&](int i, int j, int k, int l) {
     const V3<double> od{};
     const V3<double>&a = wd[i], &b = wd[j], &c = wd[k], &d = wd[l];
-    auto vd = [](const V3<double>& p, const V3<double>& q, const V3<double>& r, const V3<double>& t) {
-      return dot(q - p, cross(r - p, t - p));
-    };
-    const double v[4] = {vd(od, b, c, d), vd(a, od, c, d), vd(a, b, od, d), vd(a, b, c, od)};
+    const double v[4] = {volume_d(od, b, c, d), volume_d(a, od, c, d), volume_d(a, b, od, d), volume_d(a, b, c, od)};
     bool pos = false, neg = false;
     for (double x : v) pos = pos || x > err, neg = neg || x < -err;
     return pos && neg;
