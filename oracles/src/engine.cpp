@@ -352,6 +352,26 @@ bool try_touching(Ctx& c, const std::vector<QVec>& dirs_in, const std::vector<QV
   }
   if (!n_ok) return false;
   std::vector<QVec> pts = points_in;
+  // Where the shapes touch at a rim or on a ball, the common point is a core
+  // point plus radius times the unit radial direction of n: exact when that
+  // direction's squared length is the square of a short rational (n across
+  // a disc's axis, or along a coordinate axis). The searches only approach
+  // such a point along a line of near-contact (two nearly parallel sides),
+  // where their witnesses drift.
+  for (const ConvexShape* s : {&c.A, &c.B}) {
+    if (s->round == ConvexShape::Round::None || s->radius == 0 || s->kind == ConvexShape::Kind::Hull) continue;
+    QVec w = *n_ok;
+    if (s->round == ConvexShape::Round::Disc) w = w - (dot(w, s->axis) / dot(s->axis, s->axis)) * s->axis;
+    const Q ww = dot(w, w);
+    if (ww == 0) continue;
+    const QInterval root = sqrt_interval(ww);
+    if (!root.exact()) continue;
+    const QVec u = (s->radius / root.lo) * w;
+    for (const QVec& p : s->points) {
+      pts.push_back(p + u);
+      pts.push_back(p - u);
+    }
+  }
   for (const QVec& p : points_in) pts.push_back(snap_double(p));
   // Rounded to grids of 2^-k * scale: exact constructions have short
   // coordinates, the searched witnesses only approach them.
