@@ -77,18 +77,6 @@ QInterval sqrt_interval(const Q& x) {
   return out;
 }
 
-Q dyadic_toward_zero(const Q& x, int bits) {
-  if (x == 0) return Q(0);
-  mpfr_t f;
-  mpfr_init2(f, bits);
-  mpfr_set_q(f, x.backend().data(), MPFR_RNDZ);
-  Q out = mpfr_to_q(f);
-  mpfr_clear(f);
-  if (x > 0 ? (out > x || out < 0) : (out < x || out > 0))
-    throw std::logic_error("oracle: dyadic_toward_zero moved away from zero");
-  return out;
-}
-
 QInterval sqrt_interval(const QInterval& x) {
   if (x.lo < 0) throw std::domain_error("oracle: sqrt of an interval reaching below zero");
   if (x.exact()) return sqrt_interval(x.lo);

@@ -57,12 +57,6 @@ QInterval max(const QInterval& a, const QInterval& b);
 QInterval sqrt_interval(const Q& x);
 /// Bracket of sqrt over an interval with lo >= 0 (monotone).
 QInterval sqrt_interval(const QInterval& x);
-/// x rounded towards zero to a dyadic rational m * 2^e, m of at most `bits`
-/// bits: |result| <= |x|, same sign, within a relative 2^(1 - bits) (MPFR,
-/// re-checked in rationals). Dyadic values of few bits keep later rational
-/// arithmetic cheap: no odd denominators (whose gcds dominate its cost),
-/// short numerators.
-Q dyadic_toward_zero(const Q& x, int bits);
 
 /// Double nearest to q (rounded to nearest).
 double to_double(const Q& q);
