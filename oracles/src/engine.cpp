@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 #include <sstream>
+#include <tuple>
 #include <stdexcept>
 
 #include "engine_interval.hpp"
@@ -327,6 +328,34 @@ std::vector<QVec> touching_directions(const Ctx& c, const std::vector<QVec>& dir
   for (const auto* f : {&fa, &fb})
     for (const QVec& a : *f)
       if (!is_zero(a)) dirs.push_back(d - (dot(d, a) / dot(a, a)) * a);
+  // A core point of one shape lying exactly on the other's rounded surface
+  // (a box corner on a cylinder's rim or side, a triangle's vertex on a
+  // capsule): the normals there are rational. On a side, the radial
+  // direction; on a ball, the offset from the core; on a rim, the cone of
+  // the axis and the radial direction, whose rays across the other shape's
+  // feature directions e are (a x rho) x e.
+  for (const auto& [s, o, fo] : {std::make_tuple(&c.A, &c.B, &fb), std::make_tuple(&c.B, &c.A, &fa)}) {
+    if (s->round == ConvexShape::Round::None || s->radius == 0 || s->points.size() > 2 ||
+        s->kind == ConvexShape::Kind::Hull || o->kind == ConvexShape::Kind::Hull)
+      continue;
+    const QVec& p = s->points.front();
+    const QVec a = s->points.back() - p;
+    const Q aa = dot(a, a);
+    const Q rr = s->radius * s->radius;
+    for (const QVec& x : o->points) {
+      Q t = aa > 0 ? dot(x - p, a) / aa : Q(0);
+      if (s->round == ConvexShape::Round::Ball) t = t < 0 ? Q(0) : (t > 1 ? Q(1) : t);
+      else if (t < 0 || t > 1) continue;
+      const QVec rho = x - (p + t * a);
+      if (dot(rho, rho) != rr) continue;
+      dirs.push_back(rho);
+      if (s->round == ConvexShape::Round::Disc && (t == 0 || t == 1)) {
+        dirs.push_back(t == 0 ? Q(-1) * a : a);
+        const QVec plane = cross(a, rho);
+        for (const QVec& e : *fo) dirs.push_back(cross(plane, e));
+      }
+    }
+  }
   // Searched directions snapped to doubles and to floats.
   for (const QVec& n : dirs_in) {
     const double m = std::max({std::abs(to_double(n.x)), std::abs(to_double(n.y)), std::abs(to_double(n.z))});
