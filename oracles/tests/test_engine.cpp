@@ -308,17 +308,21 @@ TEST(EngineHand, CoincidentCentresOverlap) {
 
 // Pairs touching exactly by construction (signed distance 0: the campaign's
 // exact-touch generators, seed 20261121; case numbers below) that the engine
-// cannot certify as touching: the contact point is irrational or has no
-// short binary expansion, so no common point is found. Such a pair may be
+// could not certify as touching. Where the contact point is irrational or
+// has no short binary expansion no common point is found: such a pair may be
 // Undecided, but its enclosure must hold 0 and be no wider than
 // 2^-200 * scale, both with the options of the default classify and with
 // those the harness asks the truth with (certificates off, width 1e-20).
 // (The loose enclosure these had before, from the inner points, was about
-// the scene's size.)
+// the scene's size.) The pairs marked `certified` have a rational contact
+// and are now held to Touching: two cylinders side to side (rim points
+// along the plane's normal), a box corner on a rim and a triangle's vertex
+// on a side (the rational normals at a core point on the rounded surface).
 TEST(EngineHand, UndecidedIsNarrow) {
   struct Pair {
     const char* what;
     ConvexShape a, b;
+    bool certified = false;  // must be certified touching
   };
   const Pair pairs[] = {
     {"collide_cylinder_capsule case 670 (exact-rim-end-touch)", make_shape(Cylinder{{-0x1.5cp-8, 0x1.88p-9, -0x1.6fp-8}, {-0x1.5cp-8, 0x1.88p-9, -0x1.69p-8}, 0x1.9p-13}), make_shape(Capsule{{-0x1.eb8p-8, 0x1.58p-7, 0x1.48p-9}, {-0x1.3p-10, -0x1.17p-7, 0x1.618p-6}, 0x1.6a8p-7})},
@@ -326,18 +330,18 @@ TEST(EngineHand, UndecidedIsNarrow) {
     {"collide_cylinder_capsule case 3102 (exact-rim-end-touch)", make_shape(Cylinder{{-0x1.f8p+19, -0x1.0a8p+21, 0x1.ccp+20}, {-0x1.f8p+19, -0x1.0a8p+21, 0x1.d8p+20}, 0x1.dp+18}), make_shape(Capsule{{-0x1.bp+20, -0x1.58p+20, 0x1.9ap+21}, {0x1p+21, -0x1.23cp+22, 0x1.b5p+22}, 0x1.79p+20})},
     {"collide_cylinder_capsule case 2338 (exact-rim-end-touch)", make_shape(Cylinder{{0x1.fp+4, -0x1.238p+7, 0x1.d1p+6}, {0x1.ecp+4, -0x1.238p+7, 0x1.d1p+6}, 0x1.4p+2}), make_shape(Capsule{{0x1.a8p+3, -0x1.e1p+6, 0x1.39p+7}, {0x1.f8p+3, -0x1.16p+7, 0x1.f5p+6}, 0x1.04p+4})},
     {"collide_cylinder_capsule case 1534 (exact-rim-through-touch)", make_shape(Cylinder{{-0x1.52p+3, -0x1.15p+3, -0x1.17p+4}, {-0x1.5ep+3, -0x1.15p+3, -0x1.17p+4}, 0x1.9p+1}), make_shape(Capsule{{-0x1.73ep+7, 0x1.211p+7, 0x1.b8dp+8}, {0x1.a9p+5, -0x1.7e7p+7, -0x1.1c04p+9}, 0x1.004p+6})},
-    {"collide_cylinder_cylinder case 658 (exact-parallel-side-touch)", make_shape(Cylinder{{-0x1.cp-11, -0x1.cfp-5, 0x1.58p-8}, {-0x1.cp-11, -0x1.d4p-5, 0x1.58p-8}, 0x1.1p-9}), make_shape(Cylinder{{-0x1.58p-8, -0x1.d48p-5, 0x1.acp-8}, {-0x1.58p-8, -0x1.cd8p-5, 0x1.acp-8}, 0x1.48p-9})},
-    {"collide_cylinder_cylinder case 315 (exact-parallel-side-touch)", make_shape(Cylinder{{-0x1.37p+13, 0x1.7ep+11, -0x1.598p+13}, {-0x1.37p+13, 0x1.7ep+11, -0x1.6p+13}, 0x1.8p+8}), make_shape(Cylinder{{-0x1.418p+13, 0x1.07p+12, -0x1.558p+13}, {-0x1.418p+13, 0x1.07p+12, -0x1.5cp+13}, 0x1.98p+9})},
-    {"collide_cylinder_cylinder case 2141 (exact-parallel-side-touch)", make_shape(Cylinder{{-0x1.ebp+18, 0x1.0fp+19, -0x1.6p+13}, {-0x1.ebp+18, 0x1.07p+19, -0x1.6p+13}, 0x1.8p+15}), make_shape(Cylinder{{-0x1.198p+19, 0x1.07p+19, 0x1.4p+13}, {-0x1.198p+19, 0x1.0d8p+19, 0x1.4p+13}, 0x1.bp+14})},
-    {"collide_cylinder_obb case 1187 (exact-rim-corner-across-touch)", make_shape(Cylinder{{-0x1.b8p+15, -0x1.c5p+18, 0x1.2p+14}, {-0x1.b8p+15, -0x1.c5p+18, 0x1.3p+15}, 0x1.dp+15}), make_shape(Obb{{-0x1p+13, -0x1.f88p+18, 0x1.0cp+15}, {{{0x0p+0, -0x0p+0, 0x1p+0}, {-0x1p+0, 0x0p+0, -0x0p+0}, {-0x0p+0, 0x1p+0, -0x0p+0}}}, {0x1.dp+13, 0x1.cp+12, 0x1.3p+13}})},
-    {"collide_cylinder_obb case 932 (exact-rim-corner-within-touch)", make_shape(Cylinder{{0x1.6p-3, -0x1.e78p+3, 0x1.a5p+3}, {0x1.6p-3, -0x1.e78p+3, 0x1.a28p+3}, 0x1.48p+0}), make_shape(Obb{{-0x1.6p-3, -0x1.bd8p+3, 0x1.a4p+3}, {{{-0x0p+0, 0x1p+0, -0x0p+0}, {-0x0p+0, 0x0p+0, -0x1p+0}, {0x1p+0, -0x0p+0, 0x0p+0}}}, {0x1p-4, 0x1p-6, 0x1p-4}})},
-    {"collide_cylinder_obb case 2202 (exact-rim-corner-across-touch)", make_shape(Cylinder{{0x1.a5p+16, -0x1.a18p+16, -0x1.ad8p+16}, {0x1.a5p+16, -0x1.a18p+16, -0x1.ae8p+16}, 0x1.5cp+13}), make_shape(Obb{{0x1.84cp+16, -0x1.7e4p+16, -0x1.b1cp+16}, {{{0x0p+0, -0x1p+0, 0x0p+0}, {-0x0p+0, 0x0p+0, -0x1p+0}, {-0x1p+0, 0x0p+0, -0x0p+0}}}, {0x1.ep+9, 0x1.ep+9, 0x1.2p+9}})},
-    {"collide_cylinder_obb case 2616 (exact-rim-corner-across-touch)", make_shape(Cylinder{{-0x1.358p+22, -0x1.3b8p+22, -0x1.44p+21}, {-0x1.358p+22, -0x1.3cp+22, -0x1.44p+21}, 0x1.9p+17}), make_shape(Obb{{-0x1.438p+22, -0x1.3c4p+22, -0x1.508p+21}, {{{0x0p+0, 0x1p+0, 0x0p+0}, {-0x1p+0, -0x0p+0, -0x0p+0}, {0x0p+0, 0x0p+0, 0x1p+0}}}, {0x1.8p+13, 0x1p+15, 0x1.6p+15}})},
-    {"collide_cylinder_obb case 4376 (exact-rim-corner-within-touch)", make_shape(Cylinder{{-0x1.0bp+25, -0x1.7cp+25, -0x1.84p+22}, {-0x1.0f8p+25, -0x1.7cp+25, -0x1.84p+22}, 0x1.dp+20}), make_shape(Obb{{-0x1.0dp+25, -0x1.704p+25, -0x1.fep+22}, {{{0x0p+0, -0x0p+0, 0x1p+0}, {-0x0p+0, 0x1p+0, -0x0p+0}, {0x1p+0, -0x0p+0, 0x0p+0}}}, {0x1.3p+19, 0x1.cp+17, 0x1p+16}})},
+    {"collide_cylinder_cylinder case 658 (exact-parallel-side-touch)", make_shape(Cylinder{{-0x1.cp-11, -0x1.cfp-5, 0x1.58p-8}, {-0x1.cp-11, -0x1.d4p-5, 0x1.58p-8}, 0x1.1p-9}), make_shape(Cylinder{{-0x1.58p-8, -0x1.d48p-5, 0x1.acp-8}, {-0x1.58p-8, -0x1.cd8p-5, 0x1.acp-8}, 0x1.48p-9}), true},
+    {"collide_cylinder_cylinder case 315 (exact-parallel-side-touch)", make_shape(Cylinder{{-0x1.37p+13, 0x1.7ep+11, -0x1.598p+13}, {-0x1.37p+13, 0x1.7ep+11, -0x1.6p+13}, 0x1.8p+8}), make_shape(Cylinder{{-0x1.418p+13, 0x1.07p+12, -0x1.558p+13}, {-0x1.418p+13, 0x1.07p+12, -0x1.5cp+13}, 0x1.98p+9}), true},
+    {"collide_cylinder_cylinder case 2141 (exact-parallel-side-touch)", make_shape(Cylinder{{-0x1.ebp+18, 0x1.0fp+19, -0x1.6p+13}, {-0x1.ebp+18, 0x1.07p+19, -0x1.6p+13}, 0x1.8p+15}), make_shape(Cylinder{{-0x1.198p+19, 0x1.07p+19, 0x1.4p+13}, {-0x1.198p+19, 0x1.0d8p+19, 0x1.4p+13}, 0x1.bp+14}), true},
+    {"collide_cylinder_obb case 1187 (exact-rim-corner-across-touch)", make_shape(Cylinder{{-0x1.b8p+15, -0x1.c5p+18, 0x1.2p+14}, {-0x1.b8p+15, -0x1.c5p+18, 0x1.3p+15}, 0x1.dp+15}), make_shape(Obb{{-0x1p+13, -0x1.f88p+18, 0x1.0cp+15}, {{{0x0p+0, -0x0p+0, 0x1p+0}, {-0x1p+0, 0x0p+0, -0x0p+0}, {-0x0p+0, 0x1p+0, -0x0p+0}}}, {0x1.dp+13, 0x1.cp+12, 0x1.3p+13}}), true},
+    {"collide_cylinder_obb case 932 (exact-rim-corner-within-touch)", make_shape(Cylinder{{0x1.6p-3, -0x1.e78p+3, 0x1.a5p+3}, {0x1.6p-3, -0x1.e78p+3, 0x1.a28p+3}, 0x1.48p+0}), make_shape(Obb{{-0x1.6p-3, -0x1.bd8p+3, 0x1.a4p+3}, {{{-0x0p+0, 0x1p+0, -0x0p+0}, {-0x0p+0, 0x0p+0, -0x1p+0}, {0x1p+0, -0x0p+0, 0x0p+0}}}, {0x1p-4, 0x1p-6, 0x1p-4}}), true},
+    {"collide_cylinder_obb case 2202 (exact-rim-corner-across-touch)", make_shape(Cylinder{{0x1.a5p+16, -0x1.a18p+16, -0x1.ad8p+16}, {0x1.a5p+16, -0x1.a18p+16, -0x1.ae8p+16}, 0x1.5cp+13}), make_shape(Obb{{0x1.84cp+16, -0x1.7e4p+16, -0x1.b1cp+16}, {{{0x0p+0, -0x1p+0, 0x0p+0}, {-0x0p+0, 0x0p+0, -0x1p+0}, {-0x1p+0, 0x0p+0, -0x0p+0}}}, {0x1.ep+9, 0x1.ep+9, 0x1.2p+9}}), true},
+    {"collide_cylinder_obb case 2616 (exact-rim-corner-across-touch)", make_shape(Cylinder{{-0x1.358p+22, -0x1.3b8p+22, -0x1.44p+21}, {-0x1.358p+22, -0x1.3cp+22, -0x1.44p+21}, 0x1.9p+17}), make_shape(Obb{{-0x1.438p+22, -0x1.3c4p+22, -0x1.508p+21}, {{{0x0p+0, 0x1p+0, 0x0p+0}, {-0x1p+0, -0x0p+0, -0x0p+0}, {0x0p+0, 0x0p+0, 0x1p+0}}}, {0x1.8p+13, 0x1p+15, 0x1.6p+15}}), true},
+    {"collide_cylinder_obb case 4376 (exact-rim-corner-within-touch)", make_shape(Cylinder{{-0x1.0bp+25, -0x1.7cp+25, -0x1.84p+22}, {-0x1.0f8p+25, -0x1.7cp+25, -0x1.84p+22}, 0x1.dp+20}), make_shape(Obb{{-0x1.0dp+25, -0x1.704p+25, -0x1.fep+22}, {{{0x0p+0, -0x0p+0, 0x1p+0}, {-0x0p+0, 0x1p+0, -0x0p+0}, {0x1p+0, -0x0p+0, 0x0p+0}}}, {0x1.3p+19, 0x1.cp+17, 0x1p+16}}), true},
     {"collide_cylinder_triangle case 3001 (exact-edge-rim-touch)", make_shape(Cylinder{{0x1.f6p+8, -0x1.7ep+8, 0x1.7dp+8}, {0x1.f6p+8, -0x1.7fp+8, 0x1.7dp+8}, 0x1.ap+4}), make_shape(Triangle{{0x1.c3p+9, -0x1.18p+6, 0x1.b3p+8}, {-0x1.ap+5, -0x1.82p+9, 0x1.23p+8}, {0x1.62p+8, -0x1.5cp+7, 0x1.07p+8}})},
-    {"collide_cylinder_triangle case 2175 (exact-vertex-side-touch)", make_shape(Cylinder{{0x1.e98p+0, 0x1.15p-1, 0x1.48p-2}, {0x1.f18p+0, 0x1.15p-1, 0x1.48p-2}, 0x1.9p-4}), make_shape(Triangle{{0x1.f08p+0, 0x1.6fp-1, 0x1.1p-4}, {0x1.ee8p+0, 0x1.23p-1, 0x1.dp-3}, {0x1.edp+0, 0x1.72p-1, 0x1.c4p-3}})},
-    {"collide_cylinder_triangle case 3339 (exact-vertex-side-touch)", make_shape(Cylinder{{0x1.eap+16, -0x1.fp+17, 0x1.7d8p+18}, {0x1.eap+16, -0x1.eap+17, 0x1.7d8p+18}, 0x1.9p+13}), make_shape(Triangle{{0x1.68p+16, -0x1.ecp+17, 0x1.67p+18}, {0x1.68p+16, -0x1.edp+17, 0x1.67p+18}, {0x1.bap+16, -0x1.ecp+17, 0x1.7ap+18}})},
-    {"collide_cylinder_triangle case 4130 (exact-vertex-side-touch)", make_shape(Cylinder{{-0x1.da8p-10, 0x1.a4p-13, -0x1.42p-10}, {-0x1.da8p-10, 0x1.a4p-13, -0x1.3ep-10}, 0x1.ap-14}), make_shape(Triangle{{-0x1.ecp-10, 0x1.5p-15, -0x1.418p-10}, {-0x1.e48p-10, 0x1.c8p-14, -0x1.42p-10}, {-0x1.cb8p-10, 0x1p-16, -0x1.428p-10}})},
+    {"collide_cylinder_triangle case 2175 (exact-vertex-side-touch)", make_shape(Cylinder{{0x1.e98p+0, 0x1.15p-1, 0x1.48p-2}, {0x1.f18p+0, 0x1.15p-1, 0x1.48p-2}, 0x1.9p-4}), make_shape(Triangle{{0x1.f08p+0, 0x1.6fp-1, 0x1.1p-4}, {0x1.ee8p+0, 0x1.23p-1, 0x1.dp-3}, {0x1.edp+0, 0x1.72p-1, 0x1.c4p-3}}), true},
+    {"collide_cylinder_triangle case 3339 (exact-vertex-side-touch)", make_shape(Cylinder{{0x1.eap+16, -0x1.fp+17, 0x1.7d8p+18}, {0x1.eap+16, -0x1.eap+17, 0x1.7d8p+18}, 0x1.9p+13}), make_shape(Triangle{{0x1.68p+16, -0x1.ecp+17, 0x1.67p+18}, {0x1.68p+16, -0x1.edp+17, 0x1.67p+18}, {0x1.bap+16, -0x1.ecp+17, 0x1.7ap+18}}), true},
+    {"collide_cylinder_triangle case 4130 (exact-vertex-side-touch)", make_shape(Cylinder{{-0x1.da8p-10, 0x1.a4p-13, -0x1.42p-10}, {-0x1.da8p-10, 0x1.a4p-13, -0x1.3ep-10}, 0x1.ap-14}), make_shape(Triangle{{-0x1.ecp-10, 0x1.5p-15, -0x1.418p-10}, {-0x1.e48p-10, 0x1.c8p-14, -0x1.42p-10}, {-0x1.cb8p-10, 0x1p-16, -0x1.428p-10}}), true},
   };
   int undecided = 0;
   for (const Pair& p : pairs) {
@@ -349,6 +353,9 @@ TEST(EngineHand, UndecidedIsNarrow) {
       const DistanceResult r = classify(p.a, p.b, opt);
       ASSERT_TRUE(r.verdict == Verdict::Touching || r.verdict == Verdict::Undecided)
           << to_string(r.verdict) << " " << to_string(r.distance) << " for an exactly touching pair";
+      if (p.certified) {
+        EXPECT_EQ(r.verdict, Verdict::Touching) << "a rational contact left undecided: " << r.note;
+      }
       EXPECT_TRUE(r.distance.lo <= 0 && r.distance.hi >= 0) << to_string(r.distance);
       if (r.verdict != Verdict::Undecided) continue;
       ++undecided;
