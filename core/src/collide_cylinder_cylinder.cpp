@@ -661,9 +661,21 @@ Contact scaled(const Cylinder& a, const Axis& ax_a, const Cylinder& b, const Axi
     // answer for parallel axes: from the radial part y0 and the linear
     // coefficient -K), unless a lower bound says it cannot beat the depth
     // found.
+    // (Scaled by a power of two where y0^2 + w^2 leaves the normal range:
+    // offsets of 1e-154 in a scene of 1 left (P, Q) 8e-11 short of unit,
+    // and the normal with it; regression collide_cylinder_cylinder/0032.)
     auto start = [&](const Frame::Circle& c, double& P, double& Q) {
-      const double w = std::max(-c.K, 0.0), l = std::sqrt(f.y0 * f.y0 + w * w);
-      if (l > 0) P = f.y0 * (1 / l), Q = w * (1 / l);
+      double y = f.y0, w = std::max(-c.K, 0.0);
+      const double l2 = y * y + w * w;
+      if (!(l2 > kSafeLo * kSafeLo && l2 < kSafeHi * kSafeHi)) {
+        const double mx = std::max(std::fabs(y), w);
+        if (mx > 0 && std::isfinite(mx)) {
+          const int e = std::ilogb(mx);
+          y = std::ldexp(y, -e), w = std::ldexp(w, -e);
+        }
+      }
+      const double l = std::sqrt(y * y + w * w);
+      if (l > 0) P = y * (1 / l), Q = w * (1 / l);
       else P = 1, Q = 0;
     };
     double P, Q;
