@@ -485,7 +485,7 @@ void narrow_undecided(const Ctx& c, const std::vector<QVec>& dirs_in, const std:
 }
 
 template <class T>
-Round search_round(Ctx& c, DistanceResult& r, std::vector<QVec>& dirs, std::vector<QVec>& pts, Q& dist_est) {
+Round search_round_impl(Ctx& c, DistanceResult& r, std::vector<QVec>& dirs, std::vector<QVec>& pts, Q& dist_est) {
   const int bits = bits_of<T>();
   const ShapeT<T> A = convert<T>(c.A), B = convert<T>(c.B);
   const T sc = from_q<T>(c.scale);
@@ -532,6 +532,21 @@ Round search_round(Ctx& c, DistanceResult& r, std::vector<QVec>& dirs, std::vect
   }
   const Q tiny = c.scale / Q(mp::mpz_int(1) << 200);
   return dist_est < tiny ? Round::Tiny : Round::Open;
+}
+
+/// One round; a search that proposes a non-finite value (a direction or a
+/// weight gone astray on a degenerate pair: an axis of 1e10 with a radius of
+/// 1e-314) leaves the round open instead of ending the classification.
+template <class T>
+Round search_round(Ctx& c, DistanceResult& r, std::vector<QVec>& dirs, std::vector<QVec>& pts, Q& dist_est) {
+  try {
+    return search_round_impl<T>(c, r, dirs, pts, dist_est);
+  } catch (const std::invalid_argument&) {
+    c.note << " (" << bits_of<T>() << " bits: a non-finite proposal)";
+    r.witness_a.reset();
+    r.witness_b.reset();
+    return Round::Open;
+  }
 }
 
 /// The double filter: GJK in doubles, certificates in interval arithmetic.

@@ -6,6 +6,7 @@
 #include <map>
 #include <unordered_map>
 #include <optional>
+#include <stdexcept>
 #include <string>
 #include <sstream>
 
@@ -375,7 +376,8 @@ bool tet_around_origin(const ShapeT<T>& A, const ShapeT<T>& B, const T& sc, int 
 
 }  // namespace
 
-PenetrationResult penetration(const ConvexShape& a, const ConvexShape& b, double rel_width, bool double_double) {
+namespace {
+PenetrationResult penetration_impl(const ConvexShape& a, const ConvexShape& b, double rel_width, bool double_double) {
   PenetrationResult out;
   std::ostringstream note;
   const Q scale = pair_scale(a, b);
@@ -464,6 +466,20 @@ PenetrationResult penetration(const ConvexShape& a, const ConvexShape& b, double
   }
   out.note = note.str();
   return out;
+}
+
+}  // namespace
+
+PenetrationResult penetration(const ConvexShape& a, const ConvexShape& b, double rel_width, bool double_double) {
+  try {
+    return penetration_impl(a, b, rel_width, double_double);
+  } catch (const std::invalid_argument&) {
+    // A search that proposed a non-finite value: nothing certified.
+    PenetrationResult out;
+    out.note = "a non-finite proposal";
+    note_stage(Stage::Undecided);
+    return out;
+  }
 }
 
 const char* to_string(ImpactResult::Kind k) {

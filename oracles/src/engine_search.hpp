@@ -165,6 +165,12 @@ QVec sup_point_q(const ConvexShape& s, const Sup<T>& sp) {
   }
   QVec base = s.points[sp.i];
   if (s.round == ConvexShape::Round::None || s.radius == 0 || is_zero(sp.w)) return base;
+  // A non-finite radial vector (a search gone astray on a degenerate pair:
+  // a subnormal radius on an axis of 1e10) proposes nothing: the core point
+  // is still a point of the shape, and the certificate decides.
+  if (!(std::isfinite(static_cast<double>(sp.w.x)) && std::isfinite(static_cast<double>(sp.w.y)) &&
+        std::isfinite(static_cast<double>(sp.w.z))))
+    return base;
   if constexpr (std::is_same_v<T, DD> || std::is_same_v<T, double>) {
     // In integers where the data is dyadic (the common case).
     Vec3 hi, lo;
