@@ -100,16 +100,18 @@ struct Closest {
 
 Closest closest(const SegmentInFrame& s, const Cylinder& cyl) {
   // S inside the cylinder somewhere: the robust segment/cylinder interval,
-  // taken where its midpoint is inside. A line that only grazes the side
-  // (tangent to it: a double root, the quadratic's coefficients qb and qc
-  // both at the rounding level) gets roots that are quotients of rounding,
-  // and an interval that can span the whole segment: its midpoint then lies
-  // outside (0.3% of the scene in regression collide_cylinder_capsule/0006),
-  // and the search below finds where S comes closest.
+  // taken where its midpoint is within the radius. A line that only grazes
+  // the side (tangent to it: a double root, the quadratic's coefficients qb
+  // and qc both at the rounding level) gets roots that are quotients of
+  // rounding, and an interval that can span the whole segment: its midpoint
+  // then lies outside the radius (0.3% of the scene in regression
+  // collide_cylinder_capsule/0006), and the search below finds where S comes
+  // closest. (The slab's part of the interval is linear and reliable: a
+  // crossing of a disk of subnormal thickness is kept, regression 0009.)
   const detail::TubeInterval iv = detail::tube_interval(s.a, s.e, s.u, s.len, 0.0, cyl.r);
   if (!iv.empty && iv.entry <= 1 && iv.exit >= 0) {
     const double l = 0.5 * (std::max(iv.entry, 0.0) + std::min(iv.exit, 1.0));
-    if (s.dist(l) == 0) return {l, 0.0};
+    if (detail::safe_length(s.wa + l * s.we) <= cyl.r) return {l, 0.0};
   }
   // dist(S(l), C) is convex in l: its minimum over [0, 1] is at an end, at
   // a kink (a cap plane or the radius crossed) or at a stationary point of
