@@ -255,6 +255,24 @@ Contact collide_scaled(const Cylinder& cyl, const Capsule& cap) {
     out.point = c.point;
     out.normal = rim_normal(c.normal);
     out.depth = std::max(cap.r - k.d, 0.0);
+    // Within rounding of a cap plane the rim and the side meet, and the
+    // rounding of ax picks the branch. Where S's closest approach to the
+    // axis line lies there, the normal of either is the common perpendicular
+    // of the axis and S, u x e / |u x e|; it is offered too, and the one of
+    // the two with the smaller overlap along it kept. A zero-radius cylinder
+    // passing beneath a core 4.5e-16 of its length from its end p got the
+    // rim's normal at p, tilted by l's rounding over the small angle between
+    // the rim tangent and S (normal error 2.82e-12 * scale; regression
+    // collide_cylinder_capsule/0010).
+    if (rim && k.l > 0 && k.l < 1 && (std::fabs(ax) <= noise || std::fabs(ax - s.len) <= noise)) {
+      const Vec3 cp = cross(s.u, detail::normalized(s.e));
+      const double sn = detail::safe_length(cp);
+      if (sn > 0x1p-10) {
+        const Vec3 nc = (dot(cp, out.normal) < 0 ? -1 / sn : 1 / sn) * cp;
+        if (dot(nc, out.normal) > 1 - 0x1p-30 && overlap_along(s, cap, nc) < overlap_along(s, cap, out.normal))
+          out.normal = nc;
+      }
+    }
     // A side contact at S's closest approach to the axis line: the direction
     // between the closest points is the common perpendicular of the axis and
     // S, u x e / |u x e|, good to about eps / sin(angle between them), where
