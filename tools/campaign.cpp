@@ -113,7 +113,7 @@ class QueryRun {
     rep_.subject = impl_->name;
     rep_.claims = impl_->claims ? *impl_->claims : Spec<Q>::claims();
     rep_.own_claims = impl_->claims != nullptr;
-    rep_.tol = tolerances(Q);
+    rep_.tol = bounds_of(Q, impl_->claims);
     rep_.depth_is_bound = Spec<Q>::claims().depth == Claims::Depth::UpperBound;
   }
 

@@ -202,7 +202,7 @@ Replayed replay_one(const fs::path& path, bool quiet, const std::string& subject
     const PeerAnswer fcl = peer(c);
     const Evaluation e = evaluate_with_peer(c, fcl, *impl);
     const CheckResult failure = check_all(c, *impl);
-    const Tolerances tol = tolerances(Q);
+    const Tolerances tol = bounds_of(Q, impl->claims);
     bool filed_ok = true;
     std::string truth_word = verdict_word(Q, e);
     if (!e.valid) truth_word = "invalid";

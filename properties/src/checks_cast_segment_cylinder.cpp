@@ -60,7 +60,7 @@ double disagreement_margin(const oracle::QSegment& s, const oracle::QCylinder& c
 }  // namespace
 
 void hold_to_truth(Evaluation& e, const SegmentCylinderCase& c, const CastHit& h, const double* peer_t) {
-  const Tolerances tol = tolerances(kId);
+  const Tolerances& tol = e.tol;
   const oracle::QSegment qs = oracle::to_q(c.a);
   const oracle::QCylinder qc = oracle::to_q(c.b);
   const oracle::CastTruth truth = oracle::solve_cast(qs, qc);
@@ -113,7 +113,7 @@ void hold_to_truth(Evaluation& e, const SegmentCylinderCase& c, const CastHit& h
     // "Near a feature": within 4x the t bound, which is t_err's own reach
     // (its bound plus the output resolution of 4 smallest subnormals).
     const Q near = times_scale(4 * tol.t, e.scale) + oracle::to_q(16 * std::numeric_limits<double>::denorm_min());
-    e.normal_err = cylinder_normal_error(qc, x, h.normal, near);
+    e.normal_err = cylinder_normal_error(qc, x, h.normal, near, times_scale(tol.input, e.scale));
   }
   // point must be S(t).
   const QVec dp = oracle::to_q(h.point) - x;
@@ -122,11 +122,11 @@ void hold_to_truth(Evaluation& e, const SegmentCylinderCase& c, const CastHit& h
 
 CheckResult check_consistency(const SegmentCylinderCase& c, const CastSegmentCylinderImpl& impl) {
   const CastHit h = impl.cast(c.a, c.b);
-  if (auto f = consistent_hit(kId, h)) return f;
+  if (auto f = consistent_hit(kId, h, impl.claims)) return f;
   if (!h.hit || !valid_case(c)) return std::nullopt;
   const double scale = oracle::case_scale(c.a, c.b);
   const Vec3 s = c.a.a + h.t * (c.a.b - c.a.a);
-  if (length(h.point - s) > tolerances(kId).point * scale)
+  if (length(h.point - s) > bounds(kId, impl).point * scale)
     return Failure{"consistency-point-is-S(t)", describe(h) + " but S(t) = " + vec(s)};
   return std::nullopt;
 }
@@ -146,7 +146,8 @@ CheckResult check_metamorphic(const SegmentCylinderCase& c, int move, const Cast
                            const CastHit& h1) -> CheckResult {
     const double scale = oracle::case_scale(c.a, c.b);
     const double moved_scale = std::max(scale, oracle::case_scale(t.a, t.b));
-    const Q delta = times_scale(tolerances(kId).verdict, scale) + times_scale(moves::rigid_slack(c.b), moved_scale);
+    // The subject answers the moved case to its band at the moved scale.
+    const Q delta = times_scale(bounds(kId, impl).verdict, moved_scale) + times_scale(moves::rigid_slack(c.b), moved_scale);
     const oracle::QSegment qs = oracle::to_q(c.a);
     const oracle::QCylinder qc = oracle::to_q(c.b);
     const bool truth = oracle::solve_cast(qs, qc).hit;

@@ -30,7 +30,7 @@ GEOMCHECK_SPEC(collide_cylinder_capsule, 100000,
                &teeth::kCapsuleCapsule)
 
 void hold_to_truth(Evaluation& e, const CylinderCapsuleCase& c, const Contact& ct, const Contact* peer) {
-  const Tolerances tol = tolerances(kId);
+  const Tolerances& tol = e.tol;
   const oracle::ConvexShape cyl = oracle::make_shape(c.a);
   const QVec p = oracle::to_q(c.b.p), q = oracle::to_q(c.b.q);
   const Q r = oracle::to_q(c.b.r);
@@ -75,7 +75,7 @@ CheckResult check_consistency(const CylinderCapsuleCase& c, const CylinderCapsul
   // (first order in its angle for a capsule), in the shallow and the deep
   // branch alike: both bounds together.
   const bool exact = valid_case(c);
-  return consistent_contact(kId, c, impl, exact, tolerances(kId).depth + tolerances(kId).normal);
+  return consistent_contact(kId, c, impl, exact, bounds(kId, impl).depth + bounds(kId, impl).normal);
 }
 
 namespace {
@@ -85,7 +85,7 @@ namespace {
 CheckResult same_answer(const char* what, const CylinderCapsuleCase& c0, const CylinderCapsuleCase& c1,
                         const CylinderCapsuleImpl& impl) {
   auto claimed = [&](const CylinderCapsuleCase& k) { return !std::isnan(evaluate(k, impl).depth_err); };
-  return geomcheck::same_answer(what, c0, c1, impl, 2 * tolerances(kId).depth, claimed);
+  return geomcheck::same_answer(what, c0, c1, impl, 2 * bounds(kId, impl).depth, claimed);
 }
 }  // namespace
 

@@ -32,7 +32,7 @@ GEOMCHECK_SPEC(collide_cylinder_sphere, 100000,
                &teeth::kCapsuleForCylinder)
 
 void hold_to_truth(Evaluation& e, const CylinderSphereCase& c, const Contact& ct, const Contact* peer) {
-  const Tolerances tol = tolerances(kId);
+  const Tolerances& tol = e.tol;
   const oracle::QCylinder qa = oracle::to_q(c.a);
   const oracle::QSphere qb = oracle::to_q(c.b);
   const auto truth = oracle::solve_cylinder_sphere(qa, qb);
@@ -79,7 +79,7 @@ CheckResult check_consistency(const CylinderSphereCase& c, const CylinderSphereI
   if (ov != ct.hit) return Failure{"consistency-overlap-vs-collide", describe(ct, ov)};
   if (!ct.hit) return std::nullopt;
   if (!finite_contact(ct)) return Failure{"consistency-finite", describe(ct, ov)};
-  const Tolerances tol = tolerances(kId);
+  const Tolerances tol = bounds(kId, impl);
   if (std::fabs(length(ct.normal) - 1) > tol.unit) return Failure{"consistency-unit-normal", describe(ct, ov)};
   if (!(ct.depth >= 0)) return Failure{"consistency-depth-nonnegative", describe(ct, ov)};
   if (!valid_case(c)) return std::nullopt;
@@ -87,7 +87,7 @@ CheckResult check_consistency(const CylinderSphereCase& c, const CylinderSphereI
   const double scale = oracle::case_scale(c.a, c.b);
   const oracle::QInterval along = oracle::overlap_along(oracle::to_q(c.a), oracle::to_q(c.b), oracle::to_q(ct.normal));
   const double err = rel_error(along, ct.depth, scale);
-  const double bound = tol.depth + claimed_margin(impl);
+  const double bound = tol.depth;
   if (err > bound)
     return Failure{"consistency-depth-along-normal",
                    fmt("|depth - overlap along normal| = %.3g * scale > %.3g; ", err, bound) + describe(ct, ov)};
@@ -100,6 +100,7 @@ CheckResult check_symmetry(const CylinderSphereCase& c, const CylinderSphereImpl
   const Contact ct = impl.collide(c.a, c.b);
   // Same solid, caps swapped.
   const CylinderSphereCase s{{c.a.q, c.a.p, c.a.r}, c.b};
+  if (!subject_states(s, impl)) return std::nullopt;
   const bool ov2 = impl.overlap(s.a, s.b);
   if (ov2 != ov && valid_case(c)) {
     // The truth is the same for both; the one that disagrees with it must be inside the band.
@@ -113,7 +114,7 @@ CheckResult check_symmetry(const CylinderSphereCase& c, const CylinderSphereImpl
     const Contact c2 = impl.collide(s.a, s.b);
     const double scale = oracle::case_scale(c.a, c.b);
     const double d = std::fabs(c2.depth - ct.depth) / scale;
-    if (d > 2 * tolerances(kId).depth)
+    if (d > 2 * bounds(kId, impl).depth)
       return Failure{"symmetry-caps-swapped-depth", fmt("depth differs by %.3g * scale; ", d) + describe(ct, ov) + " vs " + describe(c2, ov2)};
   }
   return std::nullopt;
@@ -140,16 +141,14 @@ CheckResult check_metamorphic(const CylinderSphereCase& c, int move, const Cylin
 
 CheckResult check_monotone(const CylinderSphereCase& c, const CylinderSphereImpl& impl) {
   if (!valid_case(c) || !impl.overlap(c.a, c.b)) return std::nullopt;
+  // An overlap lost by a bigger ball or cylinder is a failure unless one of
+  // the two cases is within the subject's band of touching (overlap_lost).
   const double grow[] = {std::nextafter(c.b.r, INFINITY), c.b.r * 2 + 1e-300, c.b.r + 0.5 * c.a.r};
   for (double r : grow) {
-    if (!std::isfinite(r)) continue;
-    if (!impl.overlap(c.a, Sphere{c.b.c, r}))
+    if (std::isfinite(r) && overlap_lost(c, CylinderSphereCase{c.a, Sphere{c.b.c, r}}, impl))
       return Failure{"monotone-sphere-radius", fmt("overlap with sphere radius %.17g but not with %.17g", c.b.r, r)};
   }
-  const double rc = std::nextafter(c.a.r, INFINITY);
-  if (std::isfinite(rc) && !impl.overlap(Cylinder{c.a.p, c.a.q, rc}, c.b))
-    return Failure{"monotone-cylinder-radius", fmt("overlap with cylinder radius %.17g but not with %.17g", c.a.r, rc)};
-  return std::nullopt;
+  return cylinder_a_radius_kept(c, impl);
 }
 
 }  // namespace geomcheck

@@ -70,7 +70,7 @@ double exact_first_touch(const SweepCylinderCase& c) {
 }
 
 void hold_to_truth(Evaluation& e, const SweepCylinderCase& c, const CastHit& h, const double* peer_t) {
-  const Tolerances tol = tolerances(kId);
+  const Tolerances& tol = e.tol;
   const oracle::ConvexShape cyl = oracle::make_shape(c.b);
   const QVec a = oracle::to_q(c.a.c), b = centre_at(c, 1.0);
   const Q r = oracle::to_q(c.a.r);
@@ -144,13 +144,20 @@ void hold_to_truth(Evaluation& e, const SweepCylinderCase& c, const CastHit& h, 
 
 CheckResult check_consistency(const SweepCylinderCase& c, const SweepSphereCylinderImpl& impl) {
   const CastHit h = impl.sweep(c.a, c.b);
-  if (auto f = consistent_hit(kId, h)) return f;
+  if (auto f = consistent_hit(kId, h, impl.claims)) return f;
   if (!valid_case(c)) return std::nullopt;
-  const Tolerances tol = tolerances(kId);
+  const Tolerances tol = bounds(kId, impl);
   const double scale = oracle::case_scale(c.a, c.b);
   // starts_inside is the sphere query's verdict at t = 0.
+  // Production's verdict at t = 0, unless the ball starts within the
+  // subject's band of touching (then either answer is the subject's to give).
   const bool at0 = overlap(c.b, Sphere{c.a.c, c.a.r});
-  if (at0 != (h.hit && h.starts_inside))
+  auto start_in_band = [&] {
+    const oracle::QInterval sd = oracle::solve_cylinder_sphere(c.b, Sphere{c.a.c, c.a.r}).signed_distance;
+    const Q band = times_scale(tol.verdict, scale);
+    return !(sd.lo > band || sd.hi < -band);
+  };
+  if (at0 != (h.hit && h.starts_inside) && !start_in_band())
     return Failure{"consistency-starts-inside-vs-overlap", describe(h) + std::string("; overlap(Cylinder, Sphere) at t = 0: ") + (at0 ? "yes" : "no")};
   // The swept capsule: the same hit/miss outside the band.
   const Vec3 end = c.a.c + c.a.delta;
@@ -186,7 +193,8 @@ CheckResult check_metamorphic(const SweepCylinderCase& c, int move, const SweepS
                            const CastHit& h1) -> CheckResult {
     const Evaluation e0 = evaluate(c, impl);
     const double moved_scale = std::max(e0.scale, oracle::case_scale(t.a, t.b));
-    const double slack = tolerances(kId).verdict * e0.scale + moves::rigid_slack(c.b) * moved_scale;
+    // The subject answers the moved case to its band at the moved scale.
+    const double slack = bounds(kId, impl).verdict * moved_scale + moves::rigid_slack(c.b) * moved_scale;
     if (std::fabs(e0.signed_distance) <= slack || e0.near_boundary) return std::nullopt;
     return Failure{what, "verdict changed beyond the band and the motion's rounding: " + describe(h0) + " vs " + describe(h1)};
   };

@@ -1,5 +1,6 @@
 #include "common.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <limits>
@@ -62,22 +63,40 @@ void score_depth_sides(Evaluation& e, const QInterval& pd, double depth) {
   e.depth_over = v > pd.hi ? rel_up(v - pd.hi, e.scale) : 0.0;
 }
 
-void widen_band(Evaluation& e, double margin) {
-  if (!(margin > 0) || !e.valid) return;
-  if (!(std::fabs(e.signed_distance) <= margin * e.scale) && !(e.disagree && e.margin <= margin)) return;
-  e.near_boundary = true;
-  if (e.disagree) e.excused = true;
+Tolerances bounds_of(QueryId id, const Claims* claims) {
+  Tolerances t = tolerances(id);
+  if (!claims) return t;
+  const Precision& p = claims->precision;
+  // A bound of 0 is no metric of the query (a collide query's t): it stays 0.
+  auto derive = [&](double& b, bool scaled) {
+    if (b == 0) return;
+    b = std::max(p.ulps * p.unit_roundoff, b * (p.unit_roundoff / 0x1p-53));
+    if (scaled && claims->margin > 0) b += claims->margin;
+  };
+  derive(t.verdict, true);
+  derive(t.depth, true);
+  derive(t.normal, true);
+  derive(t.point, true);
+  derive(t.t, true);
+  derive(t.unit, false);
+  t.input = p.unit_roundoff > 0x1p-53 ? p.unit_roundoff : 0.0;
+  return t;
+}
+
+bool states_scale(const Claims* claims, double scale) {
+  if (!claims) return true;
+  return scale >= claims->precision.min_scale && scale <= claims->precision.max_scale;
 }
 
 namespace {
 
 /// judge()'s depth: production's claim held by depth_err; a subject's own
 /// depth claim by the side(s) of the penetration depth it claims.
-CheckResult judge_depth(QueryId id, const Evaluation& e, const Claims* claims, double bound, double margin) {
+CheckResult judge_depth(QueryId id, const Evaluation& e, const Claims* claims, double bound) {
   if (info(id).kind != QueryKind::Collide) {  // casts and sweeps: no depth; t is judged below
-    if (std::isnan(e.depth_err) || e.depth_err <= bound + margin) return std::nullopt;
-    return Failure{"oracle-depth", fmt("depth error %.3g * scale exceeds bound %.3g", e.depth_err, bound + margin) +
-                                       "; oracle: " + e.truth_text + "; production: " + e.prod_text};
+    if (std::isnan(e.depth_err) || e.depth_err <= bound) return std::nullopt;
+    return Failure{"oracle-depth", fmt("depth error %.3g * scale exceeds bound %.3g", e.depth_err, bound) +
+                                       "; oracle: " + e.truth_text + "; answer: " + e.prod_text};
   }
   using Depth = Claims::Depth;
   const Depth production = visit_query(id, [](auto q) { return spec_of<decltype(q)::value>().claims.depth; });
@@ -90,19 +109,20 @@ CheckResult judge_depth(QueryId id, const Evaluation& e, const Claims* claims, d
   } else if (claimed != Depth::UpperBound && production == Depth::UpperBound) {
     if (e.depth_over > e.depth_err || std::isnan(e.depth_err)) err = e.depth_over, what = "depth above the penetration depth by";
   }
-  if (std::isnan(err) || err <= bound + margin) return std::nullopt;
-  return Failure{"oracle-depth", std::string(what) + fmt(" %.3g * scale exceeds bound %.3g", err, bound + margin) +
-                                     "; oracle: " + e.truth_text + "; production: " + e.prod_text};
+  if (std::isnan(err) || err <= bound) return std::nullopt;
+  return Failure{"oracle-depth", std::string(what) + fmt(" %.3g * scale exceeds bound %.3g", err, bound) +
+                                     "; oracle: " + e.truth_text + "; answer: " + e.prod_text};
 }
 
 }  // namespace
 
-CheckResult judge(QueryId id, const Evaluation& e, const Claims* claims) {
-  const Tolerances tol = tolerances(id);
+std::vector<Failure> judge_every(QueryId id, const Evaluation& e, const Claims* claims) {
+  std::vector<Failure> out;
+  const Tolerances tol = bounds_of(id, claims);
   const double margin = claims ? claims->margin : 0.0;
   if (!e.valid) {
-    if (e.prod_hit || e.disagree) return Failure{"invalid-input", "invalid input reported a hit: " + e.prod_text};
-    return std::nullopt;
+    if (e.prod_hit || e.disagree) out.push_back({"invalid-input", "invalid input reported a hit: " + e.prod_text});
+    return out;
   }
   // A disagreement the subject's claims allow: an inexact verdict, a miss
   // where the shapes only touch, or one within its margin of touching.
@@ -111,30 +131,36 @@ CheckResult judge(QueryId id, const Evaluation& e, const Claims* claims) {
                                             e.verdict == oracle::Verdict::Touching) ||
                  (margin > 0 && e.margin <= margin));
   if (e.disagree && !e.excused && !claimed_away)
-    return Failure{"oracle-verdict", "production says " + std::string(e.prod_hit ? "hit" : "no hit") +
+    out.push_back({"oracle-verdict", "the subject says " + std::string(e.prod_hit ? "hit" : "no hit") +
                                          ", oracle: " + e.truth_text + fmt(" (margin %.3g * scale, band %.3g)", e.margin, tol.verdict) +
-                                         "; production: " + e.prod_text};
-  auto over = [&](const char* what, double err, double bound) -> CheckResult {
-    if (std::isnan(err) || err <= bound + margin) return std::nullopt;
-    return Failure{std::string("oracle-") + what,
-                   std::string(what) + fmt(" error %.3g * scale exceeds bound %.3g", err, bound + margin) +
-                       "; oracle: " + e.truth_text + "; production: " + e.prod_text};
+                                         "; answer: " + e.prod_text});
+  auto over = [&](const char* what, double err, double bound) {
+    if (std::isnan(err) || err <= bound) return;
+    out.push_back({std::string("oracle-") + what,
+                   std::string(what) + fmt(" error %.3g * scale exceeds bound %.3g", err, bound) +
+                       "; oracle: " + e.truth_text + "; answer: " + e.prod_text});
   };
   const bool point_claimed = !claims || claims->point_in_both;
-  if (auto f = over("unit", e.unit_err, tol.unit)) return f;
-  if (auto f = judge_depth(id, e, claims, tol.depth, margin)) return f;
+  over("unit", e.unit_err, tol.unit);
+  if (auto f = judge_depth(id, e, claims, tol.depth)) out.push_back(*f);
   // A consistent contact's quality (production's claim: the depth at most
   // depth_ratio times the penetration depth), certainly exceeded.
   if (!claims && tol.depth_ratio > 0 && e.depth_ratio_lo > tol.depth_ratio)
-    return Failure{"oracle-depth-ratio",
+    out.push_back({"oracle-depth-ratio",
                    fmt("depth / penetration depth at least %.4g exceeds bound %.3g", e.depth_ratio_lo, tol.depth_ratio) +
-                       "; oracle: " + e.truth_text + "; production: " + e.prod_text};
-  if (auto f = over("normal", e.normal_err, tol.normal)) return f;
-  if (point_claimed)
-    if (auto f = over("point", e.point_err, tol.point)) return f;
-  if (auto f = over("t", e.t_err, tol.t)) return f;
-  if (!e.extra_failure.empty()) return Failure{"oracle-bracketing", e.extra_failure + "; oracle: " + e.truth_text + "; production: " + e.prod_text};
-  return std::nullopt;
+                       "; oracle: " + e.truth_text + "; answer: " + e.prod_text});
+  over("normal", e.normal_err, tol.normal);
+  if (point_claimed) over("point", e.point_err, tol.point);
+  over("t", e.t_err, tol.t);
+  if (!e.extra_failure.empty())
+    out.push_back({"oracle-bracketing", e.extra_failure + "; oracle: " + e.truth_text + "; answer: " + e.prod_text});
+  return out;
+}
+
+CheckResult judge(QueryId id, const Evaluation& e, const Claims* claims) {
+  std::vector<Failure> all = judge_every(id, e, claims);
+  if (all.empty()) return std::nullopt;
+  return std::move(all.front());
 }
 
 namespace {
@@ -157,7 +183,8 @@ double cone_distance(Vec3 n, Vec3 g1, Vec3 g2) {
 }  // namespace
 
 // Error of production's outward normal at its own hit point x (exact).
-double cylinder_normal_error(const oracle::QCylinder& c, const oracle::QVec& x, Vec3 n, const oracle::Q& qnear) {
+double cylinder_normal_error(const oracle::QCylinder& c, const oracle::QVec& x, Vec3 n, const oracle::Q& qnear,
+                             const oracle::Q& qinput) {
   const oracle::QVec d = c.q - c.p;
   const oracle::Q dd = oracle::dot(d, d);
   const oracle::QVec xr = x - c.p;
@@ -174,23 +201,31 @@ double cylinder_normal_error(const oracle::QCylinder& c, const oracle::QVec& x, 
   else if (gs.lo < 0) gs = {oracle::Q(0), gs.hi > -gs.lo ? gs.hi : -gs.lo};
   const Vec3 u = unit_of(d);
   const bool near_p = gp.lo <= qnear, near_q = gq.lo <= qnear, near_s = gs.lo <= qnear;
+  // A subject whose working precision moves the input by qinput knows the
+  // axis only to within 2 qinput / L (radians): its cap normals may tilt so.
+  const double tilt = qinput > 0 ? oracle::to_double(oracle::Q(2) * qinput / len.lo) * (1 + 0x1p-40) : 0.0;
+  auto cap = [&](double dist) { return std::fmax(0.0, dist - tilt); };
   double best = INFINITY;
-  if (near_p) best = std::fmin(best, length(n - (-u)));
-  if (near_q) best = std::fmin(best, length(n - u));
+  if (near_p) best = std::fmin(best, cap(length(n - (-u))));
+  if (near_q) best = std::fmin(best, cap(length(n - u)));
   // A cylinder thinner than `near` has no meaningful radial direction at
   // this tolerance (its hit point's offset from the axis is noise).
   if (rho2 > 0 && c.r > qnear) {
     const Vec3 radial = unit_of(perp);
-    if (near_s) best = std::fmin(best, length(n - radial));
-    if (near_s && near_p) best = std::fmin(best, cone_distance(n, -u, radial));
-    if (near_s && near_q) best = std::fmin(best, cone_distance(n, u, radial));
+    // The side's normals at the points within `near` of x turn by up to
+    // near / r (radians) from x's: the truth cannot tell them apart.
+    const double turn = oracle::to_double(qnear / c.r) * (1 + 0x1p-40);
+    auto side = [&](double d) { return std::fmax(0.0, d - turn - tilt); };
+    if (near_s) best = std::fmin(best, side(length(n - radial)));
+    if (near_s && near_p) best = std::fmin(best, side(cone_distance(n, -u, radial)));
+    if (near_s && near_q) best = std::fmin(best, side(cone_distance(n, u, radial)));
   } else if (near_s) {
     // On a cylinder thinner than `near` (r = 0: a segment):
     // every perpendicular is a side normal, and next to a cap the cone is
     // the whole hemisphere around the cap normal.
-    best = std::fmin(best, std::fabs(dot(n, u)));
-    if (near_p) best = std::fmin(best, std::fmax(0.0, dot(n, u)));
-    if (near_q) best = std::fmin(best, std::fmax(0.0, -dot(n, u)));
+    best = std::fmin(best, cap(std::fabs(dot(n, u))));
+    if (near_p) best = std::fmin(best, cap(std::fmax(0.0, dot(n, u))));
+    if (near_q) best = std::fmin(best, cap(std::fmax(0.0, -dot(n, u))));
   }
   return best;  // INFINITY when x is near no feature (then t_err reports it)
 }

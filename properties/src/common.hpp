@@ -45,25 +45,33 @@ double rel_error(const oracle::QInterval& x, double v, double scale);
 
 /// Error of an outward normal n of the cylinder at a point x on (or near) its
 /// surface: its distance from the normal cone of the features (caps, side,
-/// rims) within qnear of x; INFINITY when x is near no feature.
-double cylinder_normal_error(const oracle::QCylinder& c, const oracle::QVec& x, Vec3 n, const oracle::Q& qnear);
+/// rims) within qnear of x; INFINITY when x is near no feature. The side's
+/// normals within qnear of x count (they turn by qnear / r); `qinput`, how
+/// far the subject's precision moves the input (Tolerances::input * scale),
+/// tilts the cap normals by up to 2 qinput / L.
+double cylinder_normal_error(const oracle::QCylinder& c, const oracle::QVec& x, Vec3 n, const oracle::Q& qnear,
+                             const oracle::Q& qinput = oracle::Q(0));
 
 /// Sets e.depth_short and e.depth_over: where the subject's depth lies
 /// certainly below or above the certified penetration depth `pd`.
 void score_depth_sides(Evaluation& e, const oracle::QInterval& pd, double depth);
 
-/// The margin a subject claims (Claims::margin, a multiple of scale); 0 for
-/// production and every subject without claims of its own.
+/// The bounds subject `impl` of query id is held to (bounds_of its claims).
 template <class Impl>
-double claimed_margin(const Impl& impl) {
-  return impl.claims ? impl.claims->margin : 0.0;
+Tolerances bounds(QueryId id, const Impl& impl) {
+  return bounds_of(id, impl.claims);
 }
-
-/// A subject's claimed margin widens the band of touching on a valid case's
-/// evaluation: within margin * scale of touching the case counts as near
-/// it (the checks that spare the band spare it), and a disagreement there
-/// is excused.
-void widen_band(Evaluation& e, double margin);
+/// The bounds of a case's query for subject `impl`.
+template <class Case, class Impl>
+Tolerances bounds_for(const Impl& impl) {
+  return bounds_of(query_of_case<Case>, impl.claims);
+}
+/// Whether exact moves of the scene must move the subject's answer bit for
+/// bit (Precision::exact_moves; production: yes).
+template <class Impl>
+bool exact_moves(const Impl& impl) {
+  return !impl.claims || impl.claims->precision.exact_moves;
+}
 
 /// The subject's answer of a query kind: a contact, or a cast's or sweep's hit.
 template <QueryKind K>

@@ -69,7 +69,7 @@ void settle_verdict(Evaluation& e, const Truth& truth, const oracle::Q& band, bo
 /// is finite, its normal unit (the query's `unit` bound) and its depth >= 0;
 /// and where `exact` (a valid case the engine can judge) the depth is within
 /// `depth_bound` * scale of the certified overlap of the shapes along the
-/// returned normal.
+/// returned normal (a bound of the subject's: bounds()).
 template <class Case, class Impl>
 CheckResult consistent_contact(QueryId id, const Case& c, const Impl& impl, bool exact, double depth_bound) {
   const bool ov = impl.overlap(c.a, c.b);
@@ -77,14 +77,13 @@ CheckResult consistent_contact(QueryId id, const Case& c, const Impl& impl, bool
   if (ov != ct.hit) return Failure{"consistency-overlap-vs-collide", describe(ct, ov)};
   if (!ct.hit) return std::nullopt;
   if (!finite_contact(ct)) return Failure{"consistency-finite", describe(ct, ov)};
-  if (std::fabs(length(ct.normal) - 1) > tolerances(id).unit) return Failure{"consistency-unit-normal", describe(ct, ov)};
+  if (std::fabs(length(ct.normal) - 1) > bounds(id, impl).unit) return Failure{"consistency-unit-normal", describe(ct, ov)};
   if (!(ct.depth >= 0)) return Failure{"consistency-depth-nonnegative", describe(ct, ov)};
   if (!exact) return std::nullopt;
   const oracle::QInterval along =
       overlap_along(oracle::make_shape(c.a), oracle::make_shape(c.b), oracle::to_q(ct.normal));
   if (!std::isfinite(oracle::to_double(along.hi))) return std::nullopt;  // beyond the doubles: saturated depth
   const double err = rel_error(along, ct.depth, oracle::case_scale(c.a, c.b));
-  depth_bound += claimed_margin(impl);
   if (err > depth_bound)
     return Failure{"consistency-depth-along-normal",
                    fmt("|depth - overlap along normal| = %.3g * scale > %.3g; ", err, depth_bound) + describe(ct, ov)};
@@ -94,11 +93,13 @@ CheckResult consistent_contact(QueryId id, const Case& c, const Impl& impl, bool
 /// Same solid, other representation (check_symmetry): the verdicts of c0 and
 /// c1 agree unless either is within the verdict band (the engine is asked
 /// only when they differ); two hits' depths agree within `depth_bound` *
-/// scale (c0's scale) wherever `held(c0)` says c0's depth is held to a bound
-/// at all (asked only when they differ).
+/// scale (c0's scale; a bound of the subject's: bounds()) wherever
+/// `held(c0)` says c0's depth is held to a bound at all (asked only when
+/// they differ).
 template <class Case, class Impl, class Held>
 CheckResult same_answer(const char* what, const Case& c0, const Case& c1, const Impl& impl, double depth_bound,
                         Held&& held) {
+  if (!subject_states(c1, impl)) return std::nullopt;  // a case the subject does not state
   const bool o0 = impl.overlap(c0.a, c0.b), o1 = impl.overlap(c1.a, c1.b);
   if (o0 != o1) {
     const Evaluation e0 = evaluate(c0, impl), e1 = evaluate(c1, impl);
@@ -109,7 +110,7 @@ CheckResult same_answer(const char* what, const Case& c0, const Case& c1, const 
   if (!o0) return std::nullopt;
   const Contact k0 = impl.collide(c0.a, c0.b), k1 = impl.collide(c1.a, c1.b);
   const double d = std::fabs(k0.depth - k1.depth) / oracle::case_scale(c0.a, c0.b);
-  if (d > depth_bound + claimed_margin(impl) && held(c0))
+  if (d > depth_bound && held(c0))
     return Failure{std::string(what) + "-depth",
                    fmt("depth differs by %.3g * scale; ", d) + describe(k0, o0) + " vs " + describe(k1, o1)};
   return std::nullopt;
@@ -129,7 +130,7 @@ CheckResult same_answer(const char* what, const Case& c0, const Case& c1, const 
 template <class Case, class OutsideB>
 void hold_to_polytope_truth(Evaluation& e, const Case& c, const Contact& ct, const Contact* peer,
                             OutsideB&& outside_b) {
-  const Tolerances tol = tolerances(query_of_case<Case>);
+  const Tolerances& tol = e.tol;
   const oracle::ConvexShape cyl = oracle::make_shape(c.a), shape = oracle::make_shape(c.b);
   const oracle::Q band = times_scale(tol.verdict, e.scale);
   const PolytopeTruth truth = polytope_truth(cyl, shape, band);
@@ -140,10 +141,10 @@ void hold_to_polytope_truth(Evaluation& e, const Case& c, const Contact& ct, con
 }
 
 /// check_monotone's test: `bigger`, a superset of c, lost c's overlap, with
-/// neither case within the band of touching.
+/// neither case within the subject's band of touching.
 template <class Case, class Impl>
 bool overlap_lost(const Case& c, const Case& bigger, const Impl& impl) {
-  return !impl.overlap(bigger.a, bigger.b) && !evaluate(c, impl).near_boundary &&
+  return subject_states(bigger, impl) && !impl.overlap(bigger.a, bigger.b) && !evaluate(c, impl).near_boundary &&
          !evaluate(bigger, impl).near_boundary;
 }
 
@@ -171,9 +172,12 @@ CheckResult verdict_kept(QueryId id, const std::string& what, const Case& c, con
                          bool ov2) {
   if (ov == ov2) return std::nullopt;
   const Evaluation e0 = evaluate(c, impl), e1 = evaluate(t, impl);
-  const double slack = move == 5 ? rigid_slack * std::max(e0.scale, e1.scale) : 0.0;
+  // The band at the larger of the two scales: the subject answers each case
+  // to its band at that case's scale.
+  const double larger = std::max(e0.scale, e1.scale);
+  const double slack = move == 5 ? rigid_slack * larger : 0.0;
   auto near = [&](const Evaluation& e) {
-    return e.near_boundary || std::fabs(e.signed_distance) <= tolerances(id).verdict * e.scale + slack;
+    return e.near_boundary || std::fabs(e.signed_distance) <= bounds(id, impl).verdict * larger + slack;
   };
   if (!near(e0) && !near(e1))
     return Failure{what, "verdict changed outside the band: " + describe(ct, ov) + " vs " + describe(ct2, ov2)};
@@ -214,7 +218,8 @@ struct MovedAnswers {
 /// verdict, and `kept(t, answers)` judges the two hits by the query's rule
 /// (bit-identical, or another answer where a tie or a free normal allows
 /// one); a rounded move keeps the verdict outside the band, the rigid motion
-/// with `rigid_slack(c)` * scale more.
+/// with `rigid_slack(c)` * scale more. A subject that does not claim exact
+/// moves (Precision::exact_moves) has every move held like a rounded one.
 template <class Case, class Impl, class InContract, class Slack, class Kept>
 CheckResult collide_metamorphic(const Case& c, int move, const Impl& impl, InContract in_contract, Slack rigid_slack,
                                 Kept kept) {
@@ -222,11 +227,11 @@ CheckResult collide_metamorphic(const Case& c, int move, const Impl& impl, InCon
   const moves::Move m{move};
   if (!moves::applicable(c, move)) return std::nullopt;
   const Case t{moves::apply(m, c.a), moves::apply(m, c.b)};
-  if (!in_contract(t)) return std::nullopt;
+  if (!in_contract(t) || !subject_states(t, impl)) return std::nullopt;
   const bool ov = impl.overlap(c.a, c.b), ov2 = impl.overlap(t.a, t.b);
   const Contact ct = impl.collide(c.a, c.b), ct2 = impl.collide(t.a, t.b);
   const std::string what = std::string("metamorphic-") + move_name(move);
-  if (m.exact()) {
+  if (m.exact() && exact_moves(impl)) {
     if (ov != ov2 || ct.hit != ct2.hit) return Failure{what, "verdict changed: " + describe(ct, ov) + " vs " + describe(ct2, ov2)};
     if (!ct.hit) return std::nullopt;
     return kept(t, MovedAnswers{m, what, ct, ct2, ov, ov2});

@@ -18,25 +18,25 @@ namespace geomcheck {
 
 namespace {
 
-CheckResult robust_contact(bool valid, bool ov, const Contact& ct) {
+CheckResult robust_contact(bool valid, bool ov, const Contact& ct, double unit) {
   if (!valid) {
     if (ov || ct.hit) return Failure{"robust-invalid-input", "invalid input reported a hit: " + describe(ct, ov)};
     return std::nullopt;
   }
   if (ct.hit && !finite_contact(ct)) return Failure{"robust-finite-output", describe(ct, ov)};
-  if (ct.hit && !(std::fabs(length(ct.normal) - 1) <= 1e-12)) return Failure{"robust-unit-normal", describe(ct, ov)};
+  if (ct.hit && !(std::fabs(length(ct.normal) - 1) <= unit)) return Failure{"robust-unit-normal", describe(ct, ov)};
   if (ov != ct.hit) return Failure{"robust-overlap-vs-collide", describe(ct, ov)};
   return std::nullopt;
 }
 
-CheckResult robust_hit(bool valid, const CastHit& h) {
+CheckResult robust_hit(bool valid, const CastHit& h, double unit) {
   if (!valid) {
     if (h.hit) return Failure{"robust-invalid-input", "invalid input reported a hit: " + describe(h)};
     return std::nullopt;
   }
   if (!h.hit) return std::nullopt;
   if (!finite_hit(h) || !(h.t >= 0 && h.t <= 1)) return Failure{"robust-finite-output", describe(h)};
-  if (!h.starts_inside && !(std::fabs(length(h.normal) - 1) <= 1e-12)) return Failure{"robust-unit-normal", describe(h)};
+  if (!h.starts_inside && !(std::fabs(length(h.normal) - 1) <= unit)) return Failure{"robust-unit-normal", describe(h)};
   return std::nullopt;
 }
 
@@ -44,27 +44,50 @@ CheckResult robust_hit(bool valid, const CastHit& h) {
 
 namespace {
 
+/// check_robust: any input; a normal's length held to 100 times the
+/// subject's unit bound (the consistency check holds a valid case's to the
+/// bound itself; robustness asks only that no input, however wild, gives a
+/// normal that is not a direction).
 template <class Case>
 CheckResult robust(const Case& c, const ImplOfCase<Case>& impl) {
   constexpr QueryKind kind = QueryTraits<query_of_case<Case>>::kind;
   const bool valid = is_valid(c.a) && is_valid(c.b);
-  if constexpr (kind == QueryKind::Collide) return robust_contact(valid, impl.overlap(c.a, c.b), impl.collide(c.a, c.b));
-  else if constexpr (kind == QueryKind::Cast) return robust_hit(valid, impl.cast(c.a, c.b));
-  else return robust_hit(valid, impl.sweep(c.a, c.b));
+  const double unit = 100 * bounds_for<Case>(impl).unit;
+  if constexpr (kind == QueryKind::Collide) return robust_contact(valid, impl.overlap(c.a, c.b), impl.collide(c.a, c.b), unit);
+  else if constexpr (kind == QueryKind::Cast) return robust_hit(valid, impl.cast(c.a, c.b), unit);
+  else return robust_hit(valid, impl.sweep(c.a, c.b), unit);
 }
 
 /// Every check; `known`, when given, is impl's evaluation of c (judged
-/// instead of evaluating again).
+/// instead of evaluating again). With `every`, each failing property is
+/// appended there and the checks go on (the first is returned); without,
+/// they stop at the first.
 template <class Case>
-CheckResult all(const Case& c, const ImplOfCase<Case>& impl, const Evaluation* known = nullptr) {
-  if (auto f = robust(c, impl)) return f;
-  if (!is_valid(c.a) || !is_valid(c.b)) return std::nullopt;
-  if (auto f = known ? judge(query_of_case<Case>, *known, impl.claims) : check_oracle(c, impl)) return f;
-  if (auto f = check_consistency(c, impl)) return f;
-  if (auto f = check_symmetry(c, impl)) return f;
+CheckResult all(const Case& c, const ImplOfCase<Case>& impl, const Evaluation* known = nullptr,
+                std::vector<Failure>* every = nullptr) {
+  CheckResult first;
+  // Notes a failure; true: stop here.
+  auto note = [&](CheckResult f) {
+    if (!f) return false;
+    if (!first) first = *f;
+    if (!every) return true;
+    every->push_back(std::move(*f));
+    return false;
+  };
+  if (note(robust(c, impl))) return first;
+  if (!is_valid(c.a) || !is_valid(c.b)) return first;
+  if (every) {
+    const Evaluation e = known ? *known : evaluate(c, impl);
+    for (Failure& f : judge_every(query_of_case<Case>, e, impl.claims)) note(std::move(f));
+  } else if (note(known ? judge(query_of_case<Case>, *known, impl.claims) : check_oracle(c, impl))) {
+    return first;
+  }
+  if (note(check_consistency(c, impl))) return first;
+  if (note(check_symmetry(c, impl))) return first;
   for (int m = 0; m < kNumMoves; ++m)
-    if (auto f = check_metamorphic(c, m, impl)) return f;
-  return check_monotone(c, impl);
+    if (note(check_metamorphic(c, m, impl))) return first;
+  note(check_monotone(c, impl));
+  return first;
 }
 
 // --- the memo of evaluations (set_evaluation_memo) ---------------------------
@@ -83,7 +106,7 @@ bool same(const CastHit& a, const CastHit& b) {
 
 /// The last evaluations of one query on this thread, keyed by what an
 /// evaluation is a function of (the case, bit for bit; the subject's
-/// answers; its claimed margin).
+/// answers; the bounds it is held to).
 template <class Case, class Answer>
 class Memo {
   // Shapes are plain doubles: equal bits, equal case.
@@ -92,7 +115,7 @@ class Memo {
     Case c;
     Answer answer;
     bool prod_hit = false;
-    double margin = 0;
+    Tolerances tol{};
     Evaluation e;
     oracle::Stage stage = oracle::Stage::None;  // the deepest engine stage that computed e
   };
@@ -100,18 +123,18 @@ class Memo {
   int size_ = 0, next_ = 0;
 
  public:
-  const Entry* find(const Case& c, const Answer& answer, bool prod_hit, double margin) const {
+  const Entry* find(const Case& c, const Answer& answer, bool prod_hit, const Tolerances& tol) const {
     for (int i = 0; i < size_; ++i) {
       const Entry& x = ring_[i];
-      if (x.prod_hit == prod_hit && same(x.margin, margin) && same(x.answer, answer) &&
+      if (x.prod_hit == prod_hit && std::memcmp(&x.tol, &tol, sizeof tol) == 0 && same(x.answer, answer) &&
           std::memcmp(&x.c, &c, sizeof c) == 0)
         return &x;
     }
     return nullptr;
   }
-  void put(const Case& c, const Answer& answer, bool prod_hit, double margin, const Evaluation& e, oracle::Stage stage) {
+  void put(const Case& c, const Answer& answer, bool prod_hit, const Tolerances& tol, const Evaluation& e, oracle::Stage stage) {
     Entry& x = ring_[next_];
-    x = Entry{c, answer, prod_hit, margin, e, stage};
+    x = Entry{c, answer, prod_hit, tol, e, stage};
     x.e.peer = Evaluation::PeerScore{};
     next_ = (next_ + 1) % static_cast<int>(ring_.size());
     size_ = std::max(size_, next_ == 0 ? static_cast<int>(ring_.size()) : next_);
@@ -131,14 +154,14 @@ Memo<Case, Answer>& memo() {
 template <class Case, class Peer>
 Evaluation evaluate_pair(const Case& c, const ImplOfCase<Case>& impl, const Peer* peer) {
   Evaluation e;
+  e.tol = bounds_for<Case>(impl);
   using Answer = typename SubjectAnswerOf<QueryTraits<query_of_case<Case>>::kind>::type;
   Answer answer;
   if (!start_evaluation(e, c, impl, answer)) return e;
-  const double margin = claimed_margin(impl);
   auto& m = memo<Case, Answer>();
   const bool use = g_memo.load(std::memory_order_relaxed);
   if (use && !peer) {
-    if (const auto* known = m.find(c, answer, e.prod_hit, margin)) {
+    if (const auto* known = m.find(c, answer, e.prod_hit, e.tol)) {
       oracle::note_stage(known->stage);
       return known->e;
     }
@@ -146,10 +169,9 @@ Evaluation evaluate_pair(const Case& c, const ImplOfCase<Case>& impl, const Peer
   const oracle::Stage before = oracle::deepest_stage();
   oracle::reset_deepest_stage();
   hold_to_truth(e, c, answer, peer);
-  widen_band(e, margin);
   const oracle::Stage stage = oracle::deepest_stage();
   oracle::note_stage(before);  // the thread's deepest stage: the larger of the two
-  if (use) m.put(c, answer, e.prod_hit, margin, e, stage);
+  if (use) m.put(c, answer, e.prod_hit, e.tol, e, stage);
   return e;
 }
 
@@ -173,6 +195,12 @@ GEOMCHECK_QUERY_LIST(GEOMCHECK_X)
   CheckResult check_all(const PairCase<A, B, QueryId::id>& c, const ImplOf<QueryId::id>& impl) { return all(c, impl); }    \
   CheckResult check_all(const PairCase<A, B, QueryId::id>& c, const Evaluation& e, const ImplOf<QueryId::id>& impl) {     \
     return all(c, impl, &e);                                                                                 \
+  }                                                                                                          \
+  std::vector<Failure> check_every(const PairCase<A, B, QueryId::id>& c, const ImplOf<QueryId::id>& impl,     \
+                                   const Evaluation* e) {                                                    \
+    std::vector<Failure> every;                                                                              \
+    all(c, impl, e, &every);                                                                                 \
+    return every;                                                                                            \
   }
 GEOMCHECK_QUERY_LIST(GEOMCHECK_X)
 #undef GEOMCHECK_X

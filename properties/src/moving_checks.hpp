@@ -40,14 +40,14 @@ bool start_evaluation(Evaluation& e, const Case& c, const Impl& impl, CastHit& h
 
 /// check_consistency's test of a hit on its own (none on a miss): finite, t
 /// in [0, 1], starting inside only with t == 0 and a zero normal, otherwise a
-/// unit normal (query id's `unit` bound).
-inline CheckResult consistent_hit(QueryId id, const CastHit& h) {
+/// unit normal (the `unit` bound of a subject with these claims).
+inline CheckResult consistent_hit(QueryId id, const CastHit& h, const Claims* claims) {
   if (!h.hit) return std::nullopt;
   if (!finite_hit(h)) return Failure{"consistency-finite", describe(h)};
   if (!(h.t >= 0 && h.t <= 1)) return Failure{"consistency-t-range", describe(h)};
   if (h.starts_inside && (h.t != 0 || !(h.normal == Vec3{})))
     return Failure{"consistency-starts-inside", "starts_inside needs t == 0 and a zero normal: " + describe(h)};
-  if (!h.starts_inside && std::fabs(length(h.normal) - 1) > tolerances(id).unit)
+  if (!h.starts_inside && std::fabs(length(h.normal) - 1) > bounds_of(id, claims).unit)
     return Failure{"consistency-unit-normal", describe(h)};
   return std::nullopt;
 }
@@ -56,6 +56,7 @@ inline CheckResult consistent_hit(QueryId id, const CastHit& h) {
 /// within the verdict band of touching (the truth is asked only when they differ).
 template <class Case, class Impl>
 CheckResult same_verdict(const char* what, const Case& c0, const Case& c1, const Impl& impl) {
+  if (!subject_states(c1, impl)) return std::nullopt;  // a case the subject does not state
   const CastHit h0 = moving_answer(c0, impl), h1 = moving_answer(c1, impl);
   if (h0.hit == h1.hit) return std::nullopt;
   const Evaluation e0 = evaluate(c0, impl), e1 = evaluate(c1, impl);
@@ -69,11 +70,12 @@ CheckResult same_verdict(const char* what, const Case& c0, const Case& c1, const
 template <class Case, class Impl>
 CheckResult caps_swapped(const Case& c, const Impl& impl) {
   const Case sw{c.a, {c.b.q, c.b.p, c.b.r}};
+  if (!subject_states(sw, impl)) return std::nullopt;
   if (auto f = same_verdict("symmetry-caps-swapped", c, sw, impl)) return f;
   const CastHit h0 = moving_answer(c, impl), h1 = moving_answer(sw, impl);
   if (h0.hit && h1.hit && h0.starts_inside != h1.starts_inside) {
     const Evaluation e = evaluate(c, impl);
-    if (!e.near_boundary && !(e.t_err <= tolerances(query_of_case<Case>).t))
+    if (!e.near_boundary && !(e.t_err <= e.tol.t))
       return Failure{"symmetry-caps-swapped-start", describe(h0) + " vs " + describe(h1)};
   }
   return std::nullopt;
@@ -98,7 +100,7 @@ CheckResult exact_move_kept(const std::string& what, const moves::Move& m, const
 /// lost c's hit, with neither case within the band of touching.
 template <class Case, class Impl>
 bool hit_lost(const Case& c, const Case& bigger, const Impl& impl) {
-  return !moving_answer(bigger, impl).hit && !evaluate(c, impl).near_boundary &&
+  return subject_states(bigger, impl) && !moving_answer(bigger, impl).hit && !evaluate(c, impl).near_boundary &&
          !evaluate(bigger, impl).near_boundary;
 }
 
@@ -116,7 +118,9 @@ CheckResult cylinder_b_radius_kept(const Case& c, const Impl& impl) {
 /// shapes (skipped where it is not applicable or leaves the case invalid: a
 /// rounded move can collapse an axis one ulp long); an exact move keeps the
 /// answer bit for bit (exact_move_kept; the side normal is free on a
-/// cylinder B thinner than the rounding level), a rounded one keeps the
+/// cylinder B thinner than the rounding level; a subject that does not claim
+/// exact moves, Precision::exact_moves, has them held like rounded ones), a
+/// rounded one keeps the
 /// verdict outside the band (same_verdict), and the rigid motion (move 5),
 /// which also moves the solids by rigid_slack, changes the verdict only where
 /// `rigid_certain(t, what, h0, h1)` says that change is a failure.
@@ -126,9 +130,9 @@ CheckResult moving_metamorphic(const Case& c, int move, const Impl& impl, RigidC
   const moves::Move m{move};
   if (!moves::applicable(c, move)) return std::nullopt;
   const Case t{moves::apply(m, c.a), moves::apply(m, c.b)};
-  if (!valid_case(t)) return std::nullopt;
+  if (!valid_case(t) || !subject_states(t, impl)) return std::nullopt;
   const std::string what = std::string("metamorphic-") + move_name(move);
-  if (m.exact()) return exact_move_kept(what, m, c, t, impl, !(c.b.r > 64 * 0x1p-52 * oracle::case_scale(c.a, c.b)));
+  if (m.exact() && exact_moves(impl)) return exact_move_kept(what, m, c, t, impl, !(c.b.r > 64 * 0x1p-52 * oracle::case_scale(c.a, c.b)));
   if (move != 5) return same_verdict(what.c_str(), c, t, impl);
   const CastHit h0 = moving_answer(c, impl), h1 = moving_answer(t, impl);
   if (h0.hit == h1.hit) return std::nullopt;

@@ -227,26 +227,45 @@ Json claims_json(const QueryReport& r) {
 // A query's section: its verdicts, errors, depth ratio, failures, drawings.
 void write_query_section(std::ostream& h, QueryReport& r, const std::filesystem::path& report_dir) {
   const bool clean = r.beyond == 0 && r.check_failures == 0;
+  // FCL's column only where FCL was asked (a campaign's first cases); the
+  // subject's column under its own name.
+  const bool fcl = r.fcl_ok > 0 || r.fcl_disagree > 0 || !r.fcl_depth.v.empty() || !r.fcl_t_gap.v.empty();
+  auto row = [&](const std::string& label, const std::string& mine, const std::string& theirs = "") {
+    h << "<tr><td class='l'>" << label << "</td>" << mine;
+    if (fcl) h << "<td>" << theirs << "</td>";
+    h << "</tr>";
+  };
+  auto cell = [](const std::string& text, const char* cls = nullptr) {
+    return std::string("<td") + (cls ? std::string(" class='") + cls + "'" : std::string()) + ">" + text + "</td>";
+  };
+  auto num = [](double x) {
+    std::ostringstream o;
+    o << jnum(x);
+    return o.str();
+  };
   h << "<h2 id='" << r.name << "'>" << r.name << "</h2><p>" << html(r.summary) << "</p><p class='claims'>"
     << html(claims_text(r)) << "</p><p class='"
     << (clean ? "ok'>verified: no disagreement beyond the band, every property holds" : "bad'>FAILURES found")
-    << "</p><table><tr><th class='l'>measure</th><th>production</th><th>FCL</th></tr>"
-    << "<tr><td class='l'>cases run of requested (valid)</td><td>" << r.cases << " of " << r.requested << " ("
-    << r.valid << ")" << (r.stopped_by_time ? "; stopped by --seconds" : "") << "</td><td>" << r.fcl_ok
-    << " answered</td></tr>"
-    << "<tr><td class='l'>hit rate (oracle " << jnum(r.valid ? double(r.truth_hits) / r.valid : NAN) << ")</td><td>"
-    << jnum(r.valid ? double(r.prod_hits) / r.valid : NAN) << "</td><td></td></tr>"
-    << "<tr><td class='l'>verdict disagreements</td><td>" << r.disagree << "</td><td>" << r.fcl_disagree << "</td></tr>"
-    << "<tr><td class='l'>beyond the band (" << jnum(r.tol.verdict) << " &times; scale)</td><td class='"
-    << (r.beyond ? "bad" : "ok") << "'>" << r.beyond << "</td><td class='" << (r.fcl_beyond ? "bad" : "ok") << "'>"
-    << r.fcl_beyond << "</td></tr>"
-    << "<tr><td class='l'>worst disagreement margin</td><td>" << jnum(r.worst_margin) << "</td><td></td></tr>"
-    << "<tr><td class='l'>property failures</td><td class='" << (r.check_failures ? "bad" : "ok") << "'>"
-    << r.check_failures << "</td><td></td></tr>"
-    << "<tr><td class='l'>production time per query</td><td>" << jnum(r.prod_ns) << " ns</td><td></td></tr>"
-    << "<tr><td class='l'>oracle+checks time per case</td><td>" << jnum(r.oracle_us) << " &micro;s ("
-    << jnum(r.oracle_us > 0 ? 1e6 / r.oracle_us : NAN) << " cases/s per core)</td><td></td></tr>"
-    << "</table><table><tr><th class='l'>verdict</th><th>cases</th></tr>";
+    << "</p><table><tr><th class='l'>measure</th><th>" << html(r.subject) << "</th>" << (fcl ? "<th>FCL</th>" : "")
+    << "</tr>";
+  row("cases run of requested (valid)",
+      cell(std::to_string(r.cases) + " of " + std::to_string(r.requested) + " (" + std::to_string(r.valid) + ")" +
+           (r.stopped_by_time ? "; stopped by --seconds" : "") +
+           (r.not_expressed ? "; " + std::to_string(r.not_expressed) + " not stated by the subject" : "")),
+      std::to_string(r.fcl_ok) + " answered");
+  row("hit rate (oracle " + num(r.valid ? double(r.truth_hits) / r.valid : NAN) + ")",
+      cell(num(r.valid ? double(r.prod_hits) / r.valid : NAN)));
+  row("verdict disagreements", cell(std::to_string(r.disagree)), std::to_string(r.fcl_disagree));
+  h << "<tr><td class='l'>beyond the band (" << jnum(r.tol.verdict) << " &times; scale)</td><td class='"
+    << (r.beyond ? "bad" : "ok") << "'>" << r.beyond << "</td>";
+  if (fcl) h << "<td class='" << (r.fcl_beyond ? "bad" : "ok") << "'>" << r.fcl_beyond << "</td>";
+  h << "</tr>";
+  row("worst disagreement margin", cell(num(r.worst_margin)));
+  row("cases failing a property", cell(std::to_string(r.check_failures), r.check_failures ? "bad" : "ok"));
+  row(html(r.subject) + " time per query", cell(num(r.prod_ns) + " ns"));
+  row("oracle+checks time per case",
+      cell(num(r.oracle_us) + " &micro;s (" + num(r.oracle_us > 0 ? 1e6 / r.oracle_us : NAN) + " cases/s per core)"));
+  h << "</table><table><tr><th class='l'>verdict</th><th>cases</th></tr>";
   for (const auto& [k, v] : r.verdicts) h << "<tr><td class='l'>" << k << "</td><td>" << v << "</td></tr>";
   if (!r.truth_stages.empty()) {
     h << "</table><table><tr><th class='l'>truth decided by</th><th>cases</th><th>share</th></tr>";
@@ -260,20 +279,22 @@ void write_query_section(std::ostream& h, QueryReport& r, const std::filesystem:
   error_row(h, "normal", r.normal, r.tol.normal);
   error_row(h, "point", r.point, r.tol.point);
   error_row(h, "t", r.t, r.tol.t);
-  error_row(h, "FCL depth", r.fcl_depth, 0);
-  error_row(h, "FCL normal", r.fcl_normal, 0);
-  error_row(h, "FCL point", r.fcl_point, 0);
-  error_row(h, "FCL distance", r.fcl_distance, 0);
-  error_row(h, "FCL t", r.fcl_t_gap, 0);
-  error_row(h, "FCL |t - t_exact| (absolute; sweeps: the first 10,000 cases)", r.fcl_t, 0);
+  if (fcl) {
+    error_row(h, "FCL depth", r.fcl_depth, 0);
+    error_row(h, "FCL normal", r.fcl_normal, 0);
+    error_row(h, "FCL point", r.fcl_point, 0);
+    error_row(h, "FCL distance", r.fcl_distance, 0);
+    error_row(h, "FCL t", r.fcl_t_gap, 0);
+    error_row(h, "FCL |t - t_exact| (absolute; sweeps: the first 10,000 cases)", r.fcl_t, 0);
+  }
   h << "</table>";
   if (r.depth_is_bound) {
     // The depth is the overlap along the returned normal, not the minimal
     // translation: how much larger than the penetration depth it is.
     Series& q = r.depth_ratio;
     h << "<table><tr><th class='l'>depth / penetration depth</th><th>n</th><th>min</th><th>p50</th><th>p90</th>"
-         "<th>p99</th><th>max</th></tr><tr><td class='l'>production (overlapping cases, penetration depth "
-         "certified to 1%)</td><td>"
+         "<th>p99</th><th>max</th></tr><tr><td class='l'>"
+      << html(r.subject) << " (overlapping cases, penetration depth certified to 1%)</td><td>"
       << q.v.size() << "</td><td>" << jnum(q.pct(0.0)) << "</td><td>" << jnum(q.pct(0.5)) << "</td><td>"
       << jnum(q.pct(0.9)) << "</td><td>" << jnum(q.pct(0.99)) << "</td><td>" << jnum(q.pct(1.0))
       << "</td></tr></table><p>The contact's depth is the overlap of the shapes along its normal, an upper bound "

@@ -27,8 +27,25 @@ namespace geomcheck {
 
 namespace {
 
+/// `word` as one word of a POSIX shell command line: as it is when it has
+/// only characters no shell reads specially, else in single quotes.
+std::string shell_quote(const std::string& word) {
+  const bool plain = !word.empty() && word.find_first_not_of("ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz"
+                                                            "0123456789_-+./:=@%,") == std::string::npos;
+  if (plain) return word;
+  std::string q = "'";
+  for (char ch : word) q += ch == '\'' ? std::string("'\\''") : std::string(1, ch);
+  return q + "'";
+}
+
 /// The replay command of a saved case, less its path.
-std::string replay_prefix(const VerifyOptions& opt) { return opt.replay.empty() ? opt.program + " --replay " : opt.replay; }
+std::string replay_prefix(const VerifyOptions& opt) {
+  return opt.replay.empty() ? shell_quote(opt.program) + " --replay " : opt.replay;
+}
+/// The replay command of a saved case.
+std::string replay_command(const VerifyOptions& opt, const std::filesystem::path& path) {
+  return replay_prefix(opt) + shell_quote(path.string());
+}
 
 /// check_all, with a subject that throws failing the case instead of
 /// ending the run.
@@ -42,6 +59,20 @@ CheckResult guarded_check(const Case& c, const Impl& subject, const Evaluation* 
     return Failure{"subject-threw", std::string("the subject threw: ") + ex.what()};
   } catch (...) {
     return Failure{"subject-threw", "the subject threw something that is not a std::exception"};
+  }
+}
+
+/// check_every (each failing property of the case, so that one cannot hide
+/// another), with a subject that throws failing the case instead of ending
+/// the run.
+template <class Case, class Impl>
+std::vector<Failure> guarded_every(const Case& c, const Impl& subject, const Evaluation* known = nullptr) {
+  try {
+    return check_every(c, subject, known);
+  } catch (const std::exception& ex) {
+    return {Failure{"subject-threw", std::string("the subject threw: ") + ex.what()}};
+  } catch (...) {
+    return {Failure{"subject-threw", "the subject threw something that is not a std::exception"}};
   }
 }
 
@@ -106,7 +137,7 @@ bool save_failure(const typename QueryTraits<Q>::Case& c, const ImplOf<Q>& subje
       c, report::html(std::string(name) + ": " + f.property + ": " + f.detail + "; truth: " + e.truth_text), {},
       &ans);
   report::write_counterexample_page(std::filesystem::path(path).replace_extension(".html"), name, drawing, subject.name,
-                                    replay_prefix(opt) + path.string());
+                                    replay_command(opt, path));
   return true;
 }
 
@@ -125,14 +156,33 @@ std::string claims_text(const ImplOf<Q>& subject) {
     t += std::string("; margin ") + m + " * scale";
   }
   if (*c.normal) t += std::string("; normal: ") + c.normal;
+  const Precision& p = c.precision;
+  char b[320];
+  if (p.unit_roundoff == 0x1p-53 && p.ulps == 0 && p.min_scale == 0 && p.max_scale == INFINITY) {
+    t += "; precision: production's (double, its own bounds, every scale)";
+  } else {
+    std::snprintf(b, sizeof b, "; precision: %s (u = 2^%d), %s, scales [%.3g, %.3g]%s",
+                  p.unit_roundoff == 0x1p-24 ? "float" : (p.unit_roundoff == 0x1p-53 ? "double" : "custom"),
+                  static_cast<int>(std::lround(std::log2(p.unit_roundoff))),
+                  p.ulps > 0 ? (std::to_string(static_cast<long long>(p.ulps)) + " ulps of the scene").c_str()
+                             : "production's bounds at this u",
+                  p.min_scale, p.max_scale, p.exact_moves ? "" : ", moves not bit-exact");
+    t += b;
+  }
+  const Tolerances tol = bounds_of(Q, subject.claims);
+  std::snprintf(b, sizeof b, "\nbounds of %s (* scale): verdict band %.3g, depth %.3g, normal %.3g, point %.3g, t %.3g; |normal| - 1: %.3g",
+                subject.name, tol.verdict, tol.depth, tol.normal, tol.point, tol.t, tol.unit);
+  t += b;
+  if (&subject != &production_of<Q>())
+    t += "\n  not checked for this subject: the argument order (production's swapped entry point; a subject has one)";
   return t;
 }
 
-/// What one case gave: the failure (none when every property held), the
-/// evaluation's figures (the report's counts and error measures) and the
-/// time of one call of the subject.
+/// What one case gave: its failing properties (none when every property
+/// held), the evaluation's figures (the report's counts and error measures)
+/// and the time of one call of the subject.
 struct Outcome {
-  CheckResult failure;
+  std::vector<Failure> failures;
   Evaluation e;
   double ns = NAN;
 };
@@ -168,27 +218,33 @@ struct Tally {
   std::vector<double> ns;  ///< the subject's time per call, one per case
   std::vector<std::string> modes;  ///< each case's generator mode: a failure's signature is property @ mode
   std::map<std::string, int> saved_of_property, saved_of_signature;  ///< case files saved, for the caps
-  /// Case i's outcome (`saved`: its case file, when one was saved).
-  void add(QueryId id, int i, const Outcome& o, const std::filesystem::path& saved) {
+  /// Case i's outcome (`saved`: the case file of each failing property,
+  /// empty where none was saved).
+  void add(QueryId id, int i, const Outcome& o, const std::vector<std::filesystem::path>& saved) {
     report::add_evaluation(rep, id, o.e);
     if (std::isfinite(o.ns)) ns.push_back(o.ns);
-    if (o.failure) fail(i, o.failure->property, saved);
+    fail(i, o.failures, saved);
   }
-  /// Case i failing `property` (and its case file, when one was saved).
-  void fail(int i, const std::string& property, const std::filesystem::path& saved) {
+  /// Case i failing these properties (and the case file of each, when one
+  /// was saved): one failing case, counted under each of its properties.
+  void fail(int i, const std::vector<Failure>& failures, const std::vector<std::filesystem::path>& saved) {
+    if (failures.empty()) return;
     ++res.failures;
-    ++res.by_property[property];
     ++rep.check_failures;
-    ++rep.failures_by_property[property];
-    ++rep.failures_by_signature[signature(i, property)];
     if (i < static_cast<int>(modes.size()) &&
         (res.failed_cases.empty() || res.failed_cases.back() != modes[i]))
       res.failed_cases.push_back(modes[i]);
-    if (!saved.empty()) {
-      ++saved_of_property[property];
-      ++saved_of_signature[signature(i, property)];
-      res.saved.push_back(saved);
-      rep.counterexamples.push_back(saved.string());
+    for (std::size_t k = 0; k < failures.size(); ++k) {
+      const std::string& property = failures[k].property;
+      ++res.by_property[property];
+      ++rep.failures_by_property[property];
+      ++rep.failures_by_signature[signature(i, property)];
+      if (k < saved.size() && !saved[k].empty()) {
+        ++saved_of_property[property];
+        ++saved_of_signature[signature(i, property)];
+        res.saved.push_back(saved[k]);
+        rep.counterexamples.push_back(saved[k].string());
+      }
     }
   }
   /// The signature of case i failing `property`.
@@ -196,6 +252,19 @@ struct Tally {
     return property + " @ " + (i < static_cast<int>(modes.size()) ? modes[i] : std::string("?"));
   }
 };
+
+/// Separates the properties of one case (and their case files) on the
+/// child's line: no property name or path holds it.
+constexpr char kSep = '\x1f';
+/// The fields of `text` separated by kSep (none in an empty text).
+std::vector<std::string> split(const std::string& text) {
+  std::vector<std::string> out;
+  if (text.empty()) return out;
+  std::size_t from = 0;
+  for (std::size_t at; (at = text.find(kSep, from)) != std::string::npos; from = at + 1) out.push_back(text.substr(from, at - from));
+  out.push_back(text.substr(from));
+  return out;
+}
 
 /// Runs check(i) for every i in [0, n) in a child process, so that a
 /// subject that crashes (a signal: a segfault, an abort) fails its case
@@ -216,25 +285,32 @@ void run_guarded(QueryId id, int n, bool isolate, unsigned case_seconds, Tally& 
     if (pid < 0) {  // no child: in process
       for (; next < n; ++next) {
         const Outcome o = check(next);
-        tally.add(id, next, o, o.failure ? save(next, *o.failure, true) : std::filesystem::path());
+        std::vector<std::filesystem::path> saved;
+        for (const Failure& f : o.failures) saved.push_back(save(next, f, true));
+        tally.add(id, next, o, saved);
       }
       return;
     }
-    if (pid == 0) {  // the child: a line per case, "<i>\t<property or ->\t<saved case file>\t<shrunk>\t<figures>"
+    // The child: a line per case, "<i>\t<properties>\t<saved case files>\t<shrunk>\t<figures>", the
+    // properties ("-": none) and their case files (empty: not saved) each separated by kSep.
+    if (pid == 0) {
       ::close(fds[0]);
       FILE* out = ::fdopen(fds[1], "w");
       for (int i = next; i < n; ++i) {
         ::alarm(case_seconds);  // a subject that hangs (checks or shrink) is ended by SIGALRM
         const Outcome o = check(i);
-        std::filesystem::path saved;
+        std::vector<std::filesystem::path> saved;
         const int shrunk_before = tally.rep.shrunk;
-        if (o.failure) {
-          saved = save(i, *o.failure, true);
-          tally.fail(i, o.failure->property, saved);  // the child's copy: the caps
-        }
+        for (const Failure& f : o.failures) saved.push_back(save(i, f, true));
+        tally.fail(i, o.failures, saved);  // the child's copy: the caps
         ::alarm(0);
-        std::fprintf(out, "%d\t%s\t%s\t%d\t%s\n", i, o.failure ? o.failure->property.c_str() : "-",
-                     saved.string().c_str(), tally.rep.shrunk - shrunk_before, encode(o.e, o.ns).c_str());
+        std::string properties, files;
+        for (std::size_t k = 0; k < o.failures.size(); ++k) {
+          properties += (k ? std::string(1, kSep) : std::string()) + o.failures[k].property;
+          files += (k ? std::string(1, kSep) : std::string()) + saved[k].string();
+        }
+        std::fprintf(out, "%d\t%s\t%s\t%d\t%s\n", i, properties.empty() ? "-" : properties.c_str(), files.c_str(),
+                     tally.rep.shrunk - shrunk_before, encode(o.e, o.ns).c_str());
         std::fflush(out);
       }
       std::fflush(stdout);
@@ -252,9 +328,13 @@ void run_guarded(QueryId id, int n, bool isolate, unsigned case_seconds, Tally& 
       const std::size_t t4 = t3 == std::string::npos ? t3 : line.find('\t', t3 + 1);
       if (t4 != std::string::npos) {
         Outcome o = decode(line.substr(t4 + 1));
-        const std::string property = line.substr(t1 + 1, t2 - t1 - 1);
-        if (property != "-") o.failure = Failure{property, ""};
-        tally.add(id, std::atoi(line.c_str()), o, line.substr(t2 + 1, t3 - t2 - 1));
+        const std::string properties = line.substr(t1 + 1, t2 - t1 - 1);
+        std::vector<std::filesystem::path> saved;
+        if (properties != "-") {
+          for (const std::string& p : split(properties)) o.failures.push_back(Failure{p, ""});
+          for (const std::string& f : split(line.substr(t2 + 1, t3 - t2 - 1))) saved.emplace_back(f);
+        }
+        tally.add(id, std::atoi(line.c_str()), o, saved);
         tally.rep.shrunk += std::atoi(line.c_str() + t3 + 1);  // shrunk in the child
       }
       next = std::atoi(line.c_str()) + 1;
@@ -270,7 +350,7 @@ void run_guarded(QueryId id, int n, bool isolate, unsigned case_seconds, Tally& 
       const Failure f = hung ? Failure{"subject-hung", "no answer within " + std::to_string(case_seconds) + " s"}
                              : Failure{"subject-crashed", "the subject ended the process (" + how + ")"};
       ++tally.rep.cases;  // run, and failed without an answer to count
-      tally.fail(next, f.property, save(next, f, false));
+      tally.fail(next, {f}, {save(next, f, false)});
       ++next;
     }
   }
@@ -291,7 +371,7 @@ void complete_figures(const ImplOf<Q>& subject, const VerifyOptions& opt, Tally&
   rep.claims = subject.claims ? *subject.claims : spec_of<Q>().claims;
   rep.own_claims = subject.claims != nullptr;
   rep.requested = opt.cases;
-  rep.tol = tolerances(Q);
+  rep.tol = bounds_of(Q, subject.claims);
   rep.depth_is_bound = rep.claims.depth == Claims::Depth::UpperBound;
   if (!t.ns.empty()) {  // the median call
     std::nth_element(t.ns.begin(), t.ns.begin() + t.ns.size() / 2, t.ns.end());
@@ -344,20 +424,12 @@ VerifyResult run_cases(const ImplOf<Q>& subject, const std::vector<Tagged<typena
   using Case = typename QueryTraits<Q>::Case;
   const auto start = std::chrono::steady_clock::now();
   // The cases the subject can state (all of them unless it says otherwise).
-  std::vector<Tagged<Case>> kept;
+  std::vector<Tagged<Case>> cases;
   int not_expressed = 0;
-  if (subject.expresses) {
-    for (const auto& c : all) {
-      bool ok = false;
-      try {
-        ok = subject.expresses(c.first.a, c.first.b);
-      } catch (...) {
-      }
-      if (ok) kept.push_back(c);
-      else ++not_expressed;
-    }
+  for (const auto& c : all) {
+    if (subject_states(c.first, subject)) cases.push_back(c);
+    else ++not_expressed;
   }
-  const std::vector<Tagged<Case>>& cases = subject.expresses ? kept : all;
   if (opt.summary)
     std::fprintf(stderr, "verify %s against %s: %d targeted cases, seed %llu%s\n", subject.name, info(Q).name,
                  opt.cases, static_cast<unsigned long long>(opt.seed), opt.isolate ? "" : ", in process");
@@ -394,10 +466,10 @@ VerifyResult run_cases(const ImplOf<Q>& subject, const std::vector<Tagged<typena
     }
     if (!save_failure<Q>(c, subject, shown, opt, i, path, ask_subject)) return {};
     if (!opt.quiet)
-      std::printf("FAIL %s (case %d, %s): %s\n  drawn: %s\n  replay: %s%s\n", f.property.c_str(), i,
+      std::printf("FAIL %s %s (case %d, %s): %s\n  drawn: %s\n  replay: %s\n", subject.name, f.property.c_str(), i,
                   cases[i].second.c_str(), shown.detail.c_str(),
-                  std::filesystem::path(path).replace_extension(".html").string().c_str(), replay_prefix(opt).c_str(),
-                  path.string().c_str());
+                  std::filesystem::path(path).replace_extension(".html").string().c_str(),
+                  replay_command(opt, path).c_str());
     std::fflush(stdout);
     return path;
   };
@@ -407,7 +479,7 @@ VerifyResult run_cases(const ImplOf<Q>& subject, const std::vector<Tagged<typena
     const Case& c = cases[i].first;
     bool answered = false;
     o.e = truth_of<Q>(c, subject, &answered);
-    o.failure = guarded_check(c, subject, answered ? &o.e : nullptr);
+    o.failures = guarded_every(c, subject, answered ? &o.e : nullptr);
     try {
       const auto t0 = std::chrono::steady_clock::now();
       const bool hit = Spec<Q>::hit(c, subject);
@@ -431,11 +503,13 @@ VerifyResult run_cases(const ImplOf<Q>& subject, const std::vector<Tagged<typena
   std::printf("verify %s (%s): %d cases, seed %llu: %s\n", subject.name, info(Q).name, res.cases,
               static_cast<unsigned long long>(opt.seed), res.failures == 0 ? "every property held" : "FAILED");
   if (res.not_expressed)
-    std::printf("  %d cases not asked: the subject cannot state them (its expresses())\n", res.not_expressed);
-  for (const auto& [property, n] : res.by_property) std::printf("  %6d failing cases: %s\n", n, property.c_str());
+    std::printf("  %d cases not asked: the subject cannot state them (its expresses(), or a scale outside its precision's range)\n",
+                res.not_expressed);
+  if (res.failures) std::printf("  %d failing cases; by property (a case may fail several):\n", res.failures);
+  for (const auto& [property, n] : res.by_property) std::printf("  %6d %s\n", n, property.c_str());
   if (!res.saved.empty())
-    std::printf("  %zu saved (at most %d per property) under %s\n", res.saved.size(), opt.max_saved,
-                (opt.out / info(Q).name).string().c_str());
+    std::printf("  %zu saved (at most %d per property and %d per property and generator mode) under %s\n",
+                res.saved.size(), opt.max_saved, report::kMaxSavedPerSignature, (opt.out / info(Q).name).string().c_str());
   if (!res.report.empty()) std::printf("  report: %s (and report.json)\n", res.report.string().c_str());
   return res;
 }
@@ -455,13 +529,11 @@ int replay_files(const ImplOf<Q>& subject, const std::vector<std::filesystem::pa
     const auto c = to_case<Q>(pr.value);
     bool answered = false;
     const Evaluation e = truth_of<Q>(c, subject, &answered);
-    const CheckResult f = guarded_check(c, subject, answered ? &e : nullptr);
-    std::printf("%s %s\n  %s: %s\n  truth: %s\n", f ? "FAIL" : "PASS", path.string().c_str(), subject.name,
+    const std::vector<Failure> fs = guarded_every(c, subject, answered ? &e : nullptr);
+    std::printf("%s %s\n  %s: %s\n  truth: %s\n", fs.empty() ? "PASS" : "FAIL", path.string().c_str(), subject.name,
                 e.prod_text.c_str(), e.truth_text.c_str());
-    if (f) {
-      std::printf("  %s: %s\n", f->property.c_str(), f->detail.c_str());
-      ++failed;
-    }
+    for (const Failure& f : fs) std::printf("  %s: %s\n", f.property.c_str(), f.detail.c_str());
+    if (!fs.empty()) ++failed;
   }
   return failed;
 }
@@ -497,7 +569,13 @@ int verify_program(const ImplOf<Q>& subject, int argc, char** argv) {
   app.add_option("--cases", opt.cases, "targeted cases to draw")->capture_default_str()->check(CLI::PositiveNumber);
   app.add_option("--seed", opt.seed, "the seed (the same seed draws the same cases)")->capture_default_str();
   app.add_option("--out", opt.out, "where the failing cases go (one folder per query)")->capture_default_str();
-  app.add_option("--max-saved", opt.max_saved, "case files saved per failing property")->capture_default_str();
+  app.add_option("--max-saved", opt.max_saved,
+                 "case files saved per failing property (and at most " + std::to_string(report::kMaxSavedPerSignature) +
+                     " per property and generator mode)")
+      ->capture_default_str()
+      ->check(CLI::NonNegativeNumber);
+  bool no_shrink = false;
+  app.add_flag("--no-shrink", no_shrink, "save failing cases as found, not shrunk");
   app.add_option("--replay", replays, "replay these case files instead")->check(CLI::ExistingFile);
   app.add_flag("--quiet", opt.quiet, "no line per saved failure");
   app.add_flag("!--in-process", opt.isolate,
@@ -510,7 +588,18 @@ int verify_program(const ImplOf<Q>& subject, int argc, char** argv) {
     const int rc = app.exit(e);
     return rc == 0 ? 0 : 2;
   }
-  if (!replays.empty()) return replay_files<Q>(subject, replays) == 0 ? 0 : 1;
+  if (no_shrink) opt.shrink_budget = 0;
+  if (!replays.empty()) {
+    for (const auto& path : replays) {  // a file of another query is a usage error
+      const ParseResult pr = load_case(path);
+      if (pr.ok() && pr.value.query != Q) {
+        std::fprintf(stderr, "%s: %s is a case of %s; %s verifies %s\n", opt.program.c_str(), path.string().c_str(),
+                     info(pr.value.query).name, subject.name, info(Q).name);
+        return 2;
+      }
+    }
+    return replay_files<Q>(subject, replays) == 0 ? 0 : 1;
+  }
   for (int i = 0; i < argc; ++i) opt.command += (i ? " " : "") + std::string(argv[i]);
   return verify_cases<Q>(subject, opt).failures == 0 ? 0 : 1;
 }

@@ -14,6 +14,13 @@
 // oracle (check_all). A failure prints the property and the case file and
 // aborts, so libFuzzer keeps the input; `geomcheck from-fuzz QUERY CRASH`
 // turns it into a case file.
+//
+// A subject is asked only what it claims to handle: raw inputs only when
+// its claims say any input (Claims::any_input; production's do), and of the
+// structured inputs only the valid cases it states (subject_states: its
+// expresses() and its precision's range of scales). The others are skipped,
+// so libFuzzer's first, empty input does not end the run. To include raw
+// inputs, claim them: `claims.any_input = true`.
 #pragma once
 
 #include <cstdio>
@@ -36,15 +43,17 @@ template <QueryId Q>
 /// of `impl`: production by default; the teeth targets pass a known-wrong
 /// variant (test-only binaries, see fuzz/CMakeLists.txt), a user their own
 /// subject.
-template <QueryId Q, class... Impl>
-int run_one(const std::uint8_t* data, std::size_t size, const Impl&... impl) {
+template <QueryId Q>
+int run_one(const std::uint8_t* data, std::size_t size, const ImplOf<Q>& impl = production_of<Q>()) {
   const auto c = decode<Q>(data, size);
   if (mode_of(data, size) == Mode::Raw) {
-    if (auto f = check_robust(c, impl...)) report<Q>(c, *f, "raw");
+    if (impl.claims && !impl.claims->any_input) return 0;  // raw inputs not claimed
+    if (impl.expresses && !subject_states(c, impl)) return 0;
+    if (auto f = check_robust(c, impl)) report<Q>(c, *f, "raw");
     return 0;
   }
-  if (!is_valid(c.a) || !is_valid(c.b)) return 0;
-  if (auto f = check_all(c, impl...)) report<Q>(c, *f, "structured");
+  if (!is_valid(c.a) || !is_valid(c.b) || !subject_states(c, impl)) return 0;
+  if (auto f = check_all(c, impl)) report<Q>(c, *f, "structured");
   return 0;
 }
 

@@ -15,6 +15,8 @@
 #include <vector>
 
 #include "geomcheck/oracles/exact.hpp"
+#include "geomcheck/oracles/solids.hpp"
+#include "geomcheck/properties/tolerances.hpp"
 #include "geomcheck/registry.hpp"
 #include "geomcheck/results.hpp"
 
@@ -26,6 +28,41 @@ struct Failure {
   std::string detail;
 };
 using CheckResult = std::optional<Failure>;
+
+/// The arithmetic a subject computes in and the error it claims, from which
+/// every bound it is held to derives (bounds_of; docs/semantics.md,
+/// "Yardsticks"). Production's is the default: doubles, its own tight
+/// bounds, every scale.
+struct Precision {
+  /// The unit roundoff u of the subject's working arithmetic: 2^-53 for
+  /// double, 2^-24 for float.
+  double unit_roundoff = 0x1p-53;
+  /// The error claimed, in units of u * scale (u alone for the unit length
+  /// of a normal): every bound is the larger of `ulps` * u and production's
+  /// bound read as its count of double ulps and taken at this u (0:
+  /// production's counts alone).
+  double ulps = 0;
+  /// The scenes the subject states: a case whose scale lies outside
+  /// [min_scale, max_scale] is not asked (counted as not expressed), as
+  /// code that squares coordinates cannot hold a scene whose squares
+  /// overflow or underflow.
+  double min_scale = 0;
+  double max_scale = INFINITY;
+  /// An exact move of the scene (sign flips, power-of-two scales) moves the
+  /// answer bit for bit. false: an exact move is held like a rounded one
+  /// (the verdict kept outside the band, depths within twice their bound).
+  bool exact_moves = true;
+
+  /// Ordinary double code: doubles, `ulps` of the scene (default 1024: a
+  /// few ulps per operation over some tens of operations, amplified by a
+  /// feature's distance from the origin; docs/semantics.md), scenes whose
+  /// scale lies in [2^-250, 2^250] (squares of coordinates stay normal).
+  static Precision double_precision(double ulps = 1024) { return {0x1p-53, ulps, 0x1p-250, 0x1p250, false}; }
+  /// Float code: u = 2^-24, `ulps` of the scene (default 1024, as for
+  /// double), scenes whose scale lies in [2^-60, 2^60] (squares of
+  /// coordinates stay normal floats).
+  static Precision single_precision(double ulps = 1024) { return {0x1p-24, ulps, 0x1p-60, 0x1p60, false}; }
+};
 
 /// What a subject claims about its answers. The checks hold it to these
 /// claims and the report prints them beside the figures.
@@ -44,7 +81,22 @@ struct Claims {
   const char* truth = "";     ///< what the truth is computed by
   bool touching_is_contact = true;  ///< shapes exactly touching count as a contact (closed solids)
   double margin = 0;                ///< answers claimed to within margin * scale (see judge)
+  /// Any input is answered safely, valid or not (NaN, infinities, negative
+  /// radii: no crash, no hit): the fuzz door's raw mode holds the subject to
+  /// it (check_robust). false: raw inputs are not asked.
+  bool any_input = true;
+  Precision precision{};            ///< the arithmetic and the claimed error every bound derives from
 };
+
+/// The bounds a subject with these claims is held to (null: production's),
+/// every check's and the report's: tolerances(id), production's, taken at
+/// the subject's precision (Precision::ulps * u, or production's count of
+/// double ulps at the subject's u), then every scaled bound widened by the
+/// claimed margin. Derivation: docs/semantics.md, "Yardsticks".
+Tolerances bounds_of(QueryId id, const Claims* claims);
+/// Whether a subject claiming `claims` states a case of this scale (its
+/// precision's range; always, for production).
+bool states_scale(const Claims* claims, double scale);
 
 /// A subject's entry point: a callable of signature R(Args...). A plain
 /// function (a function pointer, or a lambda without captures) is held as a
@@ -204,6 +256,24 @@ GEOMCHECK_QUERY_LIST(GEOMCHECK_X)
   [[maybe_unused]] constexpr QueryId kId = QueryId::id;                              \
   }
 
+/// Whether subject `impl` states case c: its expresses() (a throw: no);
+/// for a valid case, its precision's range of scales (Precision::min_scale,
+/// max_scale); an invalid case only when it claims any input
+/// (Claims::any_input). verify() and the fuzz door ask the
+/// subject only the cases it states.
+template <class Case, class Impl>
+bool subject_states(const Case& c, const Impl& impl) {
+  const bool valid = is_valid(c.a) && is_valid(c.b);
+  if (!valid && impl.claims && !impl.claims->any_input) return false;
+  if (valid && !states_scale(impl.claims, oracle::case_scale(c.a, c.b))) return false;
+  if (!impl.expresses) return true;
+  try {
+    return impl.expresses(c.a, c.b);
+  } catch (...) {
+    return false;
+  }
+}
+
 /// The subject type of the query whose case type is Case.
 template <class Case>
 using ImplOfCase = ImplOf<query_of_case<Case>>;
@@ -271,6 +341,9 @@ struct Evaluation {
   /// the true penetration depth on a query whose production claims only an
   /// upper bound also by depth_over.
   double depth_short = NAN, depth_over = NAN;
+  /// The bounds the subject is held to (bounds_of its claims): the band of
+  /// touching the truth is settled at, and every error's bound.
+  Tolerances tol{};
 };
 
 /// The oracle's verdict in the words of case files' `oracle-verdict`:
@@ -292,6 +365,9 @@ inline std::string verdict_word(QueryId id, const Evaluation& e) {
 /// claims an upper bound (collide_cylinder_cylinder) is held to it from
 /// both sides (depth_over too), a stronger claim than production's.
 CheckResult judge(QueryId id, const Evaluation& e, const Claims* claims = nullptr);
+/// judge(), every failing property of the evaluation (empty: none), in the
+/// order judge() tries them.
+std::vector<Failure> judge_every(QueryId id, const Evaluation& e, const Claims* claims = nullptr);
 
 // --- every query, by kind (properties/src/kind_checks.cpp) ------------------
 // Declared for every registered query as plain overloads (not templates), so
@@ -303,6 +379,9 @@ CheckResult judge(QueryId id, const Evaluation& e, const Claims* claims = nullpt
 //   check_all     every check of the query, in order, stopping at the first
 //                 failure: robust, then (valid input only) oracle,
 //                 consistency, symmetry, every metamorphic move, monotone.
+//   check_every   every check of the query, not stopping: each failing
+//                 property of the case (empty: none), in check_all's order;
+//                 `e`, when given, is impl's evaluation of c.
 //   check_all(c, e, impl)  the same, given `e`, impl's evaluation of c
 //                 (evaluate(c, impl, peer) for any peer): the oracle check
 //                 judges e, so the truth is not asked for again (a campaign
@@ -311,7 +390,10 @@ CheckResult judge(QueryId id, const Evaluation& e, const Claims* claims = nullpt
   CheckResult check_robust(const PairCase<A, B, QueryId::id>& c, const ImplOf<QueryId::id>& impl = production_of<QueryId::id>()); \
   CheckResult check_all(const PairCase<A, B, QueryId::id>& c, const ImplOf<QueryId::id>& impl = production_of<QueryId::id>()); \
   CheckResult check_all(const PairCase<A, B, QueryId::id>& c, const Evaluation& e,                                           \
-                        const ImplOf<QueryId::id>& impl = production_of<QueryId::id>());
+                        const ImplOf<QueryId::id>& impl = production_of<QueryId::id>());                               \
+  std::vector<Failure> check_every(const PairCase<A, B, QueryId::id>& c,                                                      \
+                                   const ImplOf<QueryId::id>& impl = production_of<QueryId::id>(),                     \
+                                   const Evaluation* e = nullptr);
 GEOMCHECK_QUERY_LIST(GEOMCHECK_X)
 #undef GEOMCHECK_X
 

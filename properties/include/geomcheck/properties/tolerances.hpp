@@ -32,6 +32,8 @@
 //            same for the ball (its gap from the cylinder at t, and its path
 //            up to t certified never that deep inside, by the engine)
 //   unit     | |normal| - 1 | (absolute, not scaled)
+//   input    not a bound: how far a subject's working precision moves the
+//            input (0 for doubles; bounds_of, docs/semantics.md)
 //   depth_ratio  consistent contacts (collide_cylinder_cylinder, _obb, _triangle): depth /
 //            penetration depth, where that is at least 1e-9 * scale and
 //            enclosed within 1% (a ratio, not scaled; 0: no bound). A case
@@ -53,6 +55,12 @@ struct Tolerances {
   double t;
   double unit;
   double depth_ratio = 0;
+  /// How far the subject's working precision moves the input (a multiple
+  /// of scale): 0 for doubles, the unit roundoff u for a narrower type
+  /// (each coordinate rounded to it). Directions the subject derives from
+  /// the input turn by it over a feature's size (a cast's cap normal by
+  /// 2 input / L over an axis of length L); bounds_of sets it.
+  double input = 0;
 };
 
 /// Bounds per query id.

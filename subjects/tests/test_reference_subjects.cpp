@@ -1,0 +1,103 @@
+// geomcheck — no false alarm on correct code: the reference subjects
+// (reference_subjects.hpp: user-style code, correct but not exact, in
+// double and in float, each declaring only its precision) hold every
+// property on GEOMCHECK_REFERENCE_CASES cases of each of three seeds, and
+// their known-wrong siblings fail the property that names their flaw.
+// Each run is one ctest test (GEOMCHECK_REFERENCE_RUN=<subject>:<seed>, or
+// all runs in turn without it); a failing case prints its replay command.
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <string>
+
+#include "reference_subjects.hpp"
+
+#ifndef GEOMCHECK_REFERENCE_CASES
+#define GEOMCHECK_REFERENCE_CASES 2000
+#endif
+
+namespace geomcheck {
+namespace {
+
+constexpr std::uint64_t kSeeds[] = {20261121, 7, 1234567};
+
+VerifyOptions options(const std::string& name, std::uint64_t seed, int cases) {
+  VerifyOptions opt;
+  opt.cases = cases;
+  opt.seed = seed;
+  opt.out = std::filesystem::path(::testing::TempDir()) / ("geomcheck-reference-" + name + "-" + std::to_string(seed));
+  std::filesystem::remove_all(opt.out);
+  opt.program = "test_reference_subjects";
+  opt.report = false;
+  opt.isolate = false;  // correct code: no crash to contain, and the run is faster in process
+  return opt;
+}
+
+int count(const VerifyResult& r, const std::string& property) {
+  const auto it = r.by_property.find(property);
+  return it == r.by_property.end() ? 0 : it->second;
+}
+
+/// Runs `subject` on every seed (or the one GEOMCHECK_REFERENCE_SEED names)
+/// and expects no failing case.
+template <class Subject>
+void expect_clean(const Subject& s, const char* name) {
+  const char* only = std::getenv("GEOMCHECK_REFERENCE_SEED");
+  for (std::uint64_t seed : kSeeds) {
+    if (only && std::to_string(seed) != only) continue;
+    const VerifyResult r = verify(s, options(name, seed, GEOMCHECK_REFERENCE_CASES));
+    EXPECT_EQ(r.failures, 0) << name << " seed " << seed << ": " << r.failures << " failing cases (first: "
+                             << (r.by_property.empty() ? "" : r.by_property.begin()->first) << ")";
+    EXPECT_GT(r.cases, GEOMCHECK_REFERENCE_CASES * 9 / 10) << "most cases are stated by " << name;
+  }
+}
+
+TEST(Reference, SphereInDouble) { expect_clean(ref::sphere_subject<double>("ref-sphere-double"), "sphere-double"); }
+TEST(Reference, SphereInFloat) { expect_clean(ref::sphere_subject<float>("ref-sphere-float"), "sphere-float"); }
+TEST(Reference, CastInDouble) { expect_clean(ref::cast_subject<double>("ref-cast-double"), "cast-double"); }
+TEST(Reference, CastInFloat) { expect_clean(ref::cast_subject<float>("ref-cast-float"), "cast-float"); }
+
+// The siblings: each flaw caught, by the property that names it, in both
+// precisions (the float bounds are wide, not blind).
+template <class T>
+void expect_siblings_caught() {
+  const int n = 2000;
+  const VerifyResult deep = verify(ref::sphere_subject<T>("ref-deep-point", ref::Flaw::DeepPointOnFace),
+                                   options("deep-point", kSeeds[0], n));
+  EXPECT_GT(count(deep, "oracle-point"), 0) << "the point on the nearest face, outside a small ball";
+  const VerifyResult capsule = verify(ref::sphere_subject<T>("ref-rounded-caps", ref::Flaw::RoundedCaps),
+                                      options("rounded-caps", kSeeds[0], n));
+  EXPECT_GT(count(capsule, "oracle-verdict"), 0) << "the cylinder taken as a capsule";
+  const VerifyResult nocaps = verify(ref::cast_subject<T>("ref-no-caps", ref::Flaw::NoCaps), options("no-caps", kSeeds[0], n));
+  EXPECT_GT(count(nocaps, "oracle-verdict"), 0) << "the cast through an infinite cylinder";
+}
+TEST(Reference, SiblingsCaughtInDouble) { expect_siblings_caught<double>(); }
+TEST(Reference, SiblingsCaughtInFloat) { expect_siblings_caught<float>(); }
+
+// Float bounds derive from float's unit roundoff: production's counts of
+// ulps, 2^29 times wider than production's own; a margin widens every
+// scaled bound; production's are its table's.
+TEST(Reference, BoundsDeriveFromThePrecision) {
+  constexpr QueryId Q = QueryId::collide_cylinder_sphere;
+  const Tolerances prod = tolerances(Q);
+  const Tolerances same = bounds_of(Q, nullptr);
+  EXPECT_EQ(same.verdict, prod.verdict);
+  Claims f = production_claims<Q>();
+  f.precision = Precision::single_precision(0);  // production's counts alone
+  const Tolerances single = bounds_of(Q, &f);
+  EXPECT_DOUBLE_EQ(single.verdict, prod.verdict * 0x1p29);
+  EXPECT_DOUBLE_EQ(single.unit, prod.unit * 0x1p29);
+  f.precision = Precision::single_precision(4096);
+  EXPECT_DOUBLE_EQ(bounds_of(Q, &f).depth, 4096 * 0x1p-24);
+  EXPECT_DOUBLE_EQ(bounds_of(QueryId::collide_cylinder_capsule, &f).normal, 1e-12 * 0x1p29)
+      << "a claim below production's count keeps production's";
+  Claims m = production_claims<Q>();
+  m.margin = 1e-9;
+  EXPECT_DOUBLE_EQ(bounds_of(Q, &m).point, prod.point + 1e-9);
+  EXPECT_DOUBLE_EQ(bounds_of(Q, &m).unit, prod.unit);
+  EXPECT_EQ(bounds_of(QueryId::cast_segment_cylinder, &m).depth, 0) << "no metric of a cast stays none";
+}
+
+}  // namespace
+}  // namespace geomcheck
