@@ -21,6 +21,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include <geomcheck/verify.hpp>
 
@@ -47,6 +48,19 @@ template <class T> V<T> unit(V<T> a) {
   const V<T> s = (1 / max_abs(a)) * a;
   return (1 / std::sqrt(dot(s, s))) * s;
 }
+/// The part of w across direction d (any length), projected out twice:
+/// perpendicular to d even where it is rounding noise (d is scaled first, so
+/// its square neither overflows nor underflows; u = unit(d) is unit only to
+/// rounding, and w - (w.u) u would keep a part along it).
+/// At the rounding level of w the part across is noise in any direction
+/// (a vector along d leaves a residue along d): then it is zero.
+template <class T> V<T> across(V<T> w, V<T> d) {
+  const V<T> s = (1 / max_abs(d)) * d;
+  const T ss = dot(s, s);
+  const V<T> once = w - (dot(w, s) / ss) * s;
+  const V<T> twice = once - (dot(once, s) / ss) * s;
+  return max_abs(twice) > 16 * std::numeric_limits<T>::epsilon() * max_abs(w) ? twice : V<T>{0, 0, 0};
+}
 /// A unit vector perpendicular to unit u.
 template <class T> V<T> any_perp(V<T> u) {
   return unit(std::fabs(u.x) < T(0.5) ? V<T>{0, u.z, -u.y} : V<T>{-u.z, 0, u.x});
@@ -71,10 +85,7 @@ template <class T>
 Touch<T> collide(const Cyl<T>& cy, const Ball<T>& b, Flaw flaw = Flaw::None) {
   const V<T> d = cy.q - cy.p, u = unit(d), w = b.c - cy.p;
   const T length = len(d), t = dot(w, u);
-  const V<T> radial0 = w - t * u;
-  // Once more perpendicular: where the offset is at the rounding level of w,
-  // w - t u is rounding noise in any direction, and so would e be.
-  const V<T> radial = radial0 - dot(radial0, u) * u;
+  const V<T> radial = across(w, d);
   const T rho = len(radial);
   const V<T> e = rho > 0 ? unit(radial) : any_perp(u);
   Touch<T> out;
@@ -165,8 +176,7 @@ Ray<T> cast(const Seg<T>& s, const Cyl<T>& cy, Flaw flaw = Flaw::None) {
     out.normal = cap < 0 ? T(-1) * u : u;
   } else {
     const V<T> x = out.point - cy.p;
-    const V<T> radial0 = x - dot(x, u) * u;
-    const V<T> radial = radial0 - dot(radial0, u) * u;
+    const V<T> radial = across(x, d);
     out.normal = max_abs(radial) > 0 ? unit(radial) : any_perp(u);
   }
   return out;

@@ -7,6 +7,7 @@
 // all runs in turn without it); a failing case prints its replay command.
 #include <gtest/gtest.h>
 
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <string>
@@ -50,6 +51,13 @@ void expect_clean(const Subject& s, const char* name) {
     EXPECT_EQ(r.failures, 0) << name << " seed " << seed << ": " << r.failures << " failing cases (first: "
                              << (r.by_property.empty() ? "" : r.by_property.begin()->first) << ")";
     EXPECT_GT(r.cases, GEOMCHECK_REFERENCE_CASES * 9 / 10) << "most cases are stated by " << name;
+    // The headroom: each error's worst case over its bound (in ulps of the scene).
+    report::QueryReport f = r.figures;
+    const double u = s.claims->precision.unit_roundoff;
+    std::printf("%s seed %llu: worst error in ulps of the scene (bound): depth %.3g (%.3g), normal %.3g (%.3g), "
+                "point %.3g (%.3g), t %.3g (%.3g)\n",
+                name, static_cast<unsigned long long>(seed), f.depth.pct(1) / u, f.tol.depth / u, f.normal.pct(1) / u,
+                f.tol.normal / u, f.point.pct(1) / u, f.tol.point / u, f.t.pct(1) / u, f.tol.t / u);
   }
 }
 

@@ -13,11 +13,13 @@
 #include <sstream>
 #include <stdexcept>
 #include <thread>
+#include <vector>
 
 #include "geomcheck/casefile.hpp"
 #include "geomcheck/collide_cylinder_cylinder.hpp"
 #include "geomcheck/collide_cylinder_sphere.hpp"
 #include "geomcheck/oracles/solids.hpp"
+#include "geomcheck/properties/teeth.hpp"
 #include "geomcheck/verify.hpp"
 
 namespace geomcheck {
@@ -141,6 +143,74 @@ TEST(Subjects, SinglePrecisionIsCaughtAndReplays) {
   EXPECT_NE(json.find("\"check_failures\": " + std::to_string(r.failures) + ","), std::string::npos);
   const std::string page = read_text(r.report);
   EXPECT_NE(page.find(" --replay "), std::string::npos);  // the program's own replay command
+}
+
+// The same float code declaring its precision is judged by float's bounds:
+// no false alarm; its report's bounds are the subject's.
+TEST(Subjects, FloatCodeDeclaringItsPrecisionPasses) {
+  auto collide_fn = [](const Cylinder& c, const Sphere& s) {
+    auto f = [](Vec3 v) { return Vec3{float(v.x), float(v.y), float(v.z)}; };
+    Contact k = collide(Cylinder{f(c.p), f(c.q), float(c.r)}, Sphere{f(s.c), float(s.r)});
+    k.depth = float(k.depth);
+    k.normal = f(k.normal);
+    k.point = f(k.point);
+    return k;
+  };
+  Claims single = production_claims<kSphere>();
+  single.precision = Precision::single_precision();
+  single.any_input = false;
+  const auto mine = subject<kSphere>("float-declared", [collide_fn](const Cylinder& c, const Sphere& s) {
+    return collide_fn(c, s).hit;
+  }, collide_fn, single);
+  const VerifyResult r = verify(mine, options("float-declared", 2000));
+  EXPECT_EQ(r.failures, 0) << (r.by_property.empty() ? "" : r.by_property.begin()->first);
+  EXPECT_DOUBLE_EQ(r.figures.tol.verdict, bounds_of(kSphere, &single).verdict);
+  EXPECT_GT(r.figures.tol.verdict, 1e3 * tolerances(kSphere).verdict);
+}
+
+// Every failing property of a case is counted: a normal twice too long (the
+// unit-length properties) does not hide the capsule's round ends (the
+// verdict), and each property has its own saved case.
+TEST(Subjects, EveryFailingPropertyOfACaseIsReported) {
+  auto collide_fn = [](const Cylinder& c, const Sphere& s) {
+    Contact k = teeth::kCapsuleForCylinder.collide(c, s);  // round ends
+    k.normal = 2.0 * k.normal;
+    return k;
+  };
+  const auto mine = subject<kSphere>("long-normal-capsule", [collide_fn](const Cylinder& c, const Sphere& s) {
+    return collide_fn(c, s).hit;
+  }, collide_fn);
+  const VerifyResult r = verify(mine, options("two-flaws", 600));
+  EXPECT_GT(count(r, "robust-unit-normal"), 0);
+  EXPECT_GT(count(r, "oracle-verdict"), 0) << "the verdict's failures hidden behind the normal's";
+  int by_property = 0;
+  for (const auto& kv : r.by_property) by_property += kv.second;
+  EXPECT_GT(by_property, r.failures) << "a case failing several properties is counted under each";
+  bool saved_verdict = false;
+  for (const auto& p : r.saved) saved_verdict |= p.filename().string().find("oracle-verdict") != std::string::npos;
+  EXPECT_TRUE(saved_verdict);
+  const std::string json = read_text(r.report.parent_path() / "report.json");
+  EXPECT_NE(json.find("\"oracle-verdict\""), std::string::npos);
+  EXPECT_NE(json.find("\"robust-unit-normal\""), std::string::npos);
+}
+
+// The program's usage errors exit 2: no cases, a case file of another query.
+TEST(Subjects, UsageErrorsExitTwo) {
+  const auto& prod = production_of<kSphere>();
+  const std::string out = (std::filesystem::path(::testing::TempDir()) / "geomcheck-subjects-usage").string();
+  std::vector<std::string> zero = {"verify", "--cases", "0", "--out", out};
+  auto run = [&](std::vector<std::string> args) {
+    std::vector<char*> argv;
+    for (auto& a : args) argv.push_back(a.data());
+    return verify(prod, static_cast<int>(argv.size()), argv.data());
+  };
+  EXPECT_EQ(run(zero), 2);
+  const std::filesystem::path other = std::filesystem::path(::testing::TempDir()) / "geomcheck-subjects-other.case";
+  const SegmentCylinderCase c{{{0, 0, -2}, {0, 0, 2}}, {{0, 0, 0}, {0, 0, 1}, 1}};
+  std::string err;
+  ASSERT_TRUE(save_case(other, from_case<QueryId::cast_segment_cylinder>(c, "test", "hit", ""), err)) << err;
+  EXPECT_EQ(run({"verify", "--replay", other.string()}), 2);
+  EXPECT_EQ(run({"verify", "--cases", "20", "--no-shrink", "--quiet", "--no-report", "--out", out}), 0);
 }
 
 // A subject that throws on some inputs fails those cases, and the run goes on.

@@ -2,10 +2,13 @@
 # geomcheck — the package as a user gets it: `cmake --install` of this build
 # into a fresh prefix, examples/verify-my-collide copied outside the source
 # tree and built against it with find_package(geomcheck CONFIG), then run.
-# The example's collide (single precision) is wrong, so the run must exit 1,
+# The example's collide (single precision, declared as such) has one
+# deliberate bug, so the run must exit 1 with that bug's property alone
+# (oracle-point: float code judged by float bounds has no other failure),
 # save failing cases with their drawings, and print a replay command that
-# reproduces the failure; a run of production's own collide through the
-# same door (the example with the float code swapped out) must pass; and,
+# reproduces the failure; the same code with the bug fixed
+# (verify_my_collide_fixed) must pass 2000 cases; a run of production's own
+# collide through the same door (the float code swapped out) must pass; and,
 # where clang is, the example's libFuzzer target must find a failure. The
 # run's report.json validates against the schema.
 # usage: test_installed_example.sh CMAKE BUILD_DIR SOURCE_DIR WORK_DIR
@@ -34,6 +37,8 @@ gen=(); command -v ninja > /dev/null && gen=(-G Ninja)
 status=$?
 cat "$work/run.log"
 [ "$status" -eq 1 ] || fail "exit status $status (1 expected: the float collide is wrong)"
+properties=$(sed -n '/by property/,/saved/p' "$work/run.log" | grep -E '^ +[0-9]+ [a-z][a-z0-9()-]*$' | awk '{print $2}' | sort -u | tr '\n' ' ')
+[ "$properties" = "oracle-point " ] || fail "failing properties '$properties' ('oracle-point ' expected: the deliberate bug alone)"
 cases=$(find "$work/out" -name '*.case' | wc -l)
 pages=$(find "$work/out" -name '*.html' ! -name report.html | wc -l)
 [ "$cases" -gt 0 ] || fail "no failing case saved"
@@ -53,6 +58,8 @@ rstatus=$?
 cat "$work/replay.log"
 [ "$rstatus" -eq 1 ] && grep -q '^FAIL ' "$work/replay.log" || fail "the printed replay command does not reproduce the failure"
 
+"$work/build/verify_my_collide_fixed" --cases 2000 --out "$work/out-fixed" > "$work/fixed.log" 2>&1 \
+  || { cat "$work/fixed.log"; fail "the float collide with its bug fixed failed (a false alarm on correct float code)"; }
 "$work/build/verify_production" --cases 400 --out "$work/out-production" > "$work/production.log" 2>&1 \
   || { cat "$work/production.log"; fail "production's collide through the same door failed"; }
 # With clang: the same subject as a libFuzzer target (geomcheck::fuzzing) finds a failing input.
@@ -69,4 +76,5 @@ if command -v clang++ > /dev/null; then
     || fail "the fuzz target did not find the float collide's failure (exit $fstatus)"
   fuzz="the fuzz target finds it too"
 fi
-echo "PASS: installed package found, the float collide caught ($cases cases saved), production passes; $fuzz"
+[ -x "$work/prefix/bin/geomcheck" ] || fail "cmake --install did not install the geomcheck command"
+echo "PASS: installed package found, the float collide's bug caught by oracle-point alone ($cases cases saved), fixed it passes, production passes; $fuzz"

@@ -1,5 +1,5 @@
 // geomcheck — the public door: verify anyone's implementation of a
-// registered query with the yardsticks production is held to.
+// registered query, judged by its own claims and precision.
 //
 // A subject is ImplOf<Q> (properties/checks.hpp): a name and the query's
 // entry points as callables: overlap(A, B) and collide(A, B) for a collide
@@ -11,8 +11,11 @@
 // verdict or not, the depth's meaning (the true penetration depth, or an
 // upper bound: a consistent contact; a claim stronger than production's is
 // held too), point in both shapes or not, touching counted as contact or
-// not, a margin; verify() prints them before the figures and the report
-// shows them beside its figures.
+// not, a margin, any input or valid scenes only, and its precision (the
+// unit roundoff it computes with and the ulps of the scene it claims:
+// Precision::single_precision() for float code), from which every bound
+// derives (bounds_of; docs/semantics.md, "Yardsticks"); verify() prints the
+// claims and the bounds before the figures and the report shows them.
 //
 //   int main(int argc, char** argv) {
 //     auto mine = geomcheck::subject<geomcheck::QueryId::collide_cylinder_sphere>(
@@ -25,10 +28,13 @@
 //
 // verify() draws `cases` targeted cases of the query from a fixed seed
 // (printed; the same seed gives the same cases) and holds the subject to
-// every property (check_all: robustness on any input, agreement with the
-// exact or certified truth outside the verdict band and every error within
-// its bound of tolerances.hpp, consistency, symmetry, the metamorphic moves,
-// monotonicity). A subject that throws fails the case ("subject-threw"), as
+// every property (check_every: robustness, agreement with the exact or
+// certified truth outside the subject's verdict band and every error within
+// the subject's bound, consistency, symmetry, the metamorphic moves,
+// monotonicity), every failing property of a case counted, not only the
+// first. Cases the subject does not state (its expresses(), its precision's
+// range of scales, invalid input unless it claims any input) are not asked
+// and are counted. A subject that throws fails the case ("subject-threw"), as
 // does a non-finite or non-unit answer. The checks run in a child process:
 // a subject that crashes the process ("subject-crashed") or gives no answer
 // within a minute ("subject-hung") fails that case, and the run goes on
@@ -37,8 +43,10 @@
 // `--in-process` (VerifyOptions::isolate false) the subject runs in the
 // caller's process: its state changes stay, and a crash ends the run.
 //
-// Every failing case is counted by property; the first `max_saved` of each
-// property are saved under `out` as a case file (corpora/README.md's
+// Every failing case is counted under each property it fails; the first
+// `max_saved` of each property (and at most report::kMaxSavedPerSignature of
+// each property and generator mode) are saved under `out`, shrunk while they
+// fail the same property (not with --no-shrink), as a case file (corpora/README.md's
 // format, replayable) with a page beside it that draws the shapes, the
 // subject's answer and the truth's witness. Each saved failure prints the
 // command that replays it: the same program with `--replay FILE`. The run
@@ -51,12 +59,14 @@
 //   --seed N        the seed (default 20261121)
 //   --out DIR       where counterexamples and the report go (default geomcheck-out)
 //   --max-saved N   case files saved per failing property (default 10)
+//   --no-shrink     save failing cases as found
 //   --replay FILE   replay saved case files instead (repeatable)
 //   --quiet         no line per saved failure
 //   --in-process    no child process (see above)
 //   --no-report     no report.json / report.html
 //   --junit FILE    also a JUnit XML file (a test case per property family)
-// Exit status: 0 every case passed, 1 some case failed, 2 bad usage.
+// Exit status: 0 every case passed, 1 some case failed, 2 bad usage (--cases
+// 0, a --replay file of another query). Replay commands are shell-quoted.
 #pragma once
 
 #include <cstdint>
@@ -90,23 +100,34 @@ Claims production_claims() {
   return spec_of<Q>().claims;
 }
 
+/// The cases a subject of query Q can state at all: expresses(A, B) -> bool.
+template <QueryId Q>
+using Expresses = Callable<bool(const typename QueryTraits<Q>::ShapeA&, const typename QueryTraits<Q>::ShapeB&)>;
+
 /// A subject of collide query Q from two callables, overlap(A, B) -> bool
 /// and collide(A, B) -> Contact (copied: pass std::ref(object) to share
 /// one), held to production's claims or to `claims` (judge() in checks.hpp
-/// says how each claim is judged).
+/// says how each claim is judged, docs/semantics.md how its precision gives
+/// its bounds); `expresses`, when given, names the cases it can state (the
+/// others are not asked, and counted).
 template <QueryId Q, class Overlap, class Collide,
           std::enable_if_t<QueryTraits<Q>::kind == QueryKind::Collide, int> = 0>
-Subject<Q> subject(const char* name, Overlap overlap, Collide collide, std::optional<Claims> claims = std::nullopt) {
+Subject<Q> subject(const char* name, Overlap overlap, Collide collide, std::optional<Claims> claims = std::nullopt,
+                   Expresses<Q> expresses = {}) {
   Subject<Q> s{{name, std::move(overlap), std::move(collide)}, nullptr};
   if (claims) s.claims = (s.own_claims = std::make_shared<const Claims>(*claims)).get();
+  s.expresses = std::move(expresses);
   return s;
 }
 
-/// A subject of cast or sweep query Q from one callable (A, B) -> CastHit.
+/// A subject of cast or sweep query Q from one callable (A, B) -> CastHit;
+/// claims and expresses as for a collide query's.
 template <QueryId Q, class Answer, std::enable_if_t<QueryTraits<Q>::kind != QueryKind::Collide, int> = 0>
-Subject<Q> subject(const char* name, Answer answer, std::optional<Claims> claims = std::nullopt) {
+Subject<Q> subject(const char* name, Answer answer, std::optional<Claims> claims = std::nullopt,
+                   Expresses<Q> expresses = {}) {
   Subject<Q> s{{name, std::move(answer)}, nullptr};
   if (claims) s.claims = (s.own_claims = std::make_shared<const Claims>(*claims)).get();
+  s.expresses = std::move(expresses);
   return s;
 }
 

@@ -16,8 +16,9 @@
 //            penetration depth is an error, and it has no normal bound)
 //   normal   overlap measured along production's normal minus the true
 //            penetration depth (>= 0; 0 for a minimal-translation normal);
-//            casts: distance of the normal from the exact outward normal
-//            (normal cone at a rim) at production's hit point; sweeps: the
+//            casts: distance of the normal from the exact outward normals
+//            (normal cone at a rim) of the features within 4 t-bounds of
+//            the hit point (the side's turn by that reach / r there); sweeps: the
 //            reach of the cylinder along production's normal short of the
 //            ball's centre at t, compared with the centre's true distance
 //            (h_C(n) - n.x + dist(x, C) >= 0, zero for the true normal).
@@ -69,7 +70,7 @@ constexpr Tolerances tolerances(QueryId id) {
     case QueryId::collide_cylinder_sphere:
       return {/*verdict*/ 1e-14, /*depth*/ 1e-14, /*normal*/ 1e-14, /*point*/ 1e-14, /*t*/ 0, /*unit*/ 1e-14};
     case QueryId::cast_segment_cylinder:
-      return {/*verdict*/ 1e-14, /*depth*/ 0, /*normal*/ 1e-13, /*point*/ 1e-14, /*t*/ 1e-14, /*unit*/ 1e-14};
+      return {/*verdict*/ 1e-14, /*depth*/ 0, /*normal*/ 1e-14, /*point*/ 1e-14, /*t*/ 1e-14, /*unit*/ 1e-14};
     case QueryId::collide_cylinder_capsule:
       return {/*verdict*/ 1e-14, /*depth*/ 1e-14, /*normal*/ 1e-12, /*point*/ 1e-14, /*t*/ 0, /*unit*/ 1e-14};
     case QueryId::collide_cylinder_obb:
