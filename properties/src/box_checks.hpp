@@ -65,14 +65,14 @@ void hold_to_truth(Evaluation& e, const Case& c, const Contact& ct, const Contac
 template <class Case, class Impl>
 CheckResult consistency(const Case& c, const Impl& impl) {
   const bool exact = valid_case(c) && obb_in_contract(c.b);
-  return consistent_contact(query_of_case<Case>, c, impl, exact, bounds(query_of_case<Case>, impl).depth);
+  return consistent_contact(query_of_case<Case>, c, impl, exact, bounds(c, impl).depth);
 }
 
 template <class Case, class Impl>
 CheckResult symmetry(const Case& c, const Impl& impl) {
   if (auto f = argument_order(c, impl)) return f;
   // Same solid, other representation (contact_checks.hpp).
-  const Tolerances tol = bounds(query_of_case<Case>, impl);
+  const Tolerances tol = bounds(c, impl);
   const double bound = 2 * tol.depth + tol.normal;
   if (!valid_case(c) || !obb_in_contract(c.b)) return std::nullopt;
   if (auto f = same_answer("symmetry-caps-swapped", c, {{c.a.q, c.a.p, c.a.r}, c.b}, impl, bound)) return f;

@@ -126,7 +126,7 @@ CheckResult check_consistency(const SegmentCylinderCase& c, const CastSegmentCyl
   if (!h.hit || !valid_case(c)) return std::nullopt;
   const double scale = oracle::case_scale(c.a, c.b);
   const Vec3 s = c.a.a + h.t * (c.a.b - c.a.a);
-  if (length(h.point - s) > bounds(kId, impl).point * scale)
+  if (length(h.point - s) > bounds(c, impl).point * scale)
     return Failure{"consistency-point-is-S(t)", describe(h) + " but S(t) = " + vec(s)};
   return std::nullopt;
 }
@@ -147,7 +147,7 @@ CheckResult check_metamorphic(const SegmentCylinderCase& c, int move, const Cast
     const double scale = oracle::case_scale(c.a, c.b);
     const double moved_scale = std::max(scale, oracle::case_scale(t.a, t.b));
     // The subject answers the moved case to its band at the moved scale.
-    const Q delta = times_scale(bounds(kId, impl).verdict, moved_scale) + times_scale(moves::rigid_slack(c.b), moved_scale);
+    const Q delta = times_scale(std::max(bounds(c, impl).verdict, bounds(t, impl).verdict), moved_scale) + times_scale(moves::rigid_slack(c.b), moved_scale);
     const oracle::QSegment qs = oracle::to_q(c.a);
     const oracle::QCylinder qc = oracle::to_q(c.b);
     const bool truth = oracle::solve_cast(qs, qc).hit;

@@ -75,7 +75,7 @@ CheckResult check_consistency(const CylinderCapsuleCase& c, const CylinderCapsul
   // (first order in its angle for a capsule), in the shallow and the deep
   // branch alike: both bounds together.
   const bool exact = valid_case(c);
-  return consistent_contact(kId, c, impl, exact, bounds(kId, impl).depth + bounds(kId, impl).normal);
+  return consistent_contact(kId, c, impl, exact, bounds(c, impl).depth + bounds(c, impl).normal);
 }
 
 namespace {
@@ -85,7 +85,7 @@ namespace {
 CheckResult same_answer(const char* what, const CylinderCapsuleCase& c0, const CylinderCapsuleCase& c1,
                         const CylinderCapsuleImpl& impl) {
   auto claimed = [&](const CylinderCapsuleCase& k) { return !std::isnan(evaluate(k, impl).depth_err); };
-  return geomcheck::same_answer(what, c0, c1, impl, 2 * bounds(kId, impl).depth, claimed);
+  return geomcheck::same_answer(what, c0, c1, impl, 2 * bounds(c0, impl).depth, claimed);
 }
 }  // namespace
 

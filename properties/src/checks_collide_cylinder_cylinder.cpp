@@ -136,11 +136,11 @@ double depth_ratio(const CylinderCylinderCase& c, const CylinderCylinderImpl& im
 
 CheckResult check_consistency(const CylinderCylinderCase& c, const CylinderCylinderImpl& impl) {
   const bool exact = valid_case(c);
-  return consistent_contact(kId, c, impl, exact, bounds(kId, impl).depth);
+  return consistent_contact(kId, c, impl, exact, bounds(c, impl).depth);
 }
 
 CheckResult check_symmetry(const CylinderCylinderCase& c, const CylinderCylinderImpl& impl) {
-  const Tolerances tol = bounds(kId, impl);
+  const Tolerances tol = bounds(c, impl);
   // (B, A): the same pair with the roles exchanged. The verdict agrees
   // outside the band; both hitting, the depths agree to the bound and the
   // normal is flipped, or (a tie between candidate directions) the flipped
@@ -185,7 +185,7 @@ CheckResult check_metamorphic(const CylinderCylinderCase& c, int move, const Cyl
       const QInterval along =
           overlap_along(oracle::make_shape(t.a), oracle::make_shape(t.b), oracle::to_q(a.m.vec(a.ct.normal)));
       return std::isfinite(oracle::to_double(along.hi)) &&
-             rel_error(along, a.ct2.depth, oracle::case_scale(t.a, t.b)) <= 2 * bounds(kId, impl).depth;
+             rel_error(along, a.ct2.depth, oracle::case_scale(t.a, t.b)) <= 2 * bounds(c, impl).depth;
     };
     if ((move == 0 || move == 1) && axes_coplanar(c) && !(a.m.vec(a.ct.normal) == a.ct2.normal)) {
       // A reflection of a scene symmetric in the plane of the two axes: the
@@ -196,7 +196,7 @@ CheckResult check_metamorphic(const CylinderCylinderCase& c, int move, const Cyl
         return Failure{a.what, "point not bit-identical (axes in one plane): " + describe(a.ct, a.ov) + " vs " +
                                  describe(a.ct2, a.ov2)};
       const double d = std::fabs(a.m.len(a.ct.depth) - a.ct2.depth) / oracle::case_scale(c.a, c.b);
-      if (!(d <= 2 * bounds(kId, impl).depth))
+      if (!(d <= 2 * bounds(c, impl).depth))
         return Failure{a.what + "-depth", fmt("depth differs by %.3g * scale (axes in one plane); ", d) +
                                             describe(a.ct, a.ov) + " vs " + describe(a.ct2, a.ov2)};
       const Vec3 w = common_plane_normal(t), n = a.m.vec(a.ct.normal);
@@ -206,7 +206,7 @@ CheckResult check_metamorphic(const CylinderCylinderCase& c, int move, const Cyl
       const bool coaxial = max_abs(w) == 0;
       const Vec3 u = t.a.q - t.a.p;
       const bool ok = coaxial ? std::fabs(dot(n - a.ct2.normal, u)) <= 64 * 0x1p-52 * length(u) &&
-                                    std::fabs(length(a.ct2.normal) - 1) <= bounds(kId, impl).unit
+                                    std::fabs(length(a.ct2.normal) - 1) <= bounds(c, impl).unit
                               : length(mirror - a.ct2.normal) <= 64 * 0x1p-52;
       // Or a tie of another pair: a scene may have a second symmetry
       // (regression 0016: A a disk across B, its centre in B's mid plane to

@@ -79,7 +79,7 @@ CheckResult check_consistency(const CylinderSphereCase& c, const CylinderSphereI
   if (ov != ct.hit) return Failure{"consistency-overlap-vs-collide", describe(ct, ov)};
   if (!ct.hit) return std::nullopt;
   if (!finite_contact(ct)) return Failure{"consistency-finite", describe(ct, ov)};
-  const Tolerances tol = bounds(kId, impl);
+  const Tolerances tol = bounds(c, impl);
   if (std::fabs(length(ct.normal) - 1) > tol.unit) return Failure{"consistency-unit-normal", describe(ct, ov)};
   if (!(ct.depth >= 0)) return Failure{"consistency-depth-nonnegative", describe(ct, ov)};
   if (!valid_case(c)) return std::nullopt;
@@ -114,7 +114,7 @@ CheckResult check_symmetry(const CylinderSphereCase& c, const CylinderSphereImpl
     const Contact c2 = impl.collide(s.a, s.b);
     const double scale = oracle::case_scale(c.a, c.b);
     const double d = std::fabs(c2.depth - ct.depth) / scale;
-    if (d > 2 * bounds(kId, impl).depth)
+    if (d > 2 * bounds(c, impl).depth)
       return Failure{"symmetry-caps-swapped-depth", fmt("depth differs by %.3g * scale; ", d) + describe(ct, ov) + " vs " + describe(c2, ov2)};
   }
   return std::nullopt;

@@ -146,7 +146,7 @@ CheckResult check_consistency(const SweepCylinderCase& c, const SweepSphereCylin
   const CastHit h = impl.sweep(c.a, c.b);
   if (auto f = consistent_hit(kId, h, impl.claims)) return f;
   if (!valid_case(c)) return std::nullopt;
-  const Tolerances tol = bounds(kId, impl);
+  const Tolerances tol = bounds(c, impl);
   const double scale = oracle::case_scale(c.a, c.b);
   // starts_inside is the sphere query's verdict at t = 0.
   // Production's verdict at t = 0, unless the ball starts within the
@@ -194,7 +194,7 @@ CheckResult check_metamorphic(const SweepCylinderCase& c, int move, const SweepS
     const Evaluation e0 = evaluate(c, impl);
     const double moved_scale = std::max(e0.scale, oracle::case_scale(t.a, t.b));
     // The subject answers the moved case to its band at the moved scale.
-    const double slack = bounds(kId, impl).verdict * moved_scale + moves::rigid_slack(c.b) * moved_scale;
+    const double slack = std::max(bounds(c, impl).verdict, bounds(t, impl).verdict) * moved_scale + moves::rigid_slack(c.b) * moved_scale;
     if (std::fabs(e0.signed_distance) <= slack || e0.near_boundary) return std::nullopt;
     return Failure{what, "verdict changed beyond the band and the motion's rounding: " + describe(h0) + " vs " + describe(h1)};
   };

@@ -83,6 +83,21 @@ Tolerances bounds_of(QueryId id, const Claims* claims) {
   return t;
 }
 
+double input_motion(const Sphere&) { return 2; }
+double input_motion(const Segment&) { return 2; }
+double input_motion(const Capsule&) { return 2; }
+double input_motion(const Triangle&) { return 2; }
+double input_motion(const MovingSphere&) { return 4; }
+double input_motion(const Obb&) { return 2 + 3 * 2; }
+double input_motion(const Cylinder& s) {
+  // The rim turns with the axis: each end moves by up to 2 (in u * scale),
+  // so the axis turns by up to 4 / L radians and the rim point r away by
+  // 4 r / L more. An axis so short that this is not finite: no bound.
+  const double len = length(s.q - s.p);
+  const double swing = len > 0 ? 4 * s.r / len : INFINITY;
+  return 2 + (std::isfinite(swing) ? swing : INFINITY);
+}
+
 bool states_scale(const Claims* claims, double scale) {
   if (!claims) return true;
   return scale >= claims->precision.min_scale && scale <= claims->precision.max_scale;
@@ -118,7 +133,9 @@ CheckResult judge_depth(QueryId id, const Evaluation& e, const Claims* claims, d
 
 std::vector<Failure> judge_every(QueryId id, const Evaluation& e, const Claims* claims) {
   std::vector<Failure> out;
-  const Tolerances tol = bounds_of(id, claims);
+  // The evaluation's own bounds (the subject's on that case, evaluate()
+  // sets them); bounds_of the claims for one made otherwise.
+  const Tolerances tol = e.tol.verdict > 0 ? e.tol : bounds_of(id, claims);
   const double margin = claims ? claims->margin : 0.0;
   if (!e.valid) {
     if (e.prod_hit || e.disagree) out.push_back({"invalid-input", "invalid input reported a hit: " + e.prod_text});

@@ -56,16 +56,38 @@ double cylinder_normal_error(const oracle::QCylinder& c, const oracle::QVec& x, 
 /// certainly below or above the certified penetration depth `pd`.
 void score_depth_sides(Evaluation& e, const oracle::QInterval& pd, double depth);
 
-/// The bounds subject `impl` of query id is held to (bounds_of its claims).
-template <class Impl>
-Tolerances bounds(QueryId id, const Impl& impl) {
-  return bounds_of(id, impl.claims);
-}
-/// The bounds of a case's query for subject `impl`.
+/// How far rounding every coordinate of a shape by u * scale (a subject
+/// narrower than double reading its input) can move its surface, in units
+/// of u * scale: points 2 (sqrt 3 per point, rounded up), a cylinder's rim
+/// swings about its axis by 2 r / L as much again, a box's corners move
+/// with its axes by its extents (at most 3 scale), a sweep's end position
+/// with its start and its displacement.
+double input_motion(const Sphere& s);
+double input_motion(const Segment& s);
+double input_motion(const Capsule& s);
+double input_motion(const Triangle& s);
+double input_motion(const MovingSphere& s);
+double input_motion(const Cylinder& s);
+double input_motion(const Obb& s);
+
+/// The bounds subject `impl` is held to on case c: bounds_of its claims,
+/// and, for a subject narrower than double (Tolerances::input > 0), every
+/// scaled bound widened by how far rounding the input moves the two solids
+/// apart or together (input_motion of both, times input; the normal's
+/// overlap twice that: it moves at both ends). For production and double
+/// subjects, bounds_of alone.
 template <class Case, class Impl>
-Tolerances bounds_for(const Impl& impl) {
-  return bounds_of(query_of_case<Case>, impl.claims);
+Tolerances bounds(const Case& c, const Impl& impl) {
+  Tolerances t = bounds_of(query_of_case<Case>, impl.claims);
+  if (!(t.input > 0) || !is_valid(c.a) || !is_valid(c.b)) return t;
+  const double m = t.input * (input_motion(c.a) + input_motion(c.b));
+  auto widen = [](double& b, double by) {
+    if (b > 0) b += by;
+  };
+  widen(t.verdict, m), widen(t.depth, m), widen(t.point, m), widen(t.t, m), widen(t.normal, 2 * m);
+  return t;
 }
+
 /// Whether exact moves of the scene must move the subject's answer bit for
 /// bit (Precision::exact_moves; production: yes).
 template <class Impl>

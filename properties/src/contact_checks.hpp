@@ -77,7 +77,7 @@ CheckResult consistent_contact(QueryId id, const Case& c, const Impl& impl, bool
   if (ov != ct.hit) return Failure{"consistency-overlap-vs-collide", describe(ct, ov)};
   if (!ct.hit) return std::nullopt;
   if (!finite_contact(ct)) return Failure{"consistency-finite", describe(ct, ov)};
-  if (std::fabs(length(ct.normal) - 1) > bounds(id, impl).unit) return Failure{"consistency-unit-normal", describe(ct, ov)};
+  if (std::fabs(length(ct.normal) - 1) > bounds(c, impl).unit) return Failure{"consistency-unit-normal", describe(ct, ov)};
   if (!(ct.depth >= 0)) return Failure{"consistency-depth-nonnegative", describe(ct, ov)};
   if (!exact) return std::nullopt;
   const oracle::QInterval along =
@@ -176,8 +176,9 @@ CheckResult verdict_kept(QueryId id, const std::string& what, const Case& c, con
   // to its band at that case's scale.
   const double larger = std::max(e0.scale, e1.scale);
   const double slack = move == 5 ? rigid_slack * larger : 0.0;
+  const double band = std::max(bounds(c, impl).verdict, bounds(t, impl).verdict);
   auto near = [&](const Evaluation& e) {
-    return e.near_boundary || std::fabs(e.signed_distance) <= bounds(id, impl).verdict * larger + slack;
+    return e.near_boundary || std::fabs(e.signed_distance) <= band * larger + slack;
   };
   if (!near(e0) && !near(e1))
     return Failure{what, "verdict changed outside the band: " + describe(ct, ov) + " vs " + describe(ct2, ov2)};

@@ -52,7 +52,7 @@ template <class Case>
 CheckResult robust(const Case& c, const ImplOfCase<Case>& impl) {
   constexpr QueryKind kind = QueryTraits<query_of_case<Case>>::kind;
   const bool valid = is_valid(c.a) && is_valid(c.b);
-  const double unit = 100 * bounds_for<Case>(impl).unit;
+  const double unit = 100 * bounds(c, impl).unit;
   if constexpr (kind == QueryKind::Collide) return robust_contact(valid, impl.overlap(c.a, c.b), impl.collide(c.a, c.b), unit);
   else if constexpr (kind == QueryKind::Cast) return robust_hit(valid, impl.cast(c.a, c.b), unit);
   else return robust_hit(valid, impl.sweep(c.a, c.b), unit);
@@ -154,7 +154,7 @@ Memo<Case, Answer>& memo() {
 template <class Case, class Peer>
 Evaluation evaluate_pair(const Case& c, const ImplOfCase<Case>& impl, const Peer* peer) {
   Evaluation e;
-  e.tol = bounds_for<Case>(impl);
+  e.tol = bounds(c, impl);
   using Answer = typename SubjectAnswerOf<QueryTraits<query_of_case<Case>>::kind>::type;
   Answer answer;
   if (!start_evaluation(e, c, impl, answer)) return e;

@@ -101,14 +101,14 @@ void hold_to_truth(Evaluation& e, const Case& c, const Contact& ct, const Contac
 template <class Case, class Impl>
 CheckResult consistency(const Case& c, const Impl& impl) {
   const bool exact = valid_case(c);
-  return consistent_contact(query_of_case<Case>, c, impl, exact, bounds(query_of_case<Case>, impl).depth);
+  return consistent_contact(query_of_case<Case>, c, impl, exact, bounds(c, impl).depth);
 }
 
 template <class Case, class Impl>
 CheckResult symmetry(const Case& c, const Impl& impl) {
   if (auto f = argument_order(c, impl)) return f;
   // Same solid, other representation (contact_checks.hpp).
-  const Tolerances tol = bounds(query_of_case<Case>, impl);
+  const Tolerances tol = bounds(c, impl);
   const double bound = 2 * tol.depth + tol.normal;
   if (!valid_case(c)) return std::nullopt;
   if (auto f = same_answer("symmetry-caps-swapped", c, {{c.a.q, c.a.p, c.a.r}, c.b}, impl, bound)) return f;
@@ -131,7 +131,7 @@ CheckResult metamorphic(const Case& c, int move, const Impl& impl) {
       return Failure{a.what, "point not bit-identical (axis in the triangle's plane): " + describe(a.ct, a.ov) +
                                  " vs " + describe(a.ct2, a.ov2)};
     const double d = std::fabs(a.m.len(a.ct.depth) - a.ct2.depth) / oracle::case_scale(c.a, c.b);
-    if (!(d <= 2 * bounds(query_of_case<Case>, impl).depth))
+    if (!(d <= 2 * bounds(c, impl).depth))
       return Failure{a.what + "-depth", fmt("depth differs by %.3g * scale (axis in the triangle's plane); ", d) +
                                             describe(a.ct, a.ov) + " vs " + describe(a.ct2, a.ov2)};
     return std::nullopt;

@@ -12,15 +12,24 @@
 //                       closest approach to the axis (no cancellation far
 //                       from the hit).
 //
+// And for every registered pair query, production seen the way another
+// engine sees the scene (production_seen_in<Q, T>): in float, every input
+// coordinate rounded to float and every output number too (a float engine's
+// input and answer); in double, every input coordinate moved one ulp up (an
+// answer for a neighbouring scene). Both are correct but not exact, and
+// exercise every query's checks on answers that are not production's bit
+// for bit; they are not user-style code.
+//
 // Each is declared with its precision (Precision::double_precision or
-// single_precision: production's counts of ulps at the type's unit
-// roundoff) and nothing else: test_reference_subjects holds them to every
+// single_precision, and valid scenes only) and nothing else: test_reference_subjects holds them to every
 // property on three seeds and expects no failure, and expects each sibling
 // to fail the property that names its flaw.
 #pragma once
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
+#include <type_traits>
 #include <limits>
 
 #include <geomcheck/verify.hpp>
@@ -225,6 +234,73 @@ auto cast_subject(const char* name, Flaw flaw = Flaw::None) {
     return out;
   };
   return subject<QueryId::cast_segment_cylinder>(name, cast_fn, claims_in<QueryId::cast_segment_cylinder, T>());
+}
+
+// --- production as another engine sees the scene -----------------------------
+
+/// Every double of a shape (shapes are plain doubles) through f.
+template <class S, class F>
+S map_doubles(const S& s, F f) {
+  static_assert(std::is_trivially_copyable_v<S> && sizeof(S) % sizeof(double) == 0, "a shape of doubles");
+  double a[sizeof(S) / sizeof(double)];
+  std::memcpy(a, &s, sizeof s);
+  for (double& x : a) x = f(x);
+  S out;
+  std::memcpy(&out, a, sizeof s);
+  return out;
+}
+/// The input as a subject computing in T sees it: rounded to float, or (T
+/// double) moved one ulp up (strictly monotone: distinct points stay
+/// distinct).
+template <class T>
+double seen(double x) {
+  if constexpr (sizeof(T) == sizeof(float)) return double(float(x));
+  else return std::nextafter(x, INFINITY);
+}
+/// An output number as a subject computing in T gives it.
+template <class T>
+double given(double x) {
+  return double(T(x));
+}
+template <class T>
+geomcheck::Vec3 given(geomcheck::Vec3 v) {
+  return {given<T>(v.x), given<T>(v.y), given<T>(v.z)};
+}
+
+/// Production of query Q, asked about the scene as seen in T, answering in
+/// T. `stretch` != 1: a known-wrong sibling, every number of the first
+/// shape (a cylinder, segment or moving sphere: points and radii) scaled by
+/// it about the origin, so that it answers for a shape up to
+/// (stretch - 1) * scale away.
+template <geomcheck::QueryId Q, class T>
+auto production_seen_in(const char* name, double stretch = 1) {
+  using namespace geomcheck;
+  using A = typename QueryTraits<Q>::ShapeA;
+  using B = typename QueryTraits<Q>::ShapeB;
+  const ImplOf<Q>& prod = production_of<Q>();
+  auto a_of = [stretch](const A& a) { return map_doubles(a, [stretch](double x) { return seen<T>(x * stretch); }); };
+  auto b_of = [](const B& b) { return map_doubles(b, seen<T>); };
+  // The moved scene must still be a valid one: an axis shorter than float's
+  // resolution collapses, and that scene is not stated.
+  auto expresses = [a_of, b_of](const A& a, const B& b) { return is_valid(a_of(a)) && is_valid(b_of(b)); };
+  if constexpr (QueryTraits<Q>::kind == QueryKind::Collide) {
+    auto collide_fn = [prod, a_of, b_of](const A& a, const B& b) {
+      Contact k = prod.collide(a_of(a), b_of(b));
+      k.point = given<T>(k.point), k.normal = given<T>(k.normal), k.depth = given<T>(k.depth);
+      return k;
+    };
+    auto overlap_fn = [prod, a_of, b_of](const A& a, const B& b) { return prod.overlap(a_of(a), b_of(b)); };
+    return subject<Q>(name, overlap_fn, collide_fn, claims_in<Q, T>(), expresses);
+  } else {
+    auto answer = [prod, a_of, b_of](const A& a, const B& b) {
+      CastHit h;
+      if constexpr (QueryTraits<Q>::kind == QueryKind::Cast) h = prod.cast(a_of(a), b_of(b));
+      else h = prod.sweep(a_of(a), b_of(b));
+      h.t = given<T>(h.t), h.point = given<T>(h.point), h.normal = given<T>(h.normal);
+      return h;
+    };
+    return subject<Q>(name, answer, claims_in<Q, T>(), expresses);
+  }
 }
 
 }  // namespace ref

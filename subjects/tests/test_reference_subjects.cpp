@@ -17,6 +17,9 @@
 #ifndef GEOMCHECK_REFERENCE_CASES
 #define GEOMCHECK_REFERENCE_CASES 2000
 #endif
+#ifndef GEOMCHECK_REFERENCE_PROXY_CASES
+#define GEOMCHECK_REFERENCE_PROXY_CASES 300
+#endif
 
 namespace geomcheck {
 namespace {
@@ -65,6 +68,38 @@ TEST(Reference, SphereInDouble) { expect_clean(ref::sphere_subject<double>("ref-
 TEST(Reference, SphereInFloat) { expect_clean(ref::sphere_subject<float>("ref-sphere-float"), "sphere-float"); }
 TEST(Reference, CastInDouble) { expect_clean(ref::cast_subject<double>("ref-cast-double"), "cast-double"); }
 TEST(Reference, CastInFloat) { expect_clean(ref::cast_subject<float>("ref-cast-float"), "cast-float"); }
+
+// Production as another engine sees the scene, for every registered pair
+// query: in float (input and answer rounded to float) and in double (input
+// one ulp off), GEOMCHECK_REFERENCE_PROXY_CASES cases of each seed.
+template <QueryId Q, class T>
+void expect_proxy_clean(const char* name) {
+  const char* only = std::getenv("GEOMCHECK_REFERENCE_SEED");
+  const auto s = ref::production_seen_in<Q, T>(name);
+  for (std::uint64_t seed : kSeeds) {
+    if (only && std::to_string(seed) != only) continue;
+    const VerifyResult r = verify<Q>(s, options(name, seed, GEOMCHECK_REFERENCE_PROXY_CASES));
+    EXPECT_EQ(r.failures, 0) << name << " seed " << seed << ": " << r.failures << " failing cases (first: "
+                             << (r.by_property.empty() ? "" : r.by_property.begin()->first) << ")";
+    EXPECT_GT(r.cases, GEOMCHECK_REFERENCE_PROXY_CASES * 8 / 10) << "most cases are stated by " << name;
+  }
+}
+/// The float bounds are wide, not blind: production seen in float, its
+/// first shape stretched by 2^-10 (about 16 times float's default bound),
+/// fails.
+template <QueryId Q>
+void expect_stretch_caught_in_float() {
+  const auto s = ref::production_seen_in<Q, float>("stretched-in-float", 1 + 0x1p-10);
+  const VerifyResult r = verify<Q>(s, options(std::string("stretched-") + info(Q).name, kSeeds[0], 2000));
+  EXPECT_GT(r.failures, 0) << "production seen in float with its first shape stretched by 2^-10 passes "
+                           << info(Q).name;
+}
+#define GEOMCHECK_X(id, kind, A, B, summary)                                                          \
+  TEST(ReferenceProxyFloat, id) { expect_proxy_clean<QueryId::id, float>("production-in-float-" #id); } \
+  TEST(ReferenceProxyDouble, id) { expect_proxy_clean<QueryId::id, double>("production-ulp-off-" #id); } \
+  TEST(ReferenceStretchedInFloat, id) { expect_stretch_caught_in_float<QueryId::id>(); }
+GEOMCHECK_QUERY_LIST(GEOMCHECK_X)
+#undef GEOMCHECK_X
 
 // The siblings: each flaw caught, by the property that names it, in both
 // precisions (the float bounds are wide, not blind).
