@@ -357,7 +357,7 @@ Json peer_json(QueryReport& p) {
 Json query_json(QueryReport& r) {
   Json q = {{"id", r.name}, {"summary", r.summary}, {"claims", claims_json(r)}, {"requested", r.requested},
             {"stopped_by_time", r.stopped_by_time}, {"cases", r.cases}, {"valid", r.valid},
-            {"production_hits", r.prod_hits}, {"oracle_hits", r.truth_hits},
+            {"subject_hits", r.prod_hits}, {"oracle_hits", r.truth_hits},
             {"hit_rate", json_num(r.valid ? double(r.prod_hits) / r.valid : NAN)}, {"verdicts", r.verdicts},
             {"disagreements", r.disagree}, {"inside_band", r.excused}, {"beyond_band", r.beyond},
             {"worst_margin", json_num(r.worst_margin)}, {"verdict_band", json_num(r.tol.verdict)},
@@ -373,7 +373,7 @@ Json query_json(QueryReport& r) {
               {"distance_asked", r.fcl_distance_asked}, {"distance_verdicts_beyond_band", r.fcl_distance_beyond},
               {"distance", series_json(r.fcl_distance)}, {"by_signature", r.fcl_by_signature},
               {"shrunk", r.fcl_shrunk}, {"cases", r.fcl_cases}};
-  q["production_ns_per_query"] = json_num(r.prod_ns);
+  q["subject_ns_per_query"] = json_num(r.prod_ns);
   q["oracle_us_per_case"] = json_num(r.oracle_us);
   q["cases_per_second_per_core"] = json_num(r.oracle_us > 0 ? 1e6 / r.oracle_us : NAN);
   q["truth_stages"] = r.truth_stages;

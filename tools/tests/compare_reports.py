@@ -13,7 +13,7 @@ import sys
 
 # Keys whose values are timings or describe the run, not its figures.
 VOLATILE = {
-    "started", "command_line", "production_ns_per_query", "oracle_us_per_case", "cases_per_second_per_core",
+    "started", "command_line", "subject_ns_per_query", "oracle_us_per_case", "cases_per_second_per_core",
     "ns_per_call", "production_us", "cgal_us", "production_ms", "cgal_ms", "speed_ratio", "time_ratio",
     "production_us_per_set", "cgal_us_per_set", "production_us_total", "cgal_us_total", "production_over_cgal",
     "seconds", "meshes_per_second", "brute_force_us_total", "brute_force_over_production",
