@@ -100,16 +100,21 @@ TEST(Subjects, CasesASubjectCannotStateAreNotAsked) {
   EXPECT_EQ(r.figures.not_expressed, r.not_expressed);
 }
 
+/// Production's collide on the scene rounded to float, its depth and normal
+/// (and with `point`, its point) rounded to float: float code.
+Contact float_collide(const Cylinder& c, const Sphere& s, bool point) {
+  auto f = [](Vec3 v) { return Vec3{float(v.x), float(v.y), float(v.z)}; };
+  Contact k = collide(Cylinder{f(c.p), f(c.q), float(c.r)}, Sphere{f(s.c), float(s.r)});
+  k.depth = float(k.depth);
+  k.normal = f(k.normal);
+  if (point) k.point = f(k.point);
+  return k;
+}
+
 // Single precision: caught, each saved case a valid case file of the query
 // whose replay fails again.
 TEST(Subjects, SinglePrecisionIsCaughtAndReplays) {
-  auto collide_fn = [](const Cylinder& c, const Sphere& s) {
-    auto f = [](Vec3 v) { return Vec3{float(v.x), float(v.y), float(v.z)}; };
-    Contact k = collide(Cylinder{f(c.p), f(c.q), float(c.r)}, Sphere{f(s.c), float(s.r)});
-    k.depth = float(k.depth);
-    k.normal = f(k.normal);
-    return k;
-  };
+  auto collide_fn = [](const Cylinder& c, const Sphere& s) { return float_collide(c, s, false); };
   const auto mine = subject<kSphere>("float-inputs", [collide_fn](const Cylinder& c, const Sphere& s) {
     return collide_fn(c, s).hit;
   }, collide_fn);
@@ -148,14 +153,7 @@ TEST(Subjects, SinglePrecisionIsCaughtAndReplays) {
 // The same float code declaring its precision is judged by float's bounds:
 // no false alarm; its report's bounds are the subject's.
 TEST(Subjects, FloatCodeDeclaringItsPrecisionPasses) {
-  auto collide_fn = [](const Cylinder& c, const Sphere& s) {
-    auto f = [](Vec3 v) { return Vec3{float(v.x), float(v.y), float(v.z)}; };
-    Contact k = collide(Cylinder{f(c.p), f(c.q), float(c.r)}, Sphere{f(s.c), float(s.r)});
-    k.depth = float(k.depth);
-    k.normal = f(k.normal);
-    k.point = f(k.point);
-    return k;
-  };
+  auto collide_fn = [](const Cylinder& c, const Sphere& s) { return float_collide(c, s, true); };
   Claims single = production_claims<kSphere>();
   single.precision = Precision::single_precision();
   single.any_input = false;
