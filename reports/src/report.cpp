@@ -129,8 +129,18 @@ std::string hist_svg(const Series& s, double bound) {
 // The precision table: production and FCL, a row each, per query.
 std::string claims_text(const QueryReport& r);
 
+/// Whether FCL answered this query's cases (a campaign asks it; verify() does not).
+bool fcl_asked(QueryReport& r) {
+  return r.fcl_ok > 0 || r.fcl_disagree > 0 || !r.fcl_depth.v.empty() || !r.fcl_t_gap.v.empty() || !r.fcl_t.v.empty();
+}
+
 void write_precision_table(std::ostream& h, std::vector<QueryReport>& reps) {
-  h << "<h2 id='precision'>Precision table: production and FCL against the exact oracle</h2>"
+  bool any_fcl = false;
+  for (QueryReport& r : reps) any_fcl |= fcl_asked(r);
+  bool one_subject = true;
+  for (QueryReport& r : reps) one_subject &= r.subject == reps.front().subject;
+  const std::string whom = one_subject && !reps.empty() ? html(reps.front().subject) : std::string("each subject");
+  h << "<h2 id='precision'>Precision table: " << whom << (any_fcl ? " and FCL" : "") << " against the exact oracle</h2>"
        "<p>Every error is measured with the same exact yardstick for both engines, as a multiple of the case scale "
        "(p50 / p99 / max over the cases where it applies). <b>verdicts</b>: disagreements with the certified "
        "verdict where the exact answer is farther than the band from touching (collide: overlap or FCL's collide; "
@@ -163,15 +173,17 @@ void write_precision_table(std::ostream& h, std::vector<QueryReport>& reps) {
       << "</td><td>&ndash;</td><td>&ndash;</td></tr>";
   };
   for (QueryReport& r : reps) {
-    h << "<tr><td class='l' rowspan='" << 2 + 2 * r.first.size() + r.peers.size() << "'><a href='#" << r.name << "'>"
-      << r.name << "</a></td>";
-    production_row(r, "production");
-    fcl_row(r, "FCL");
+    // FCL's rows only where FCL was asked (a campaign); the subject's under its name.
+    const bool fcl = fcl_asked(r);
+    h << "<tr><td class='l' rowspan='" << (fcl ? 2 : 1) * (1 + r.first.size()) + r.peers.size() << "'><a href='#"
+      << r.name << "'>" << r.name << "</a></td>";
+    production_row(r, html(r.subject));
+    if (fcl) fcl_row(r, "FCL");
     for (QueryReport& f : r.first) {
       const std::string first = " (the first " + std::to_string(f.cases) + ", as the engines)";
       h << "<tr class='same'>";
-      production_row(f, "production" + first);
-      fcl_row(f, "FCL" + first);
+      production_row(f, html(r.subject) + first);
+      if (fcl) fcl_row(f, "FCL" + first);
     }
     for (QueryReport& p : r.peers)
       h << "<tr><td class='l' title=\"" << html(claims_text(p)) << "\">" << html(p.subject) << "</td><td>" << p.valid
@@ -182,7 +194,9 @@ void write_precision_table(std::ostream& h, std::vector<QueryReport>& reps) {
         << tri(p.point) << "</td><td>&ndash;</td><td>" << tri(p.t) << "</td><td>&ndash;</td><td>" << failures_cell(p)
         << bugreports_cell(p) << "</td><td>" << hnum(p.prod_ns) << " ns</td></tr>";
   }
-  h << "</table><p>Production's and FCL's first rows are over every case of the run; the rows marked &ldquo;the "
+  h << "</table>";
+  if (!any_fcl) return;  // the engines' paragraph: a campaign's
+  h << "<p>Production's and FCL's first rows are over every case of the run; the rows marked &ldquo;the "
        "first N&rdquo; are over the same cases as the engines below them, for a like-for-like comparison. The "
        "engines' <b>distance</b> is &ndash;: their subjects answer collide, not a distance query. "
        "Other engines (ODE, Bullet, MuJoCo, where built) answer the first cases of each query through "
@@ -229,7 +243,7 @@ void write_query_section(std::ostream& h, QueryReport& r, const std::filesystem:
   const bool clean = r.beyond == 0 && r.check_failures == 0;
   // FCL's column only where FCL was asked (a campaign's first cases); the
   // subject's column under its own name.
-  const bool fcl = r.fcl_ok > 0 || r.fcl_disagree > 0 || !r.fcl_depth.v.empty() || !r.fcl_t_gap.v.empty();
+  const bool fcl = fcl_asked(r);
   auto row = [&](const std::string& label, const std::string& mine, const std::string& theirs = "") {
     h << "<tr><td class='l'>" << label << "</td>" << mine;
     if (fcl) h << "<td>" << theirs << "</td>";
