@@ -226,6 +226,11 @@ std::string claims_text(const QueryReport& r) {
   if (c.margin > 0) t += "; margin " + jnum(c.margin) + " * scale";
   if (*c.normal) t += std::string("; normal: ") + c.normal;
   if (*c.truth) t += std::string("; truth: ") + c.truth;
+  const Precision& p = c.precision;
+  if (!(p.unit_roundoff == 0x1p-53 && p.ulps == 0 && p.min_scale == 0 && p.max_scale == INFINITY))
+    t += std::string("; precision: ") + (p.unit_roundoff == 0x1p-24 ? "float" : p.unit_roundoff == 0x1p-53 ? "double" : "custom") +
+         ", " + jnum(p.ulps) + " ulps of the scene, scales " + jnum(p.min_scale) + " to " + jnum(p.max_scale) +
+         " (the bounds below derive from it)";
   return t;
 }
 
