@@ -10,6 +10,19 @@
 
 namespace geomcheck::report {
 
+std::string precision_text(const Precision& p) {
+  if (p.unit_roundoff == 0x1p-53 && p.ulps == 0 && p.min_scale == 0 && p.max_scale == INFINITY)
+    return "production's (double, its own bounds, every scale)";
+  char b[320];
+  std::snprintf(b, sizeof b, "%s (u = 2^%d), %s, scales [%.3g, %.3g]%s",
+                p.unit_roundoff == 0x1p-24 ? "float" : (p.unit_roundoff == 0x1p-53 ? "double" : "custom"),
+                static_cast<int>(std::lround(std::log2(p.unit_roundoff))),
+                p.ulps > 0 ? (std::to_string(static_cast<long long>(p.ulps)) + " ulps of the scene").c_str()
+                           : "production's bounds at this u",
+                p.min_scale, p.max_scale, p.exact_moves ? "" : ", moves not bit-exact");
+  return b;
+}
+
 namespace {
 
 /// The page drawn beside a saved case file, as a link from a report written
@@ -226,13 +239,10 @@ std::string claims_text(const QueryReport& r) {
   if (c.margin > 0) t += "; margin " + jnum(c.margin) + " * scale";
   if (*c.normal) t += std::string("; normal: ") + c.normal;
   if (*c.truth) t += std::string("; truth: ") + c.truth;
-  const Precision& p = c.precision;
-  if (!(p.unit_roundoff == 0x1p-53 && p.ulps == 0 && p.min_scale == 0 && p.max_scale == INFINITY))
-    t += std::string("; precision: ") + (p.unit_roundoff == 0x1p-24 ? "float" : p.unit_roundoff == 0x1p-53 ? "double" : "custom") +
-         ", " + jnum(p.ulps) + " ulps of the scene, scales " + jnum(p.min_scale) + " to " + jnum(p.max_scale) +
-         " (the bounds below derive from it)";
+  t += "; precision: " + report::precision_text(c.precision) + " (the bounds below derive from it)";
   return t;
 }
+
 
 /// The claims as JSON.
 Json claims_json(const QueryReport& r) {

@@ -156,19 +156,8 @@ std::string claims_text(const ImplOf<Q>& subject) {
     t += std::string("; margin ") + m + " * scale";
   }
   if (*c.normal) t += std::string("; normal: ") + c.normal;
-  const Precision& p = c.precision;
+  t += "; precision: " + report::precision_text(c.precision);
   char b[320];
-  if (p.unit_roundoff == 0x1p-53 && p.ulps == 0 && p.min_scale == 0 && p.max_scale == INFINITY) {
-    t += "; precision: production's (double, its own bounds, every scale)";
-  } else {
-    std::snprintf(b, sizeof b, "; precision: %s (u = 2^%d), %s, scales [%.3g, %.3g]%s",
-                  p.unit_roundoff == 0x1p-24 ? "float" : (p.unit_roundoff == 0x1p-53 ? "double" : "custom"),
-                  static_cast<int>(std::lround(std::log2(p.unit_roundoff))),
-                  p.ulps > 0 ? (std::to_string(static_cast<long long>(p.ulps)) + " ulps of the scene").c_str()
-                             : "production's bounds at this u",
-                  p.min_scale, p.max_scale, p.exact_moves ? "" : ", moves not bit-exact");
-    t += b;
-  }
   const Tolerances tol = bounds_of(Q, subject.claims);
   std::snprintf(b, sizeof b, "\nbounds of %s (* scale): verdict band %.3g, depth %.3g, normal %.3g, point %.3g, t %.3g; |normal| - 1: %.3g",
                 subject.name, tol.verdict, tol.depth, tol.normal, tol.point, tol.t, tol.unit);

@@ -162,6 +162,12 @@ struct RunInfo {
 inline constexpr int kMaxSavedPerKind = 25;
 /// Case files saved per failure signature (property and generator mode).
 inline constexpr int kMaxSavedPerSignature = 5;
+
+/// A subject's precision in words, for verify's summary and the report's
+/// claims line: "production's (...)" for production's, else the type, its
+/// unit roundoff, the ulps claimed, the range of scales, and whether exact
+/// moves are bit-exact.
+std::string precision_text(const Precision& p);
 /// Checks a counterexample's shrink may spend before it is saved.
 inline constexpr int kShrinkBudget = 60;
 
