@@ -406,11 +406,16 @@ class QueryRun {
     if (save_case(path, f, err)) rep_.counterexamples.push_back(path.string());
     else std::fprintf(stderr, "[campaign] cannot save %s: %s\n", path.string().c_str(), err.c_str());
     const draw::Answer ans = answer_of(small, *impl_);
-    const std::string drawing =
+    std::string drawing =
         draw::views(small,
                     html(std::string("case ") + name + ": " + failure->property + ": " + failure->detail +
                          "; oracle: " + e.truth_text),
                     {}, &ans);
+    // A relation's failure: the case it was compared with, beside it.
+    if (const auto* t = std::any_cast<typename QueryTraits<Q>::Case>(&failure->related)) {
+      const draw::Answer other = answer_of(*t, *impl_);
+      drawing += draw::views(*t, html("the case " + failure->property + " compared it with"), {}, &other);
+    }
     const std::string subject = impl_->name;
     const std::string replay = subject == "production"
                                    ? "geomcheck replay " + path.string()

@@ -102,13 +102,15 @@ CheckResult monotone(const Case& c, const Impl& impl) {
     Obb b = c.b;
     b.e[i] = std::nextafter(b.e[i], INFINITY);
     if (std::isfinite(b.e[i]) && lost({c.a, b}))
-      return Failure{"monotone-box-extent", fmt("overlap lost when extent %d grows from %.17g", i, c.b.e[i])};
+      return Failure{"monotone-box-extent", fmt("overlap lost when extent %d grows from %.17g", i, c.b.e[i]),
+                     Case{c.a, b}};
   }
   // A longer cylinder: q moved outwards by q - p, only where that is exact
   // (else the axis direction rounds and the result is no superset).
   const Vec3 d = c.a.q - c.a.p, q2 = c.a.q + d;
-  if (is_finite(q2) && d + c.a.p == c.a.q && q2 - c.a.q == d && lost({Cylinder{c.a.p, q2, c.a.r}, c.b}))
-    return Failure{"monotone-cylinder-length", "overlap lost when the cylinder is extended beyond q"};
+  const Case longer{Cylinder{c.a.p, q2, c.a.r}, c.b};
+  if (is_finite(q2) && d + c.a.p == c.a.q && q2 - c.a.q == d && lost(longer))
+    return Failure{"monotone-cylinder-length", "overlap lost when the cylinder is extended beyond q", longer};
   return std::nullopt;
 }
 

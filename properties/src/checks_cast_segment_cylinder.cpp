@@ -164,8 +164,9 @@ CheckResult check_monotone(const SegmentCylinderCase& c, const CastSegmentCylind
   // the two cases is within the band of touching.
   if (auto f = cylinder_b_radius_kept(c, impl)) return f;
   const Vec3 far = c.a.a + 2.0 * (c.a.b - c.a.a);
-  if (is_finite(far) && hit_lost(c, {{c.a.a, far}, c.b}, impl))
-    return Failure{"monotone-segment-length", "hit, but the segment extended to twice its length misses"};
+  const SegmentCylinderCase longer{{c.a.a, far}, c.b};
+  if (is_finite(far) && hit_lost(c, longer, impl))
+    return Failure{"monotone-segment-length", "hit, but the segment extended to twice its length misses", longer};
   return std::nullopt;
 }
 

@@ -125,12 +125,16 @@ CheckResult check_monotone(const CylinderCapsuleCase& c, const CylinderCapsuleIm
   auto lost = [&](const CylinderCapsuleCase& bigger) { return overlap_lost(c, bigger, impl); };
   const double grow[] = {std::nextafter(c.b.r, INFINITY), c.b.r * 2 + 1e-300, c.b.r + 0.5 * c.a.r};
   for (double r : grow) {
-    if (std::isfinite(r) && lost({c.a, Capsule{c.b.p, c.b.q, r}}))
-      return Failure{"monotone-capsule-radius", fmt("overlap with capsule radius %.17g but not with %.17g", c.b.r, r)};
+    const CylinderCapsuleCase bigger{c.a, Capsule{c.b.p, c.b.q, r}};
+    if (std::isfinite(r) && lost(bigger))
+      return Failure{"monotone-capsule-radius", fmt("overlap with capsule radius %.17g but not with %.17g", c.b.r, r),
+                     bigger};
   }
   const double rc = std::nextafter(c.a.r, INFINITY);
-  if (std::isfinite(rc) && lost({Cylinder{c.a.p, c.a.q, rc}, c.b}))
-    return Failure{"monotone-cylinder-radius", fmt("overlap with cylinder radius %.17g but not with %.17g", c.a.r, rc)};
+  const CylinderCapsuleCase wider{Cylinder{c.a.p, c.a.q, rc}, c.b};
+  if (std::isfinite(rc) && lost(wider))
+    return Failure{"monotone-cylinder-radius", fmt("overlap with cylinder radius %.17g but not with %.17g", c.a.r, rc),
+                   wider};
   return std::nullopt;
 }
 

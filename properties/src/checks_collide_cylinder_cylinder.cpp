@@ -151,20 +151,23 @@ CheckResult check_symmetry(const CylinderCylinderCase& c, const CylinderCylinder
   if (ov != sov) {
     if (!valid_case(c) || !evaluate(c, impl).near_boundary)
       return Failure{"symmetry-argument-order",
-                     "verdict changed outside the band: " + describe(ct, ov) + " vs swapped " + describe(sw, sov)};
+                     "verdict changed outside the band: " + describe(ct, ov) + " vs swapped " + describe(sw, sov),
+                     CylinderCylinderCase{c.b, c.a}};
   } else if (ov && ct.hit && sw.hit && valid_case(c)) {
     const double scale = oracle::case_scale(c.a, c.b);
     const double d = std::fabs(ct.depth - sw.depth) / scale;
     if (!(d <= 2 * tol.depth))
       return Failure{"symmetry-argument-order-depth",
-                     fmt("depth differs by %.3g * scale; ", d) + describe(ct, ov) + " vs swapped " + describe(sw, sov)};
+                     fmt("depth differs by %.3g * scale; ", d) + describe(ct, ov) + " vs swapped " + describe(sw, sov),
+                     CylinderCylinderCase{c.b, c.a}};
     if (!(length(ct.normal + sw.normal) <= 64 * 0x1p-52)) {
       const QInterval along =
           overlap_along(oracle::make_shape(c.a), oracle::make_shape(c.b), oracle::to_q(-sw.normal));
       if (std::isfinite(oracle::to_double(along.hi)) && rel_error(along, ct.depth, scale) > 2 * tol.depth)
         return Failure{"symmetry-argument-order-normal",
                        "the swapped normal, flipped, is not as good a direction: " + describe(ct, ov) +
-                           " vs swapped " + describe(sw, sov)};
+                           " vs swapped " + describe(sw, sov),
+                       CylinderCylinderCase{c.b, c.a}};
     }
   }
   if (!valid_case(c)) return std::nullopt;
@@ -246,14 +249,16 @@ CheckResult check_monotone(const CylinderCylinderCase& c, const CylinderCylinder
     for (double r : rc)
       if (std::isfinite(r) && lost(with(Cylinder{k.p, k.q, r})))
         return Failure{std::string("monotone-radius-") + name,
-                       fmt("overlap with radius %.17g but not with %.17g", k.r, r)};
+                       fmt("overlap with radius %.17g but not with %.17g", k.r, r), with(Cylinder{k.p, k.q, r})};
     // Longer: q moved outwards by q - p (and p by p - q), only where that is
     // exact (else the axis direction rounds and the result is no superset).
     const Vec3 d = k.q - k.p, q2 = k.q + d, p2 = k.p - d;
     if (is_finite(q2) && d + k.p == k.q && q2 - k.q == d && lost(with(Cylinder{k.p, q2, k.r})))
-      return Failure{std::string("monotone-length-") + name, "overlap lost when the cylinder is extended beyond q"};
+      return Failure{std::string("monotone-length-") + name, "overlap lost when the cylinder is extended beyond q",
+                     with(Cylinder{k.p, q2, k.r})};
     if (is_finite(p2) && k.q - d == k.p && k.p - p2 == d && lost(with(Cylinder{p2, k.q, k.r})))
-      return Failure{std::string("monotone-length-") + name, "overlap lost when the cylinder is extended beyond p"};
+      return Failure{std::string("monotone-length-") + name, "overlap lost when the cylinder is extended beyond p",
+                     with(Cylinder{p2, k.q, k.r})};
   }
   return std::nullopt;
 }

@@ -108,14 +108,14 @@ CheckResult check_symmetry(const CylinderSphereCase& c, const CylinderSphereImpl
     const Evaluation e0 = evaluate(c, impl);
     if (!(e.excused || e0.excused))
       return Failure{"symmetry-caps-swapped", "overlap " + std::string(ov ? "yes" : "no") + " becomes " + (ov2 ? "yes" : "no") +
-                                                  " with caps swapped; oracle: " + e0.truth_text};
+                                                  " with caps swapped; oracle: " + e0.truth_text, s};
   }
   if (ov == ov2 && ov && valid_case(c)) {
     const Contact c2 = impl.collide(s.a, s.b);
     const double scale = oracle::case_scale(c.a, c.b);
     const double d = std::fabs(c2.depth - ct.depth) / scale;
     if (d > 2 * bounds(c, impl).depth)
-      return Failure{"symmetry-caps-swapped-depth", fmt("depth differs by %.3g * scale; ", d) + describe(ct, ov) + " vs " + describe(c2, ov2)};
+      return Failure{"symmetry-caps-swapped-depth", fmt("depth differs by %.3g * scale; ", d) + describe(ct, ov) + " vs " + describe(c2, ov2), s};
   }
   return std::nullopt;
 }
@@ -145,8 +145,10 @@ CheckResult check_monotone(const CylinderSphereCase& c, const CylinderSphereImpl
   // the two cases is within the subject's band of touching (overlap_lost).
   const double grow[] = {std::nextafter(c.b.r, INFINITY), c.b.r * 2 + 1e-300, c.b.r + 0.5 * c.a.r};
   for (double r : grow) {
-    if (std::isfinite(r) && overlap_lost(c, CylinderSphereCase{c.a, Sphere{c.b.c, r}}, impl))
-      return Failure{"monotone-sphere-radius", fmt("overlap with sphere radius %.17g but not with %.17g", c.b.r, r)};
+    const CylinderSphereCase bigger{c.a, Sphere{c.b.c, r}};
+    if (std::isfinite(r) && overlap_lost(c, bigger, impl))
+      return Failure{"monotone-sphere-radius", fmt("overlap with sphere radius %.17g but not with %.17g", c.b.r, r),
+                     bigger};
   }
   return cylinder_a_radius_kept(c, impl);
 }

@@ -204,12 +204,15 @@ CheckResult check_metamorphic(const SweepCylinderCase& c, int move, const SweepS
 CheckResult check_monotone(const SweepCylinderCase& c, const SweepSphereCylinderImpl& impl) {
   if (!valid_case(c) || !impl.sweep(c.a, c.b).hit) return std::nullopt;
   const double big = c.a.r * 2 + 0x1p-20 * oracle::case_scale(c.a, c.b);
-  if (std::isfinite(big) && hit_lost(c, {{c.a.c, big, c.a.delta}, c.b}, impl))
-    return Failure{"monotone-ball-radius", "hit with radius " + fmt("%.17g", c.a.r) + " but not with " + fmt("%.17g", big)};
+  const SweepCylinderCase bigger{{c.a.c, big, c.a.delta}, c.b};
+  if (std::isfinite(big) && hit_lost(c, bigger, impl))
+    return Failure{"monotone-ball-radius", "hit with radius " + fmt("%.17g", c.a.r) + " but not with " + fmt("%.17g", big),
+                   bigger};
   if (auto f = cylinder_b_radius_kept(c, impl)) return f;
   const MovingSphere longer{c.a.c, c.a.r, 2.0 * c.a.delta};
   if (is_valid(longer) && hit_lost(c, {longer, c.b}, impl))
-    return Failure{"monotone-sweep-length", "hit, but the sweep extended to twice its length misses"};
+    return Failure{"monotone-sweep-length", "hit, but the sweep extended to twice its length misses",
+                   SweepCylinderCase{longer, c.b}};
   return std::nullopt;
 }
 

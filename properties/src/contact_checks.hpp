@@ -105,14 +105,14 @@ CheckResult same_answer(const char* what, const Case& c0, const Case& c1, const 
     const Evaluation e0 = evaluate(c0, impl), e1 = evaluate(c1, impl);
     if (e0.near_boundary || e1.near_boundary) return std::nullopt;
     return Failure{what, std::string("overlap ") + (o0 ? "yes" : "no") + " becomes " + (o1 ? "yes" : "no") +
-                             "; oracle: " + e0.truth_text};
+                             "; oracle: " + e0.truth_text, c1};
   }
   if (!o0) return std::nullopt;
   const Contact k0 = impl.collide(c0.a, c0.b), k1 = impl.collide(c1.a, c1.b);
   const double d = std::fabs(k0.depth - k1.depth) / oracle::case_scale(c0.a, c0.b);
   if (d > depth_bound && held(c0))
     return Failure{std::string(what) + "-depth",
-                   fmt("depth differs by %.3g * scale; ", d) + describe(k0, o0) + " vs " + describe(k1, o1)};
+                   fmt("depth differs by %.3g * scale; ", d) + describe(k0, o0) + " vs " + describe(k1, o1), c1};
   return std::nullopt;
 }
 
@@ -153,9 +153,12 @@ bool overlap_lost(const Case& c, const Case& bigger, const Impl& impl) {
 template <class Case, class Impl>
 CheckResult cylinder_a_radius_kept(const Case& c, const Impl& impl) {
   const double rc[] = {std::nextafter(c.a.r, INFINITY), c.a.r * 2 + 1e-300};
-  for (double r : rc)
-    if (std::isfinite(r) && overlap_lost(c, Case{Cylinder{c.a.p, c.a.q, r}, c.b}, impl))
-      return Failure{"monotone-cylinder-radius", fmt("overlap with cylinder radius %.17g but not with %.17g", c.a.r, r)};
+  for (double r : rc) {
+    const Case bigger{Cylinder{c.a.p, c.a.q, r}, c.b};
+    if (std::isfinite(r) && overlap_lost(c, bigger, impl))
+      return Failure{"monotone-cylinder-radius", fmt("overlap with cylinder radius %.17g but not with %.17g", c.a.r, r),
+                     bigger};
+  }
   return std::nullopt;
 }
 
@@ -181,7 +184,7 @@ CheckResult verdict_kept(QueryId id, const std::string& what, const Case& c, con
     return e.near_boundary || std::fabs(e.signed_distance) <= band * larger + slack;
   };
   if (!near(e0) && !near(e1))
-    return Failure{what, "verdict changed outside the band: " + describe(ct, ov) + " vs " + describe(ct2, ov2)};
+    return Failure{what, "verdict changed outside the band: " + describe(ct, ov) + " vs " + describe(ct2, ov2), t};
   return std::nullopt;
 }
 
@@ -233,9 +236,12 @@ CheckResult collide_metamorphic(const Case& c, int move, const Impl& impl, InCon
   const Contact ct = impl.collide(c.a, c.b), ct2 = impl.collide(t.a, t.b);
   const std::string what = std::string("metamorphic-") + move_name(move);
   if (m.exact() && exact_moves(impl)) {
-    if (ov != ov2 || ct.hit != ct2.hit) return Failure{what, "verdict changed: " + describe(ct, ov) + " vs " + describe(ct2, ov2)};
+    if (ov != ov2 || ct.hit != ct2.hit)
+      return Failure{what, "verdict changed: " + describe(ct, ov) + " vs " + describe(ct2, ov2), t};
     if (!ct.hit) return std::nullopt;
-    return kept(t, MovedAnswers{m, what, ct, ct2, ov, ov2});
+    CheckResult r = kept(t, MovedAnswers{m, what, ct, ct2, ov, ov2});
+    if (r && !r->related.has_value()) r->related = t;  // the moved case, for the page
+    return r;
   }
   return verdict_kept(query_of_case<Case>, what, c, t, move, rigid_slack(c), impl, ct, ov, ct2, ov2);
 }

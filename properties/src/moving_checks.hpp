@@ -61,7 +61,7 @@ CheckResult same_verdict(const char* what, const Case& c0, const Case& c1, const
   if (h0.hit == h1.hit) return std::nullopt;
   const Evaluation e0 = evaluate(c0, impl), e1 = evaluate(c1, impl);
   if (e0.near_boundary || e1.near_boundary) return std::nullopt;
-  return Failure{what, describe(h0) + " vs " + describe(h1) + "; oracle: " + e0.truth_text + " / " + e1.truth_text};
+  return Failure{what, describe(h0) + " vs " + describe(h1) + "; oracle: " + e0.truth_text + " / " + e1.truth_text, c1};
 }
 
 /// B's caps swapped (B a cylinder): the same verdict, and the same answer to
@@ -76,7 +76,7 @@ CheckResult caps_swapped(const Case& c, const Impl& impl) {
   if (h0.hit && h1.hit && h0.starts_inside != h1.starts_inside) {
     const Evaluation e = evaluate(c, impl);
     if (!e.near_boundary && !(e.t_err <= e.tol.t))
-      return Failure{"symmetry-caps-swapped-start", describe(h0) + " vs " + describe(h1)};
+      return Failure{"symmetry-caps-swapped-start", describe(h0) + " vs " + describe(h1), sw};
   }
   return std::nullopt;
 }
@@ -89,10 +89,10 @@ template <class Case, class Impl>
 CheckResult exact_move_kept(const std::string& what, const moves::Move& m, const Case& c, const Case& t,
                             const Impl& impl, bool free_normal) {
   const CastHit h0 = moving_answer(c, impl), h1 = moving_answer(t, impl);
-  if (h0.hit != h1.hit) return Failure{what, "verdict changed: " + describe(h0) + " vs " + describe(h1)};
+  if (h0.hit != h1.hit) return Failure{what, "verdict changed: " + describe(h0) + " vs " + describe(h1), t};
   if (h0.hit && !(h0.t == h1.t && h0.starts_inside == h1.starts_inside && m.pt(h0.point) == h1.point &&
                   (free_normal || m.vec(h0.normal) == h1.normal)))
-    return Failure{what, "answer not bit-identical: " + describe(h0) + " vs " + describe(h1)};
+    return Failure{what, "answer not bit-identical: " + describe(h0) + " vs " + describe(h1), t};
   return std::nullopt;
 }
 
@@ -109,8 +109,10 @@ bool hit_lost(const Case& c, const Case& bigger, const Impl& impl) {
 template <class Case, class Impl>
 CheckResult cylinder_b_radius_kept(const Case& c, const Impl& impl) {
   const double wider = c.b.r * 2 + 0x1p-20 * length(c.b.q - c.b.p);
-  if (std::isfinite(wider) && hit_lost(c, Case{c.a, {c.b.p, c.b.q, wider}}, impl))
-    return Failure{"monotone-cylinder-radius", "hit with radius " + fmt("%.17g", c.b.r) + " but not with " + fmt("%.17g", wider)};
+  const Case bigger{c.a, {c.b.p, c.b.q, wider}};
+  if (std::isfinite(wider) && hit_lost(c, bigger, impl))
+    return Failure{"monotone-cylinder-radius",
+                   "hit with radius " + fmt("%.17g", c.b.r) + " but not with " + fmt("%.17g", wider), bigger};
   return std::nullopt;
 }
 
@@ -136,7 +138,9 @@ CheckResult moving_metamorphic(const Case& c, int move, const Impl& impl, RigidC
   if (move != 5) return same_verdict(what.c_str(), c, t, impl);
   const CastHit h0 = moving_answer(c, impl), h1 = moving_answer(t, impl);
   if (h0.hit == h1.hit) return std::nullopt;
-  return rigid_certain(t, what, h0, h1);
+  CheckResult r = rigid_certain(t, what, h0, h1);
+  if (r && !r->related.has_value()) r->related = t;  // the moved case, for the page
+  return r;
 }
 
 }  // namespace geomcheck

@@ -161,13 +161,14 @@ CheckResult monotone(const Case& c, const Impl& impl) {
       continue;
     if (lost({c.a, g}))
       return Failure{"monotone-triangle-scaled",
-                     "overlap lost when the triangle is scaled by 2 about its vertex " + vec(r.a)};
+                     "overlap lost when the triangle is scaled by 2 about its vertex " + vec(r.a), Case{c.a, g}};
   }
   // A longer cylinder: q moved outwards by q - p, only where that is exact
   // (else the axis direction rounds and the result is no superset).
   const Vec3 d = c.a.q - c.a.p, q2 = c.a.q + d;
-  if (is_finite(q2) && d + c.a.p == c.a.q && q2 - c.a.q == d && lost({Cylinder{c.a.p, q2, c.a.r}, c.b}))
-    return Failure{"monotone-cylinder-length", "overlap lost when the cylinder is extended beyond q"};
+  const Case longer{Cylinder{c.a.p, q2, c.a.r}, c.b};
+  if (is_finite(q2) && d + c.a.p == c.a.q && q2 - c.a.q == d && lost(longer))
+    return Failure{"monotone-cylinder-length", "overlap lost when the cylinder is extended beyond q", longer};
   return std::nullopt;
 }
 

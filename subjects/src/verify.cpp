@@ -133,9 +133,15 @@ bool save_failure(const typename QueryTraits<Q>::Case& c, const ImplOf<Q>& subje
   draw::Answer ans;  // a subject that crashed is not asked again
   ans.label = std::string(subject.name) + ": crashed";
   if (with_answer) ans = drawn_answer(c, subject);
-  const std::string drawing = draw::views(
+  std::string drawing = draw::views(
       c, report::html(std::string(name) + ": " + f.property + ": " + f.detail + "; truth: " + e.truth_text), {},
       &ans);
+  // A relation's failure: the case it was compared with, beside it.
+  if (const auto* t = std::any_cast<typename QueryTraits<Q>::Case>(&f.related)) {
+    draw::Answer other = ans;
+    if (with_answer) other = drawn_answer(*t, subject);
+    drawing += draw::views(*t, report::html("the case " + f.property + " compared it with"), {}, &other);
+  }
   report::write_counterexample_page(std::filesystem::path(path).replace_extension(".html"), name, drawing, subject.name,
                                     replay_command(opt, path));
   return true;

@@ -192,6 +192,43 @@ TEST(Subjects, EveryFailingPropertyOfACaseIsReported) {
   EXPECT_NE(json.find("\"robust-unit-normal\""), std::string::npos);
 }
 
+// A relation's failure is drawn with the case it compared: a subject that
+// answers for one cap order only fails symmetry-caps-swapped, and that
+// page shows the case with its caps swapped beside the original.
+TEST(Subjects, RelationFailurePageDrawsBothCases) {
+  const auto& prod = production_of<kSphere>();
+  auto one_order = [&prod](const Cylinder& c, const Sphere& s) {
+    Contact k = prod.collide(c, s);
+    if (c.p.x > c.q.x) k = Contact{};  // "p first": the other order never touches
+    return k;
+  };
+  const auto mine = subject<kSphere>("one-cap-order", [one_order](const Cylinder& c, const Sphere& s) {
+    return one_order(c, s).hit;
+  }, one_order);
+  VerifyOptions opt = options("relation-page", 300);
+  opt.shrink_budget = 0;
+  const VerifyResult r = verify(mine, opt);
+  ASSERT_GT(count(r, "symmetry-caps-swapped"), 0);
+  int pages = 0;
+  for (const auto& p : r.saved) {
+    if (p.filename().string().find("symmetry-caps-swapped") == std::string::npos) continue;
+    const std::string page = read_text(std::filesystem::path(p).replace_extension(".html"));
+    const std::size_t heading = page.find("compared it with");
+    ASSERT_NE(heading, std::string::npos) << p;
+    // The original case's views before the heading, the transformed case's
+    // three views after it.
+    auto svgs = [&page](std::size_t from, std::size_t to) {
+      std::size_t n = 0;
+      for (std::size_t at = from; (at = page.find("<svg", at)) < to; ++at) ++n;
+      return n;
+    };
+    EXPECT_GE(svgs(0, heading), 3u) << p;
+    EXPECT_GE(svgs(heading, std::string::npos), 3u) << p;
+    ++pages;
+  }
+  EXPECT_GT(pages, 0);
+}
+
 // The program's usage errors exit 2: no cases, a case file of another query.
 TEST(Subjects, UsageErrorsExitTwo) {
   const auto& prod = production_of<kSphere>();

@@ -6,6 +6,7 @@
 // (properties/tests) and libFuzzer targets (fuzz/) call the same functions.
 #pragma once
 
+#include <any>
 #include <cmath>
 #include <functional>
 #include <memory>
@@ -22,10 +23,16 @@
 
 namespace geomcheck {
 
-/// A property that does not hold, and why.
+/// A property that does not hold, and why; a relation check (symmetry,
+/// metamorphic, monotone) also gives the other case it compared the case
+/// with (a QueryTraits<Q>::Case), so that the failure's page draws both.
 struct Failure {
+  Failure() = default;
+  Failure(std::string property_, std::string detail_, std::any related_ = {})
+      : property(std::move(property_)), detail(std::move(detail_)), related(std::move(related_)) {}
   std::string property;
   std::string detail;
+  std::any related;  ///< the transformed case of a relation check, or empty
 };
 using CheckResult = std::optional<Failure>;
 
