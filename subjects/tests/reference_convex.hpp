@@ -480,14 +480,7 @@ auto advancing_sweep_subject(const char* name, bool loose = false) {
   constexpr QueryId Q = QueryId::sweep_sphere_cylinder;
   auto sweep_fn = [loose](const MovingSphere& m, const Cylinder& c) {
     const double s = std::max(user_scale(m), user_scale(c));
-    const Ray<T> h = ref::sweep<T>({mine<T>(m.c), T(m.r)}, mine<T>(m.delta), mine<T>(c), T(s), loose);
-    CastHit out;
-    out.hit = h.hit;
-    out.starts_inside = h.inside;
-    out.t = double(h.t);
-    out.point = theirs(h.point);
-    out.normal = theirs(h.normal);
-    return out;
+    return theirs(ref::sweep<T>({mine<T>(m.c), T(m.r)}, mine<T>(m.delta), mine<T>(c), T(s), loose));
   };
   auto expresses = [](const MovingSphere& m, const Cylinder& c) {
     const double s = std::max(user_scale(m), user_scale(c));

@@ -195,6 +195,16 @@ Ray<T> cast(const Seg<T>& s, const Cyl<T>& cy, Flaw flaw = Flaw::None) {
 
 template <class T> V<T> mine(geomcheck::Vec3 v) { return {T(v.x), T(v.y), T(v.z)}; }
 template <class T> geomcheck::Vec3 theirs(V<T> v) { return {double(v.x), double(v.y), double(v.z)}; }
+/// A hit as the door takes it.
+template <class T> geomcheck::CastHit theirs(const Ray<T>& h) {
+  geomcheck::CastHit out;
+  out.hit = h.hit;
+  out.starts_inside = h.inside;
+  out.t = double(h.t);
+  out.point = theirs(h.point);
+  out.normal = theirs(h.normal);
+  return out;
+}
 
 /// The claims of a subject computing in T: production's, at T's precision.
 template <geomcheck::QueryId Q, class T>
@@ -224,14 +234,7 @@ template <class T>
 auto cast_subject(const char* name, Flaw flaw = Flaw::None) {
   using namespace geomcheck;
   auto cast_fn = [flaw](const Segment& s, const Cylinder& c) {
-    const Ray<T> h = ref::cast<T>({mine<T>(s.a), mine<T>(s.b)}, {mine<T>(c.p), mine<T>(c.q), T(c.r)}, flaw);
-    CastHit out;
-    out.hit = h.hit;
-    out.starts_inside = h.inside;
-    out.t = double(h.t);
-    out.point = theirs(h.point);
-    out.normal = theirs(h.normal);
-    return out;
+    return theirs(ref::cast<T>({mine<T>(s.a), mine<T>(s.b)}, {mine<T>(c.p), mine<T>(c.q), T(c.r)}, flaw));
   };
   return subject<QueryId::cast_segment_cylinder>(name, cast_fn, claims_in<QueryId::cast_segment_cylinder, T>());
 }
