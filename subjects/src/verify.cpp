@@ -182,30 +182,6 @@ struct Outcome {
   double ns = NAN;
 };
 
-/// The figures of an evaluation that a report counts, on one line (hex
-/// floats: exact), and back.
-std::string encode(const Evaluation& e, double ns) {
-  char b[512];
-  std::snprintf(b, sizeof b, "%d %d %d %d %d %d %d %a %a %a %a %a %a %a %a", e.valid, e.prod_hit, e.truth_hit,
-                static_cast<int>(e.verdict), e.disagree, e.excused, e.near_boundary, e.scale, e.margin, e.depth_err,
-                e.depth_ratio, e.normal_err, e.point_err, e.t_err, ns);
-  return b;
-}
-Outcome decode(const std::string& text) {
-  Outcome o;
-  Evaluation& e = o.e;
-  int f[7] = {};
-  double d[8] = {};
-  char* p = const_cast<char*>(text.c_str());
-  for (int& x : f) x = static_cast<int>(std::strtol(p, &p, 10));
-  for (double& x : d) x = std::strtod(p, &p);
-  e.valid = f[0], e.prod_hit = f[1], e.truth_hit = f[2], e.verdict = static_cast<oracle::Verdict>(f[3]);
-  e.disagree = f[4], e.excused = f[5], e.near_boundary = f[6];
-  e.scale = d[0], e.margin = d[1], e.depth_err = d[2], e.depth_ratio = d[3], e.normal_err = d[4], e.point_err = d[5];
-  e.t_err = d[6], o.ns = d[7];
-  return o;
-}
-
 /// What verify() gathers: the counts returned to the caller and the report.
 struct Tally {
   VerifyResult res;
@@ -286,8 +262,9 @@ void run_guarded(QueryId id, int n, bool isolate, unsigned case_seconds, Tally& 
       }
       return;
     }
-    // The child: a line per case, "<i>\t<properties>\t<saved case files>\t<shrunk>\t<figures>", the
-    // properties ("-": none) and their case files (empty: not saved) each separated by kSep.
+    // The child: a line per case, "<i>\t<properties>\t<saved case files>\t<shrunk>\t<ns per call, a hex
+    // float>\t<the evaluation, report::evaluation_line: every field>", the properties ("-": none) and
+    // their case files (empty: not saved) each separated by kSep.
     if (pid == 0) {
       ::close(fds[0]);
       FILE* out = ::fdopen(fds[1], "w");
@@ -304,8 +281,8 @@ void run_guarded(QueryId id, int n, bool isolate, unsigned case_seconds, Tally& 
           properties += (k ? std::string(1, kSep) : std::string()) + o.failures[k].property;
           files += (k ? std::string(1, kSep) : std::string()) + saved[k].string();
         }
-        std::fprintf(out, "%d\t%s\t%s\t%d\t%s\n", i, properties.empty() ? "-" : properties.c_str(), files.c_str(),
-                     tally.rep.shrunk - shrunk_before, encode(o.e, o.ns).c_str());
+        std::fprintf(out, "%d\t%s\t%s\t%d\t%a\t%s\n", i, properties.empty() ? "-" : properties.c_str(), files.c_str(),
+                     tally.rep.shrunk - shrunk_before, o.ns, report::evaluation_line(o.e).c_str());
         std::fflush(out);
       }
       std::fflush(stdout);
@@ -321,8 +298,11 @@ void run_guarded(QueryId id, int n, bool isolate, unsigned case_seconds, Tally& 
       }
       const std::size_t t1 = line.find('\t'), t2 = line.find('\t', t1 + 1), t3 = line.find('\t', t2 + 1);
       const std::size_t t4 = t3 == std::string::npos ? t3 : line.find('\t', t3 + 1);
-      if (t4 != std::string::npos) {
-        Outcome o = decode(line.substr(t4 + 1));
+      const std::size_t t5 = t4 == std::string::npos ? t4 : line.find('\t', t4 + 1);
+      if (t5 != std::string::npos) {
+        Outcome o;
+        o.ns = std::strtod(line.c_str() + t4 + 1, nullptr);
+        o.e = report::evaluation_from_line(line.substr(t5 + 1));
         const std::string properties = line.substr(t1 + 1, t2 - t1 - 1);
         std::vector<std::filesystem::path> saved;
         if (properties != "-") {

@@ -8,6 +8,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -20,6 +21,7 @@
 #include "geomcheck/collide_cylinder_sphere.hpp"
 #include "geomcheck/oracles/solids.hpp"
 #include "geomcheck/properties/teeth.hpp"
+#include "geomcheck/reports/report.hpp"
 #include "geomcheck/verify.hpp"
 
 namespace geomcheck {
@@ -227,6 +229,58 @@ TEST(Subjects, RelationFailurePageDrawsBothCases) {
     ++pages;
   }
   EXPECT_GT(pages, 0);
+}
+
+// The child's line loses no field of an evaluation: every field set to a
+// value of its own (NaN, infinities, a negative zero, a subnormal, texts
+// with tabs, newlines and quotes) comes back bit for bit.
+TEST(Subjects, ChildLineKeepsEveryField) {
+  Evaluation e;
+  double next = 1;
+  auto num = [&next] { return next += 0.125; };
+  e.valid = true, e.prod_hit = true, e.truth_hit = false, e.verdict = oracle::Verdict::Touching;
+  e.disagree = true, e.excused = false, e.near_boundary = true;
+  e.scale = std::ldexp(1.0, -1070);  // subnormal
+  e.signed_distance = -0.0, e.margin = INFINITY, e.depth_err = -INFINITY, e.normal_err = NAN;
+  e.point_err = num(), e.t_err = 0.1, e.t_true = num(), e.unit_err = num(), e.distance = num();
+  e.peer.depth_err = num(), e.peer.normal_err = num(), e.peer.point_err = num(), e.peer.unit_err = num();
+  e.peer.t_err = num(), e.depth_ratio = num(), e.depth_ratio_lo = num(), e.depth_short = num(), e.depth_over = num();
+  e.tol = Tolerances{num(), num(), num(), num(), num(), num(), num(), num()};
+  e.extra_failure = "tab\there";
+  e.truth_text = "line\nbreak \"quoted\"";
+  e.prod_text = "overlap=yes \x1f sep";
+  const std::string line = report::evaluation_line(e);
+  EXPECT_EQ(line.find('\n'), std::string::npos);
+  EXPECT_EQ(line.find('\t'), std::string::npos);
+  const Evaluation b = report::evaluation_from_line(line);
+  auto same = [](double x, double y) { return std::memcmp(&x, &y, sizeof x) == 0 || (std::isnan(x) && std::isnan(y)); };
+  EXPECT_EQ(b.valid, e.valid);
+  EXPECT_EQ(b.prod_hit, e.prod_hit);
+  EXPECT_EQ(b.truth_hit, e.truth_hit);
+  EXPECT_EQ(b.verdict, e.verdict);
+  EXPECT_EQ(b.disagree, e.disagree);
+  EXPECT_EQ(b.excused, e.excused);
+  EXPECT_EQ(b.near_boundary, e.near_boundary);
+  EXPECT_EQ(b.extra_failure, e.extra_failure);
+  EXPECT_EQ(b.truth_text, e.truth_text);
+  EXPECT_EQ(b.prod_text, e.prod_text);
+  const std::pair<const char*, std::pair<double, double>> doubles[] = {
+      {"scale", {b.scale, e.scale}}, {"signed_distance", {b.signed_distance, e.signed_distance}},
+      {"margin", {b.margin, e.margin}}, {"depth_err", {b.depth_err, e.depth_err}},
+      {"normal_err", {b.normal_err, e.normal_err}}, {"point_err", {b.point_err, e.point_err}},
+      {"t_err", {b.t_err, e.t_err}}, {"t_true", {b.t_true, e.t_true}}, {"unit_err", {b.unit_err, e.unit_err}},
+      {"distance", {b.distance, e.distance}}, {"peer.depth_err", {b.peer.depth_err, e.peer.depth_err}},
+      {"peer.normal_err", {b.peer.normal_err, e.peer.normal_err}},
+      {"peer.point_err", {b.peer.point_err, e.peer.point_err}}, {"peer.unit_err", {b.peer.unit_err, e.peer.unit_err}},
+      {"peer.t_err", {b.peer.t_err, e.peer.t_err}}, {"depth_ratio", {b.depth_ratio, e.depth_ratio}},
+      {"depth_ratio_lo", {b.depth_ratio_lo, e.depth_ratio_lo}}, {"depth_short", {b.depth_short, e.depth_short}},
+      {"depth_over", {b.depth_over, e.depth_over}}, {"tol.verdict", {b.tol.verdict, e.tol.verdict}},
+      {"tol.depth", {b.tol.depth, e.tol.depth}}, {"tol.normal", {b.tol.normal, e.tol.normal}},
+      {"tol.point", {b.tol.point, e.tol.point}}, {"tol.t", {b.tol.t, e.tol.t}}, {"tol.unit", {b.tol.unit, e.tol.unit}},
+      {"tol.depth_ratio", {b.tol.depth_ratio, e.tol.depth_ratio}}, {"tol.input", {b.tol.input, e.tol.input}}};
+  for (const auto& [name, v] : doubles) EXPECT_TRUE(same(v.first, v.second)) << name << ": " << v.first << " vs " << v.second;
+  EXPECT_EQ(report::evaluation_line(b), line);
+  EXPECT_THROW(report::evaluation_from_line("{\"valid\": true}"), std::exception) << "a line missing fields";
 }
 
 // The program's usage errors exit 2: no cases, a case file of another query.

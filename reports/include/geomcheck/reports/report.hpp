@@ -108,6 +108,15 @@ struct QueryReport {
 /// campaign and verify() both report through it.
 void add_evaluation(QueryReport& rep, QueryId id, const Evaluation& e);
 
+/// An evaluation as one line of JSON (every field; doubles exact, NaN and
+/// infinities as the strings "nan", "inf", "-inf"; no raw tab or newline),
+/// and back: what verify()'s child process sends its parent for each case.
+/// evaluation_from_line(evaluation_line(e)) equals e field for field.
+/// Throws std::runtime_error (or nlohmann's parse error, a
+/// std::exception) on a line that is not one.
+std::string evaluation_line(const Evaluation& e);
+Evaluation evaluation_from_line(const std::string& line);
+
 /// Everything reported about one point-set query (delaunay_2d) of a campaign.
 struct PointSetReport {
   std::string name, summary;
