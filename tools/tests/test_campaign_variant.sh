@@ -57,7 +57,10 @@ PY
 for c in "$dir"/*.case; do
   page="${c%.case}.html"
   [ -s "$page" ] || fail "no drawing beside $c"
-  [ "$(grep -o "<title>[a-z]* view</title>" "$page" | wc -l)" -eq 3 ] || fail "$page: not three views"
+  # Three views of the case; a relation's page three more of the case it compared.
+  views=3
+  grep -q "compared it with" "$page" && views=6
+  [ "$(grep -o "<title>[a-z]* view</title>" "$page" | wc -l)" -eq "$views" ] || fail "$page: not $views views"
   grep -q "capsule-capsule: " "$page" || fail "$page: the variant's answer is not drawn"
   grep -q "oracle: " "$page" || fail "$page: no oracle witness"
 done
