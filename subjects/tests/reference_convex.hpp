@@ -313,8 +313,30 @@ Touch<T> collide_convex(const A& a, const B& b, T scale) {
     bool converged2 = false;
     if (epa(a, b, t, scale, n2, wab2, converged2) &&
         (!found || dot(support_diff(a, b, n2).w, n2) < dot(support_diff(a, b, n).w, n))) {
-      n = n2, wab = wab2, found = true;
+      n = n2, wab = wab2, found = true, converged = converged2;
     }
+  }
+  if (found && !converged) {
+    // Still short (ruled faces, where EPA's polytope refines slowly): the
+    // overlap along a direction bounds the penetration depth from above,
+    // so walk the direction downhill over the sphere (eight neighbours,
+    // the step halved where none is lower) from EPA's.
+    T best = dot(support_diff(a, b, n).w, n);
+    for (T step = T(1e-2); step > std::numeric_limits<T>::epsilon();) {
+      const V<T> p1 = any_perp(n), p2 = cross(n, p1);
+      bool moved = false;
+      for (const V<T>& d : {p1, T(-1) * p1, p2, T(-1) * p2, p1 + p2, T(-1) * (p1 + p2), p1 - p2, p2 - p1}) {
+        const V<T> m = unit(n + step * d);
+        const T h = dot(support_diff(a, b, m).w, m);
+        if (h < best) {
+          best = h, n = m, moved = true;
+          break;
+        }
+      }
+      if (!moved) step /= 2;
+    }
+    const Vert<T> w = support_diff(a, b, n);
+    wab.a = w.a, wab.b = w.b;
   }
   if (!found) {
     // Flat (not stated, see kThin), or touching where no tetrahedron
