@@ -82,13 +82,12 @@ Vert<T> support_diff(const A& a, const B& b, V<T> d) {
 /// The closest point to the origin of the hull of the simplex s (1 to 4
 /// points), by brute force over its faces: each subset's affine closest
 /// point, kept when its weights are positive; the nearest of those. The
-/// simplex is reduced to the subset used; `weights` are its barycentrics.
+/// simplex is reduced to the subset used.
 template <class T>
-V<T> closest_on_simplex(std::vector<Vert<T>>& s, std::vector<T>& weights) {
+V<T> closest_on_simplex(std::vector<Vert<T>>& s) {
   const int n = static_cast<int>(s.size());
   T best = std::numeric_limits<T>::infinity();
   int best_mask = 1;
-  std::vector<T> best_w;
   V<T> best_v = s[0].w;
   for (int mask = 1; mask < (1 << n); ++mask) {
     int idx[4], k = 0;
@@ -138,13 +137,12 @@ V<T> closest_on_simplex(std::vector<Vert<T>>& s, std::vector<T>& weights) {
     V<T> v{0, 0, 0};
     for (int j = 0; j < k; ++j) v = v + w[j] * s[idx[j]].w;
     const T d = dot(v, v);
-    if (d < best) best = d, best_mask = mask, best_w = w, best_v = v;
+    if (d < best) best = d, best_mask = mask, best_v = v;
   }
   std::vector<Vert<T>> kept;
   for (int i = 0; i < n; ++i)
     if (best_mask & (1 << i)) kept.push_back(s[i]);
   s = kept;
-  weights = best_w.empty() ? std::vector<T>{1} : best_w;
   return best_v;
 }
 
@@ -253,7 +251,6 @@ template <class A, class B, class T>
 Touch<T> collide_convex(const A& a, const B& b, T scale) {
   Touch<T> out;
   std::vector<Vert<T>> s{support_diff(a, b, V<T>{1, 0, 0})};
-  std::vector<T> weights{1};
   V<T> v = s[0].w;
   const T touch = Tol<T>::gjk * scale;
   for (int iter = 0; iter < 128; ++iter) {
@@ -263,7 +260,7 @@ Touch<T> collide_convex(const A& a, const B& b, T scale) {
     if (lower > touch) return out;         // separated
     if (len(v) - lower <= touch) break;    // converged: touching, to the tolerance
     s.push_back(w);
-    v = closest_on_simplex(s, weights);
+    v = closest_on_simplex(s);
     if (s.size() == 4) break;  // the origin inside the simplex
   }
   out.hit = true;
