@@ -27,6 +27,7 @@ namespace geomcheck {
 // The spec of cast_segment_cylinder: segment cast against a cylinder: the first hit from the segment start.
 GEOMCHECK_SPEC(cast_segment_cylinder, 100000,
                (Claims{true, Claims::Depth::None, true, "the cylinder's outward surface normal at the hit (zero when the segment starts inside)", "closed form (oracles/src/cast_segment_cylinder.cpp): exact hit or miss, certified t"}),
+               (Tolerances{/*verdict*/ 1e-14, /*depth*/ 0, /*normal*/ 1e-14, /*point*/ 1e-14, /*t*/ 1e-14, /*unit*/ 1e-14}),
                &teeth::kInfiniteCylinder, &teeth::kEricsonPrinted)
 
 namespace {

@@ -27,6 +27,7 @@ namespace geomcheck {
 // The spec of collide_cylinder_capsule: cylinder/capsule: exact verdict; the true depth while the capsule's segment stays outside the cylinder.
 GEOMCHECK_SPEC(collide_cylinder_capsule, 100000,
                (Claims{true, Claims::Depth::Shallow, true, "unit, from the cylinder towards the capsule", "certified engine (capsule = segment + ball): exact verdict, certified signed distance and penetration depth"}),
+               (Tolerances{/*verdict*/ 1e-14, /*depth*/ 1e-14, /*normal*/ 1e-12, /*point*/ 1e-14, /*t*/ 0, /*unit*/ 1e-14}),
                &teeth::kCapsuleCapsule)
 
 void hold_to_truth(Evaluation& e, const CylinderCapsuleCase& c, const Contact& ct, const Contact* peer) {

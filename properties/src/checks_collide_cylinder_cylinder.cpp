@@ -39,6 +39,16 @@ namespace geomcheck {
 // The spec of collide_cylinder_cylinder: cylinder/cylinder: exact verdict; a consistent contact (depth = overlap along the normal).
 GEOMCHECK_SPEC(collide_cylinder_cylinder, 100000,
                (Claims{true, Claims::Depth::UpperBound, true, "unit, from the first cylinder towards the second: a consistent contact, not the minimal translation", "certified engine: exact verdict, certified signed distance, EPA penetration depth as a lower bound of the depth"}),
+               // The contact is consistent, not minimal (see the query's header):
+               // depth is the overlap along the returned normal, an upper bound of
+               // the penetration depth. `depth` bounds only how far it may fall BELOW
+               // the certified penetration depth (no direction overlaps less); how
+               // far above is reported (depth / penetration depth, Evaluation::
+               // depth_ratio) and bounded: at most 1.5 times the penetration depth
+               // (where that is at least 1e-9 * scale: the depth_ratio row). No
+               // normal bound (0: not a metric of this query): consistency holds
+               // depth to the overlap along the normal, to the depth bound.
+               (Tolerances{/*verdict*/ 1e-14, /*depth*/ 1e-14, /*normal*/ 0, /*point*/ 1e-14, /*t*/ 0, /*unit*/ 1e-14, /*depth_ratio*/ 1.5}),
                &teeth::kCylinderNoPlanes, &teeth::kCylinderNoParallelBranch, &teeth::kCylinderPlainFrame,
                &teeth::kCylinderShortSearch)
 

@@ -29,6 +29,7 @@ namespace geomcheck {
 // The spec of collide_cylinder_sphere: cylinder/sphere: overlap and collide with the true penetration depth.
 GEOMCHECK_SPEC(collide_cylinder_sphere, 100000,
                (Claims{true, Claims::Depth::Penetration, true, "unit, from the cylinder towards the sphere: the minimal translation", "closed form (oracles/src/cylinder_sphere.cpp): exact verdict, certified signed distance"}),
+               (Tolerances{/*verdict*/ 1e-14, /*depth*/ 1e-14, /*normal*/ 1e-14, /*point*/ 1e-14, /*t*/ 0, /*unit*/ 1e-14}),
                &teeth::kCapsuleForCylinder)
 
 void hold_to_truth(Evaluation& e, const CylinderSphereCase& c, const Contact& ct, const Contact* peer) {

@@ -34,6 +34,7 @@ namespace geomcheck {
 // The spec of sweep_sphere_cylinder: a moving sphere swept against a cylinder: the first time of contact.
 GEOMCHECK_SPEC(sweep_sphere_cylinder, 100000,
                (Claims{true, Claims::Depth::None, true, "the cylinder's outward surface normal at the contact (zero when the ball starts inside)", "certified engine: the swept ball (a capsule) against the cylinder; t bracketed"}),
+               (Tolerances{/*verdict*/ 1e-14, /*depth*/ 0, /*normal*/ 1e-14, /*point*/ 1e-12, /*t*/ 1e-12, /*unit*/ 1e-14}),
                &teeth::kSweepNoCornerStage, &teeth::kSweepTalkRimPoint)
 
 namespace {

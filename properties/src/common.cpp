@@ -63,6 +63,10 @@ void score_depth_sides(Evaluation& e, const QInterval& pd, double depth) {
   e.depth_over = v > pd.hi ? rel_up(v - pd.hi, e.scale) : 0.0;
 }
 
+Tolerances tolerances(QueryId id) {
+  return visit_query(id, [](auto q) { return spec_of<decltype(q)::value>().bounds; });
+}
+
 Tolerances bounds_of(QueryId id, const Claims* claims) {
   Tolerances t = tolerances(id);
   if (!claims) return t;

@@ -111,8 +111,8 @@ struct SubjectAnswerOf<QueryKind::Collide> {
 /// computed, the verdict settled and the subject's and the peer's errors
 /// measured into `e`.
 #define GEOMCHECK_X(id, kind, A, B, summary)                                                          \
-  void hold_to_truth(Evaluation& e, const PairCase<A, B, QueryId::id>& c, const SubjectAnswerOf<QueryKind::kind>::type& answer, \
-                     const PeerAnswerOf<QueryKind::kind>::type* peer);
+  void hold_to_truth(Evaluation& e, const PairCase<A, B, QueryId::id>& c, const SubjectAnswerOf<kind_of(EntryPoint::kind)>::type& answer, \
+                     const PeerAnswerOf<kind_of(EntryPoint::kind)>::type* peer);
 GEOMCHECK_QUERY_LIST(GEOMCHECK_X)
 #undef GEOMCHECK_X
 

@@ -181,7 +181,7 @@ void set_evaluation_memo(bool on) { g_memo = on; }
 
 #define GEOMCHECK_X(id, kind, A, B, summary)                                                                   \
   Evaluation evaluate(const PairCase<A, B, QueryId::id>& c, const ImplOf<QueryId::id>& impl,                                \
-                      const PeerAnswerOf<QueryKind::kind>::type* peer) {                                       \
+                      const PeerAnswerOf<kind_of(EntryPoint::kind)>::type* peer) {                                       \
     return evaluate_pair(c, impl, peer);                                                                       \
   }                                                                                                            \
   CheckResult check_oracle(const PairCase<A, B, QueryId::id>& c, const ImplOf<QueryId::id>& impl) {                         \

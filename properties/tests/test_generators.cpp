@@ -12,11 +12,15 @@
 // and the mode), of the point sets and of the meshes, for the main job's
 // seed, against the values below. CI runs it in the g++ build and in the
 // clang sanitizer build, so a draw whose order depends on the compiler turns
-// it red in one of them. A change to a generator changes its hash on purpose:
-// the failure prints the new values to paste here.
+// it red in one of them. The pinned values live in generator_hashes.txt; a
+// change to a generator changes its hash on purpose, and a new query adds
+// one: GEOMCHECK_WRITE_HASHES=1 test_generators rewrites the file.
 #include <gtest/gtest.h>
 
 #include <cstdint>
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
 #include <cstdio>
 #include <map>
 #include <string>
@@ -87,20 +91,22 @@ std::map<std::string, std::uint64_t> actual() {
   return out;
 }
 
-// The hashes every build must give (g++ and clang, any optimisation level).
-const std::map<std::string, std::uint64_t> kExpected = {
-    {"cast_segment_cylinder", 0x47cf7eb35dcf8ad5ull},
-    {"collide_cylinder_capsule", 0x43f581df27719fc6ull},
-    {"collide_cylinder_cylinder", 0xab5b8fde6d9e38b3ull},
-    {"collide_cylinder_obb", 0x064c29b5beae28a4ull},
-    {"collide_cylinder_sphere", 0x90c7a51523276b24ull},
-    {"collide_cylinder_triangle", 0x4f19862bbe18b713ull},
-    {"meshes", 0xde414cbf234904ceull},
-    {"penetration_cylinder_obb", 0x63d3cd86fc9ccb0eull},
-    {"penetration_cylinder_triangle", 0xcec1a7d48159d221ull},
-    {"point_sets", 0xdc5fc88f6f309566ull},
-    {"sweep_sphere_cylinder", 0x472b87c31160ee0eull},
-};
+// The hashes every build must give (g++ and clang, any optimisation level):
+// generator_hashes.txt, beside this file.
+const std::string kHashFile = GEOMCHECK_SOURCE_DIR "/properties/tests/generator_hashes.txt";
+
+std::map<std::string, std::uint64_t> expected() {
+  std::map<std::string, std::uint64_t> out;
+  std::ifstream in(kHashFile);
+  std::string line;
+  while (std::getline(in, line)) {
+    std::istringstream words(line);
+    std::string name, hash;
+    if (!(words >> name >> hash) || name[0] == '#') continue;
+    out[name] = std::stoull(hash, nullptr, 16);
+  }
+  return out;
+}
 
 }  // namespace
 
@@ -109,9 +115,19 @@ TEST(Generators, SameCasesOnEveryCompiler) {
   std::string table;
   for (const auto& [name, h] : got) {
     char line[96];
-    std::snprintf(line, sizeof line, "    {\"%s\", 0x%016llxull},\n", name.c_str(), static_cast<unsigned long long>(h));
+    std::snprintf(line, sizeof line, "%s 0x%016llx\n", name.c_str(), static_cast<unsigned long long>(h));
     table += line;
   }
+  if (std::getenv("GEOMCHECK_WRITE_HASHES")) {  // the command that regenerates the file
+    std::ifstream in(kHashFile);
+    std::string head, line;
+    while (std::getline(in, line) && (line.empty() || line[0] == '#')) head += line + "\n";
+    std::ofstream(kHashFile) << head << table;
+    std::printf("wrote %zu hashes to %s\n", got.size(), kHashFile.c_str());
+    return;
+  }
+  const auto kExpected = expected();
+  ASSERT_FALSE(kExpected.empty()) << "no hashes read from " << kHashFile;
   bool same = got.size() == kExpected.size();
   for (const auto& [name, h] : got) {
     const auto it = kExpected.find(name);
@@ -123,7 +139,7 @@ TEST(Generators, SameCasesOnEveryCompiler) {
     }
   }
   if (!same)
-    std::printf("The hashes of this build (paste into kExpected in properties/tests/test_generators.cpp if the "
-                "generators changed on purpose):\n%s",
-                table.c_str());
+    std::printf("The hashes of this build (if the generators changed on purpose or a query was registered, regenerate "
+                "%s: GEOMCHECK_WRITE_HASHES=1 %s):\n%s",
+                kHashFile.c_str(), ::testing::internal::GetArgvs()[0].c_str(), table.c_str());
 }

@@ -5,9 +5,13 @@
 // corpus folders, the build's target lists) derives from this list; adding a
 // query is the checklist of docs/ARCHITECTURE.md.
 //
-//   X(id, kind, ShapeA, ShapeB, summary)
+//   X(id, entry, ShapeA, ShapeB, summary)
 //
-// The id is also the file stem of the query, the name of its test, its fuzz
+// `entry` is production's entry point, which generic code calls (and from
+// which the query's kind follows): Collide (overlap(A, B) and collide(A,
+// B)), Penetration (overlap(A, B) and penetration(A, B): the exact
+// penetration depth), Cast (cast(Segment, B)) or Sweep (sweep(MovingSphere,
+// B)). The id is also the file stem of the query, the name of its test, its fuzz
 // binary, its corpus folder and its report row.
 #pragma once
 
@@ -33,9 +37,9 @@
     "overlap/collide(Cylinder, Triangle): exact verdict; consistent contact (depth = overlap along the normal, within 1 + 1/64 of the penetration depth)") \
   X(collide_cylinder_cylinder, Collide, Cylinder, Cylinder,                              \
     "overlap/collide(Cylinder, Cylinder): exact verdict; consistent contact (depth = overlap along the normal, an upper bound)") \
-  X(penetration_cylinder_obb, Collide, Cylinder, Obb,                                    \
+  X(penetration_cylinder_obb, Penetration, Cylinder, Obb,                                    \
     "overlap/penetration(Cylinder, Obb): exact verdict; the penetration depth over the Minkowski patches") \
-  X(penetration_cylinder_triangle, Collide, Cylinder, Triangle,                          \
+  X(penetration_cylinder_triangle, Penetration, Cylinder, Triangle,                          \
     "overlap/penetration(Cylinder, Triangle): exact verdict; the penetration depth over the Minkowski patches")
 
 // Queries over a set of points, a family of their own: their case files hold
@@ -76,6 +80,19 @@ enum class QueryKind {
   Sweep,    ///< sweep(Sphere, delta, B) -> CastHit
 };
 
+/// Production's entry point of a query: the registry's `entry` column.
+enum class EntryPoint {
+  Collide,      ///< overlap(A, B) and collide(A, B)
+  Penetration,  ///< overlap(A, B) and penetration(A, B): the exact penetration depth
+  Cast,         ///< cast(Segment, B)
+  Sweep,        ///< sweep(MovingSphere, B)
+};
+
+/// The kind of a query answered by entry point `e`.
+constexpr QueryKind kind_of(EntryPoint e) {
+  return e == EntryPoint::Cast ? QueryKind::Cast : e == EntryPoint::Sweep ? QueryKind::Sweep : QueryKind::Collide;
+}
+
 /// Every registered query.
 enum class QueryId {
 #define GEOMCHECK_X(id, kind, A, B, summary) id,
@@ -88,13 +105,14 @@ struct QueryInfo {
   QueryId id;
   const char* name;
   QueryKind kind;
+  EntryPoint entry;
   const char* shape_a;
   const char* shape_b;
   const char* summary;
 };
 
 inline constexpr QueryInfo kQueries[] = {
-#define GEOMCHECK_X(id, kind, A, B, summary) {QueryId::id, #id, QueryKind::kind, #A, #B, summary},
+#define GEOMCHECK_X(id, entry, A, B, summary) {QueryId::id, #id, kind_of(EntryPoint::entry), EntryPoint::entry, #A, #B, summary},
     GEOMCHECK_QUERY_LIST(GEOMCHECK_X)
 #undef GEOMCHECK_X
 };
@@ -105,15 +123,29 @@ constexpr const QueryInfo& info(QueryId id) { return kQueries[static_cast<std::s
 
 /// Whether Collide query `id` is answered by production's
 /// penetration(a, b) (the exact penetration depth and its direction) rather
-/// than collide(a, b): read off the id, whose first word names the entry
-/// point (penetration_cylinder_obb beside collide_cylinder_obb).
-constexpr bool answers_penetration(QueryId id) {
-  constexpr char kVerb[] = "penetration_";
-  const char* name = info(id).name;
-  for (std::size_t i = 0; kVerb[i] != 0; ++i)
-    if (name[i] != kVerb[i]) return false;
-  return true;
-}
+/// than collide(a, b): its registry line's entry point.
+constexpr bool answers_penetration(QueryId id) { return info(id).entry == EntryPoint::Penetration; }
+
+/// Every registered point-set query.
+enum class PointSetQueryId {
+#define GEOMCHECK_X(id, summary) id,
+  GEOMCHECK_POINTSET_QUERY_LIST(GEOMCHECK_X)
+#undef GEOMCHECK_X
+};
+
+/// A point-set query's id and summary.
+struct PointSetQueryInfo {
+  PointSetQueryId id;
+  const char* name;
+  const char* summary;
+};
+inline constexpr PointSetQueryInfo kPointSetQueries[] = {
+#define GEOMCHECK_X(id, summary) {PointSetQueryId::id, #id, summary},
+    GEOMCHECK_POINTSET_QUERY_LIST(GEOMCHECK_X)
+#undef GEOMCHECK_X
+};
+/// The info row of a point-set query.
+constexpr const PointSetQueryInfo& info(PointSetQueryId id) { return kPointSetQueries[static_cast<std::size_t>(id)]; }
 
 /// The three families of queries.
 enum class QueryFamily {
@@ -172,13 +204,14 @@ struct PairCase {
 
 /// Maps a query id to its shape types and case type.
 template <QueryId Q> struct QueryTraits;
-#define GEOMCHECK_X(id_, kind_, A, B, summary)                \
-  template <> struct QueryTraits<QueryId::id_> {              \
-    using ShapeA = A;                                         \
-    using ShapeB = B;                                         \
-    using Case = PairCase<A, B, QueryId::id_>;                \
-    static constexpr QueryId id = QueryId::id_;               \
-    static constexpr QueryKind kind = QueryKind::kind_;       \
+#define GEOMCHECK_X(id_, entry_, A, B, summary)                     \
+  template <> struct QueryTraits<QueryId::id_> {                   \
+    using ShapeA = A;                                              \
+    using ShapeB = B;                                              \
+    using Case = PairCase<A, B, QueryId::id_>;                     \
+    static constexpr QueryId id = QueryId::id_;                    \
+    static constexpr QueryKind kind = kind_of(EntryPoint::entry_); \
+    static constexpr EntryPoint entry = EntryPoint::entry_;        \
     static constexpr const char* name = #id_;                 \
   };
 GEOMCHECK_QUERY_LIST(GEOMCHECK_X)

@@ -238,6 +238,7 @@ inline const char* to_string(Claims::Depth d) {
 template <QueryId Q>
 struct QuerySpec {
   Claims claims;
+  Tolerances bounds;  ///< production's bounds (tolerances.hpp says what each measures)
   int default_cases = 0;
   std::vector<const ImplOf<Q>*> variants;
 };
@@ -249,14 +250,14 @@ GEOMCHECK_QUERY_LIST(GEOMCHECK_X)
 #undef GEOMCHECK_X
 
 /// Defines spec_of<QueryId::id>() from the query's default case count, its
-/// Claims and its known-wrong variants (pointers into teeth.hpp, possibly
-/// none), and names the query `kId` in the file's anonymous namespace. Used
-/// once, at the head of properties/src/checks_<id>.cpp, inside namespace
-/// geomcheck.
-#define GEOMCHECK_SPEC(id, default_cases, claims, ...)                               \
-  template <>                                                                        \
-  const QuerySpec<QueryId::id>& spec_of<QueryId::id>() {                             \
-    static const QuerySpec<QueryId::id> spec{claims, default_cases, {__VA_ARGS__}}; \
+/// Claims, production's bounds (a Tolerances row) and its known-wrong
+/// variants (pointers into teeth.hpp, possibly none), and names the query
+/// `kId` in the file's anonymous namespace. Used once, at the head of
+/// properties/src/checks_<id>.cpp, inside namespace geomcheck.
+#define GEOMCHECK_SPEC(id, default_cases, claims, bounds, ...)                               \
+  template <>                                                                                \
+  const QuerySpec<QueryId::id>& spec_of<QueryId::id>() {                                     \
+    static const QuerySpec<QueryId::id> spec{claims, bounds, default_cases, {__VA_ARGS__}}; \
     return spec;                                                                     \
   }                                                                                  \
   namespace {                                                                        \
@@ -435,7 +436,7 @@ template <> struct PeerAnswerOf<QueryKind::Sweep> { using type = double; };
 
 #define GEOMCHECK_X(id, kind, A, B, summary)                                                                     \
   Evaluation evaluate(const PairCase<A, B, QueryId::id>& c, const ImplOf<QueryId::id>& impl = production_of<QueryId::id>(),    \
-                      const PeerAnswerOf<QueryKind::kind>::type* peer = nullptr);                               \
+                      const PeerAnswerOf<kind_of(EntryPoint::kind)>::type* peer = nullptr);                               \
   CheckResult check_oracle(const PairCase<A, B, QueryId::id>& c, const ImplOf<QueryId::id>& impl = production_of<QueryId::id>()); \
   CheckResult check_consistency(const PairCase<A, B, QueryId::id>& c,                                                        \
                                 const ImplOf<QueryId::id>& impl = production_of<QueryId::id>());               \

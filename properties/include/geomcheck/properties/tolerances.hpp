@@ -1,4 +1,5 @@
-// geomcheck — every tolerance bound of the harness, in one place.
+// geomcheck — what each of production's bounds measures; each query's row
+// of bounds is in its spec (GEOMCHECK_SPEC in properties/src/checks_<id>.cpp).
 //
 // All bounds are multiples of the case's `scale` (the largest coordinate
 // magnitude or extent in the case; oracle::case_scale). They mirror the
@@ -65,44 +66,8 @@ struct Tolerances {
 };
 
 /// Bounds per query id.
-constexpr Tolerances tolerances(QueryId id) {
-  switch (id) {
-    case QueryId::collide_cylinder_sphere:
-      return {/*verdict*/ 1e-14, /*depth*/ 1e-14, /*normal*/ 1e-14, /*point*/ 1e-14, /*t*/ 0, /*unit*/ 1e-14};
-    case QueryId::cast_segment_cylinder:
-      return {/*verdict*/ 1e-14, /*depth*/ 0, /*normal*/ 1e-14, /*point*/ 1e-14, /*t*/ 1e-14, /*unit*/ 1e-14};
-    case QueryId::collide_cylinder_capsule:
-      return {/*verdict*/ 1e-14, /*depth*/ 1e-14, /*normal*/ 1e-12, /*point*/ 1e-14, /*t*/ 0, /*unit*/ 1e-14};
-    case QueryId::collide_cylinder_obb:
-      // A consistent contact, as collide_cylinder_cylinder's (below); by
-      // construction its depth is at most (1 + 1/64) times the penetration
-      // depth (see the query's header), held here to the common 1.5.
-      return {/*verdict*/ 1e-14, /*depth*/ 1e-14, /*normal*/ 0, /*point*/ 1e-14, /*t*/ 0, /*unit*/ 1e-14,
-              /*depth_ratio*/ 1.5};
-    case QueryId::collide_cylinder_triangle:
-      // A consistent contact, as the box's (above).
-      return {/*verdict*/ 1e-14, /*depth*/ 1e-14, /*normal*/ 0, /*point*/ 1e-14, /*t*/ 0, /*unit*/ 1e-14,
-              /*depth_ratio*/ 1.5};
-    case QueryId::penetration_cylinder_obb:
-      return {/*verdict*/ 1e-14, /*depth*/ 1e-14, /*normal*/ 1e-14, /*point*/ 1e-14, /*t*/ 0, /*unit*/ 1e-14};
-    case QueryId::penetration_cylinder_triangle:
-      return {/*verdict*/ 1e-14, /*depth*/ 1e-14, /*normal*/ 1e-14, /*point*/ 1e-14, /*t*/ 0, /*unit*/ 1e-14};
-    case QueryId::collide_cylinder_cylinder:
-      // The contact is consistent, not minimal (see the query's header):
-      // depth is the overlap along the returned normal, an upper bound of
-      // the penetration depth. `depth` bounds only how far it may fall BELOW
-      // the certified penetration depth (no direction overlaps less); how
-      // far above is reported (depth / penetration depth, Evaluation::
-      // depth_ratio) and bounded: at most 1.5 times the penetration depth
-      // (where that is at least 1e-9 * scale: the depth_ratio row). No
-      // normal bound (0: not a metric of this query): consistency holds
-      // depth to the overlap along the normal, to the depth bound.
-      return {/*verdict*/ 1e-14, /*depth*/ 1e-14, /*normal*/ 0, /*point*/ 1e-14, /*t*/ 0, /*unit*/ 1e-14,
-              /*depth_ratio*/ 1.5};
-    case QueryId::sweep_sphere_cylinder:
-      return {/*verdict*/ 1e-14, /*depth*/ 0, /*normal*/ 1e-14, /*point*/ 1e-12, /*t*/ 1e-12, /*unit*/ 1e-14};
-  }
-  return {};
-}
+/// Production's bounds of query `id`: the row in its spec (GEOMCHECK_SPEC,
+/// at the head of properties/src/checks_<id>.cpp).
+Tolerances tolerances(QueryId id);
 
 }  // namespace geomcheck
