@@ -9,7 +9,8 @@ set(GEOMCHECK_EXPORTED_INCLUDE_DIRS core/include oracles/include properties/incl
                                     fuzz/include)
 set(GEOMCHECK_PACKAGE_HARNESS OFF)
 if(TARGET geomcheck_subjects)
-  list(APPEND GEOMCHECK_EXPORTED_TARGETS geomcheck_harness geomcheck_subjects)
+  list(APPEND GEOMCHECK_EXPORTED_TARGETS geomcheck_harness geomcheck_delaunay_oracle geomcheck_pointset_checks
+       geomcheck_subjects)
   list(APPEND GEOMCHECK_EXPORTED_INCLUDE_DIRS subjects/include)
   set(GEOMCHECK_PACKAGE_HARNESS ON)
 endif()

@@ -14,11 +14,12 @@
 //     then every coordinate is nudged by -3..3 ulps (or not), and the set is
 //     scaled by 2^e with e from -1070 to 1000, point by point when the mode
 //     byte's top bit is set (mixing huge and tiny).
-// Checks: a non-finite coordinate gives DelaunayInputError naming the first
-// bad index; otherwise no exception, and the exact validity checker
-// (oracles/delaunay_2d.hpp, CGAL's exact predicates) accepts the result; for
-// sets of at most 300 points the triangles also agree with CGAL's
-// Delaunay_triangulation_2 up to cocircular choices. A failure prints the
+// Checks: the family's (properties/pointset_checks.hpp): a non-finite
+// coordinate gives DelaunayInputError naming the first bad index; otherwise
+// no exception, and the exact validity checker (oracles/delaunay_2d.hpp,
+// CGAL's exact predicates) accepts the result; for sets of at most 300
+// points the triangles also agree with CGAL's Delaunay_triangulation_2 up to
+// cocircular choices. A failure prints the
 // point set as a case file and aborts; the crash input replays with this
 // binary.
 #include <fuzzer/FuzzedDataProvider.h>
@@ -33,7 +34,7 @@
 
 #include "geomcheck/delaunay_2d.hpp"
 #include "geomcheck/fuzz_decode.hpp"
-#include "geomcheck/oracles/delaunay_2d.hpp"
+#include "geomcheck/properties/pointset_checks.hpp"
 #include "geomcheck/pointset_file.hpp"
 
 namespace {
@@ -122,26 +123,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     FuzzedDataProvider in(data + 1, size - 1);
     p = structured(data[0], in);
   }
-  std::size_t first_bad = p.size();
-  for (std::size_t i = 0; i < p.size() && first_bad == p.size(); ++i)
-    if (!std::isfinite(p[i].x) || !std::isfinite(p[i].y)) first_bad = i;
-  geomcheck::DelaunayTriangulation t;
-  try {
-    t = geomcheck::delaunay_2d(p);
-  } catch (const geomcheck::DelaunayInputError& e) {
-    if (first_bad == p.size()) fail(p, std::string("finite input rejected: ") + e.what());
-    if (e.index() != first_bad)
-      fail(p, "rejection names index " + std::to_string(e.index()) + ", the first bad is " + std::to_string(first_bad));
-    return 0;
-  } catch (const std::exception& e) {
-    fail(p, std::string("threw: ") + e.what());
-  }
-  if (first_bad != p.size()) fail(p, "non-finite point " + std::to_string(first_bad) + " accepted");
-  const std::string why = geomcheck::oracle::check_delaunay(p, t);
-  if (!why.empty()) fail(p, "invalid triangulation: " + why);
-  if (p.size() <= 300) {
-    const std::string diff = geomcheck::oracle::compare_with_cgal(p, t);
-    if (!diff.empty()) fail(p, "differs from CGAL: " + diff);
-  }
+  // The family's checks, written once (pointset_checks.hpp); CGAL for sets
+  // of at most 300 points.
+  const geomcheck::PointSetOutcome o = geomcheck::check_point_set(p, geomcheck::production_point_set(), 300, false);
+  if (o.failure) fail(p, o.failure->property + ": " + o.failure->detail);
   return 0;
 }

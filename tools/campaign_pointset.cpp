@@ -5,15 +5,16 @@
 #include <algorithm>
 #include <atomic>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <thread>
 
 #include "campaign.hpp"
 #include "geomcheck/delaunay_2d.hpp"
-#include "geomcheck/oracles/delaunay_2d.hpp"
 #include "geomcheck/pointset_file.hpp"
 #include "geomcheck/properties/generators.hpp"
+#include "geomcheck/properties/pointset_checks.hpp"
 #include "geomcheck/reports/report.hpp"
 
 namespace geomcheck {
@@ -32,33 +33,16 @@ struct SetRow {
   bool run = false;
 };
 
-// Production on one set, held to the checker and CGAL; times both.
+// Production on one set, held to the checks of the family
+// (pointset_checks.hpp); times it and CGAL.
 SetRow check_set(const Points& p, const std::string& mode) {
   SetRow r;
   r.mode = mode;
   r.kind = std::string(classify_point_set(p));
-  const auto t0 = Clock::now();
-  DelaunayTriangulation t;
-  try {
-    t = delaunay_2d(p);
-  } catch (const DelaunayInputError& e) {
-    if (r.kind != "rejected") r.property = "finite-input-rejected", r.problem = e.what();
-    return r;
-  } catch (const std::exception& e) {
-    r.property = "threw", r.problem = e.what();
-    return r;
-  }
-  const auto t1 = Clock::now();
-  const auto cgal = oracle::cgal_delaunay(p);
-  const auto t2 = Clock::now();
-  r.prod_us = micros(t0, t1), r.cgal_us = micros(t1, t2);
-  if (r.kind == "rejected") {
-    r.property = "non-finite-input-accepted";
-    return r;
-  }
-  if (std::string v = oracle::check_delaunay(p, t); !v.empty()) r.property = "valid", r.problem = v;
-  else if (std::string w = oracle::compare_with_cgal(p, t); !w.empty()) r.property = "agrees-with-cgal", r.problem = w;
-  r.cgal_differs = oracle::canonical_triangles(t) != cgal;
+  const PointSetOutcome o = check_point_set(p, production_point_set());
+  if (o.failure) r.property = o.failure->property, r.problem = o.failure->detail;
+  r.cgal_differs = o.cgal_differs;
+  if (std::isfinite(o.subject_us)) r.prod_us = o.subject_us, r.cgal_us = o.cgal_us;
   return r;
 }
 

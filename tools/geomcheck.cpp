@@ -24,6 +24,7 @@
 #include "geomcheck/mesh_file.hpp"
 #include "geomcheck/pointset_file.hpp"
 #include "geomcheck/properties/mesh_checks.hpp"
+#include "geomcheck/properties/pointset_checks.hpp"
 #include "geomcheck/properties/checks.hpp"
 #include "geomcheck/properties/spec.hpp"
 #include "geomcheck/properties/tolerances.hpp"
@@ -104,30 +105,20 @@ Replayed unreadable(const fs::path& path, const std::string& error) {
 }
 
 // Replays one point-set file: it parses, its filed verdict is the kind of
-// its points (classify_point_set), and production's triangulation passes
-// the exact validity checker and agrees with CGAL's (up to cocircular
-// choices); non-finite input must be rejected naming the first bad index.
-Replayed replay_point_set(const fs::path& path, bool quiet) {
+// its points (classify_point_set), and the subject (production unless
+// named) holds every check of the family (pointset_checks.hpp: the exact
+// validity checker, CGAL's triangles up to cocircular choices, non-finite
+// input rejected naming the first bad index).
+Replayed replay_point_set(const fs::path& path, bool quiet, const std::string& subject) {
   const PointSetParseResult pr = load_point_set(path);
   if (!pr.ok()) return unreadable(path, pr.error);
   const PointSetFile& f = pr.value;
+  const PointSetImpl* impl = point_set_subject(subject);
+  if (!impl) return unreadable(path, "no subject '" + subject + "' of query " + kDelaunayQueryName);
   const std::string_view kind = classify_point_set(f.points);
   const bool verdict_ok = f.oracle_verdict.empty() || f.oracle_verdict == kind;
-  std::string production, problem;
-  try {
-    const DelaunayTriangulation t = delaunay_2d(f.points);
-    production = t.summary();
-    if (kind == "rejected") problem = "non-finite input accepted";
-    if (problem.empty()) problem = oracle::check_delaunay(f.points, t);
-    if (problem.empty()) problem = oracle::compare_with_cgal(f.points, t);
-  } catch (const DelaunayInputError& e) {
-    production = std::string("rejected: ") + e.what();
-    if (kind != "rejected") problem = "finite input rejected";
-  } catch (const std::exception& e) {
-    production = std::string("threw: ") + e.what();
-    problem = production;
-  }
-  const bool pass = verdict_ok && problem.empty();
+  const PointSetOutcome o = check_point_set(f.points, *impl);
+  const bool pass = verdict_ok && !o.failure;
   if (quiet && pass) {
     std::printf("PASS %s\n", path.string().c_str());
     return Replayed::Passed;
@@ -138,8 +129,9 @@ Replayed replay_point_set(const fs::path& path, bool quiet) {
   std::printf("  kind of the point set: %.*s\n", static_cast<int>(kind.size()), kind.data());
   if (!f.oracle_verdict.empty())
     std::printf("  filed oracle verdict: %s%s\n", f.oracle_verdict.c_str(), verdict_ok ? "" : "  <-- the points are of another kind");
-  std::printf("  production: %s\n", production.c_str());
-  std::printf("  oracles (exact validity, CGAL): %s\n", problem.empty() ? "agree" : problem.c_str());
+  std::printf("  %s: %s\n", impl->name, o.answer.c_str());
+  std::printf("  oracles (exact validity, CGAL): %s\n",
+              o.failure ? (o.failure->property + ": " + o.failure->detail).c_str() : "agree");
   return pass ? Replayed::Passed : Replayed::Failed;
 }
 
@@ -188,7 +180,7 @@ Replayed replay_mesh(const fs::path& path, bool quiet, const std::string& subjec
 // only truth there is "invalid": no hit).
 Replayed replay_one(const fs::path& path, bool quiet, const std::string& subject) {
   const auto family = family_of(declared_query(path));
-  if (family == QueryFamily::PointSet) return replay_point_set(path, quiet);
+  if (family == QueryFamily::PointSet) return replay_point_set(path, quiet, subject);
   if (family == QueryFamily::Mesh) return replay_mesh(path, quiet, subject);
   const ParseResult pr = load_case(path);
   if (!pr.ok()) return unreadable(path, pr.error);
@@ -452,7 +444,8 @@ void add_replay(CLI::App& app, int& rc) {
   r->add_flag("--quiet", quiet, "one line per passing case");
   r->add_option("--subject,--variant", subject,
                 "replay against a built-in subject in production's place: a known-wrong variant, or another engine "
-                "(ODE, Bullet, MuJoCo where built)");
+                "(ODE, Bullet, MuJoCo where built); a subject the file's query does not have is a usage error (exit 2), "
+                "for every family");
   r->add_option("paths", paths, "case files or directories")->required();
   r->callback([&rc] { rc = cmd_replay(paths, quiet, subject); });
 }

@@ -197,6 +197,8 @@ template <class IO>
 void fields(IO& io, PointSetReport& r) {
   io("name", r.name);
   io("summary", r.summary);
+  io("subject", r.subject);
+  io("not_asked", r.not_asked);
   io("requested", r.requested);
   io("stopped_by_time", r.stopped_by_time);
   io("sets", r.sets);
@@ -322,6 +324,7 @@ void merge_into(PointSetReport& a, const PointSetReport& b) {
   a.failures += b.failures;
   add(a.failures_by_property, b.failures_by_property);
   a.cgal_choices_differ += b.cgal_choices_differ;
+  a.not_asked += b.not_asked;
   a.production_us += b.production_us;
   a.cgal_us += b.cgal_us;
   add(a.counterexamples, b.counterexamples);

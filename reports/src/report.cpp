@@ -426,8 +426,8 @@ Json query_json(QueryReport& r) {
 
 /// A point-set query's entry in report.json.
 Json point_set_json(const PointSetReport& r) {
-  return {{"id", r.name}, {"summary", r.summary}, {"requested", r.requested}, {"stopped_by_time", r.stopped_by_time},
-          {"sets", r.sets}, {"points", r.points}, {"failures", r.failures}, {"modes", r.modes}, {"kinds", r.kinds},
+  return {{"id", r.name}, {"summary", r.summary}, {"subject", r.subject}, {"requested", r.requested},
+          {"stopped_by_time", r.stopped_by_time}, {"not_asked", r.not_asked}, {"sets", r.sets}, {"points", r.points}, {"failures", r.failures}, {"modes", r.modes}, {"kinds", r.kinds},
           {"failures_by_property", r.failures_by_property}, {"cgal_choices_differ", r.cgal_choices_differ},
           {"production_us_total", json_num(r.production_us)}, {"cgal_us_total", json_num(r.cgal_us)},
           {"production_over_cgal", json_num(r.cgal_us > 0 ? r.production_us / r.cgal_us : NAN)},
@@ -440,11 +440,13 @@ void write_point_set_section(std::ostream& h, const PointSetReport& r) {
   h << "<h2 id='" << r.name << "'>" << r.name << "</h2><p>" << html(r.summary) << "</p><p class='"
     << (clean ? "ok'>verified: every triangulation valid (exact checker) and CGAL's up to cocircular choices"
               : "bad'>FAILURES found")
+    << "</p><p>subject: " << html(r.subject)
     << "</p><table><tr><th class='l'>measure</th><th>value</th></tr><tr><td class='l'>point sets run of requested (points)</td><td>"
     << r.sets << " of " << r.requested << " (" << r.points << ")" << (r.stopped_by_time ? "; stopped by --seconds" : "")
+    << (r.not_asked ? "; " + std::to_string(r.not_asked) + " not asked (non-finite; the subject claims finite input)" : std::string())
     << "</td></tr><tr><td class='l'>failures</td><td class='" << (clean ? "ok" : "bad") << "'>"
     << r.failures << "</td></tr><tr><td class='l'>cocircular choices other than CGAL's (legitimate)</td><td>"
-    << r.cgal_choices_differ << "</td></tr><tr><td class='l'>time, production / CGAL (all sets)</td><td>"
+    << r.cgal_choices_differ << "</td></tr><tr><td class='l'>time, " << html(r.subject) << " / CGAL (all sets)</td><td>"
     << jnum(r.production_us / 1e3) << " ms / " << jnum(r.cgal_us / 1e3) << " ms = "
     << jnum(r.cgal_us > 0 ? r.production_us / r.cgal_us : NAN) << "</td></tr></table>";
   auto table = [&](const char* what, const std::map<std::string, int>& m) {

@@ -1,8 +1,6 @@
 // geomcheck — verify() and replay() for any subject (verify.hpp).
 #include "geomcheck/verify.hpp"
 
-#include <CLI/CLI.hpp>
-
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -22,21 +20,13 @@
 #include "geomcheck/properties/tolerances.hpp"
 #include "geomcheck/reports/draw.hpp"
 #include "geomcheck/reports/report.hpp"
+#include "guarded.hpp"
 
 namespace geomcheck {
 
 namespace {
 
-/// `word` as one word of a POSIX shell command line: as it is when it has
-/// only characters no shell reads specially, else in single quotes.
-std::string shell_quote(const std::string& word) {
-  const bool plain = !word.empty() && word.find_first_not_of("ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz"
-                                                            "0123456789_-+./:=@%,") == std::string::npos;
-  if (plain) return word;
-  std::string q = "'";
-  for (char ch : word) q += ch == '\'' ? std::string("'\\''") : std::string(1, ch);
-  return q + "'";
-}
+using detail::shell_quote;
 
 /// The replay command of a saved case, less its path.
 std::string replay_prefix(const VerifyOptions& opt) {
@@ -173,15 +163,6 @@ std::string claims_text(const ImplOf<Q>& subject) {
   return t;
 }
 
-/// What one case gave: its failing properties (none when every property
-/// held), the evaluation's figures (the report's counts and error measures)
-/// and the time of one call of the subject.
-struct Outcome {
-  std::vector<Failure> failures;
-  Evaluation e;
-  double ns = NAN;
-};
-
 /// What verify() gathers: the counts returned to the caller and the report.
 struct Tally {
   VerifyResult res;
@@ -189,148 +170,46 @@ struct Tally {
   std::vector<double> ns;  ///< the subject's time per call, one per case
   std::vector<std::string> modes;  ///< each case's generator mode: a failure's signature is property @ mode
   std::map<std::string, int> saved_of_property, saved_of_signature;  ///< case files saved, for the caps
-  /// Case i's outcome (`saved`: the case file of each failing property,
-  /// empty where none was saved).
-  void add(QueryId id, int i, const Outcome& o, const std::vector<std::filesystem::path>& saved) {
-    report::add_evaluation(rep, id, o.e);
-    if (std::isfinite(o.ns)) ns.push_back(o.ns);
-    fail(i, o.failures, saved);
+  /// Case i's line (detail::run_guarded): its figures, its failures and
+  /// their case files.
+  void add(QueryId id, int i, const detail::CaseLine& line) {
+    report::add_evaluation(rep, id, report::evaluation_from_line(line.figures));
+    if (std::isfinite(line.ns)) ns.push_back(line.ns);
+    rep.shrunk += line.shrunk;
+    fail(i, line.properties, line.files);
   }
-  /// Case i failing these properties (and the case file of each, when one
+  /// Case i failing these properties (and the case file of each, where one
   /// was saved): one failing case, counted under each of its properties.
-  void fail(int i, const std::vector<Failure>& failures, const std::vector<std::filesystem::path>& saved) {
-    if (failures.empty()) return;
+  void fail(int i, const std::vector<std::string>& properties, const std::vector<std::string>& saved) {
+    if (properties.empty()) return;
     ++res.failures;
     ++rep.check_failures;
     if (i < static_cast<int>(modes.size()) &&
         (res.failed_cases.empty() || res.failed_cases.back() != modes[i]))
       res.failed_cases.push_back(modes[i]);
-    for (std::size_t k = 0; k < failures.size(); ++k) {
-      const std::string& property = failures[k].property;
+    for (std::size_t k = 0; k < properties.size(); ++k) {
+      const std::string& property = properties[k];
       ++res.by_property[property];
       ++rep.failures_by_property[property];
       ++rep.failures_by_signature[signature(i, property)];
       if (k < saved.size() && !saved[k].empty()) {
         ++saved_of_property[property];
         ++saved_of_signature[signature(i, property)];
-        res.saved.push_back(saved[k]);
-        rep.counterexamples.push_back(saved[k].string());
+        res.saved.emplace_back(saved[k]);
+        rep.counterexamples.push_back(saved[k]);
       }
     }
+  }
+  /// Whether a failure of `property` on case i is past the caps.
+  bool capped(int i, const std::string& property, int max_saved) {
+    return saved_of_property[property] >= max_saved ||
+           saved_of_signature[signature(i, property)] >= report::kMaxSavedPerSignature;
   }
   /// The signature of case i failing `property`.
   std::string signature(int i, const std::string& property) const {
     return property + " @ " + (i < static_cast<int>(modes.size()) ? modes[i] : std::string("?"));
   }
 };
-
-/// Separates the properties of one case (and their case files) on the
-/// child's line: no property name or path holds it.
-constexpr char kSep = '\x1f';
-/// The fields of `text` separated by kSep (none in an empty text).
-std::vector<std::string> split(const std::string& text) {
-  std::vector<std::string> out;
-  if (text.empty()) return out;
-  std::size_t from = 0;
-  for (std::size_t at; (at = text.find(kSep, from)) != std::string::npos; from = at + 1) out.push_back(text.substr(from, at - from));
-  out.push_back(text.substr(from));
-  return out;
-}
-
-/// Runs check(i) for every i in [0, n) in a child process, so that a
-/// subject that crashes (a signal: a segfault, an abort) fails its case
-/// instead of ending the run, and one that hangs (no answer within
-/// case_seconds) fails it too: the case is counted as "subject-crashed" or
-/// "subject-hung" (saved without asking the subject again) and a new
-/// child goes on after it. A failure is saved and printed where it is found
-/// (save(i, failure, ask_subject) returns the case file, or nothing past
-/// the cap), and counted in `tally` by the parent from the child's line.
-/// Without `isolate` (or without fork), in process: the subject's state
-/// changes stay, and a crash ends the run.
-template <class Check, class Save>
-void run_guarded(QueryId id, int n, bool isolate, unsigned case_seconds, Tally& tally, Check&& check, Save&& save) {
-  int next = 0;
-  while (next < n) {
-    int fds[2];
-    const pid_t pid = isolate && ::pipe(fds) == 0 ? ::fork() : -1;
-    if (pid < 0) {  // no child: in process
-      for (; next < n; ++next) {
-        const Outcome o = check(next);
-        std::vector<std::filesystem::path> saved;
-        for (const Failure& f : o.failures) saved.push_back(save(next, f, true));
-        tally.add(id, next, o, saved);
-      }
-      return;
-    }
-    // The child: a line per case, "<i>\t<properties>\t<saved case files>\t<shrunk>\t<ns per call, a hex
-    // float>\t<the evaluation, report::evaluation_line: every field>", the properties ("-": none) and
-    // their case files (empty: not saved) each separated by kSep.
-    if (pid == 0) {
-      ::close(fds[0]);
-      FILE* out = ::fdopen(fds[1], "w");
-      for (int i = next; i < n; ++i) {
-        ::alarm(case_seconds);  // a subject that hangs (checks or shrink) is ended by SIGALRM
-        const Outcome o = check(i);
-        std::vector<std::filesystem::path> saved;
-        const int shrunk_before = tally.rep.shrunk;
-        for (const Failure& f : o.failures) saved.push_back(save(i, f, true));
-        tally.fail(i, o.failures, saved);  // the child's copy: the caps
-        ::alarm(0);
-        std::string properties, files;
-        for (std::size_t k = 0; k < o.failures.size(); ++k) {
-          properties += (k ? std::string(1, kSep) : std::string()) + o.failures[k].property;
-          files += (k ? std::string(1, kSep) : std::string()) + saved[k].string();
-        }
-        std::fprintf(out, "%d\t%s\t%s\t%d\t%a\t%s\n", i, properties.empty() ? "-" : properties.c_str(), files.c_str(),
-                     tally.rep.shrunk - shrunk_before, o.ns, report::evaluation_line(o.e).c_str());
-        std::fflush(out);
-      }
-      std::fflush(stdout);
-      std::_Exit(0);
-    }
-    ::close(fds[1]);
-    FILE* in = ::fdopen(fds[0], "r");
-    std::string line;
-    for (int ch; (ch = std::fgetc(in)) != EOF;) {
-      if (ch != '\n') {
-        line += static_cast<char>(ch);
-        continue;
-      }
-      const std::size_t t1 = line.find('\t'), t2 = line.find('\t', t1 + 1), t3 = line.find('\t', t2 + 1);
-      const std::size_t t4 = t3 == std::string::npos ? t3 : line.find('\t', t3 + 1);
-      const std::size_t t5 = t4 == std::string::npos ? t4 : line.find('\t', t4 + 1);
-      if (t5 != std::string::npos) {
-        Outcome o;
-        o.ns = std::strtod(line.c_str() + t4 + 1, nullptr);
-        o.e = report::evaluation_from_line(line.substr(t5 + 1));
-        const std::string properties = line.substr(t1 + 1, t2 - t1 - 1);
-        std::vector<std::filesystem::path> saved;
-        if (properties != "-") {
-          for (const std::string& p : split(properties)) o.failures.push_back(Failure{p, ""});
-          for (const std::string& f : split(line.substr(t2 + 1, t3 - t2 - 1))) saved.emplace_back(f);
-        }
-        tally.add(id, std::atoi(line.c_str()), o, saved);
-        tally.rep.shrunk += std::atoi(line.c_str() + t3 + 1);  // shrunk in the child
-      }
-      next = std::atoi(line.c_str()) + 1;
-      line.clear();
-    }
-    std::fclose(in);
-    int status = 0;
-    ::waitpid(pid, &status, 0);
-    if (next < n && !(WIFEXITED(status) && WEXITSTATUS(status) == 0)) {
-      const bool hung = WIFSIGNALED(status) && WTERMSIG(status) == SIGALRM;
-      const std::string how = WIFSIGNALED(status) ? std::string("signal ") + std::to_string(WTERMSIG(status))
-                                                  : "exit status " + std::to_string(WEXITSTATUS(status));
-      const Failure f = hung ? Failure{"subject-hung", "no answer within " + std::to_string(case_seconds) + " s"}
-                             : Failure{"subject-crashed", "the subject ended the process (" + how + ")"};
-      ++tally.rep.cases;  // run, and failed without an answer to count
-      tally.fail(next, {f}, {save(next, f, false)});
-      ++next;
-    }
-  }
-}
-
 
 /// report.json and report.html of a verify run (and a JUnit file when asked
 /// for) under opt.out, from the tally of subject's cases.
@@ -413,15 +292,14 @@ VerifyResult run_cases(const ImplOf<Q>& subject, const std::vector<Tagged<typena
 
   Tally tally;
   for (const auto& c : cases) tally.modes.push_back(c.second);
+  int shrunk = 0;  // counterexamples shrunk while checking the current case
   // A failure saved (the first opt.max_saved of its property, at most
   // kMaxSavedPerSignature of its signature), shrunk while it fails the same
   // property (not a crash or a hang: the subject is not asked again), and
   // announced.
   auto save = [&](int i, const Failure& f, bool ask_subject) -> std::filesystem::path {
     std::filesystem::path path;
-    if (tally.saved_of_property[f.property] >= opt.max_saved ||
-        tally.saved_of_signature[tally.signature(i, f.property)] >= report::kMaxSavedPerSignature)
-      return path;
+    if (tally.capped(i, f.property, opt.max_saved)) return path;
     Case c = cases[i].first;
     Failure shown = f;
     if (ask_subject && opt.shrink_budget > 0) {
@@ -434,7 +312,7 @@ VerifyResult run_cases(const ImplOf<Q>& subject, const std::vector<Tagged<typena
           },
           opt.shrink_budget, &how);
       if (how.simplified > 0) {
-        ++tally.rep.shrunk;
+        ++shrunk;
         if (const CheckResult g = guarded_check(c, subject)) shown = *g;
         shown.detail += " (shrunk: " + std::to_string(how.simplified) + " numbers simplified)";
       }
@@ -448,23 +326,36 @@ VerifyResult run_cases(const ImplOf<Q>& subject, const std::vector<Tagged<typena
     std::fflush(stdout);
     return path;
   };
-  // Every property, the figures of the report, and one call timed.
-  auto check = [&](int i) {
-    Outcome o;
+  // Every property, the figures of the report, one call timed, and each
+  // failure saved.
+  auto run = [&](int i) {
+    detail::CaseLine line;
     const Case& c = cases[i].first;
     bool answered = false;
-    o.e = truth_of<Q>(c, subject, &answered);
-    o.failures = guarded_every(c, subject, answered ? &o.e : nullptr);
+    const Evaluation e = truth_of<Q>(c, subject, &answered);
+    const std::vector<Failure> failures = guarded_every(c, subject, answered ? &e : nullptr);
     try {
       const auto t0 = std::chrono::steady_clock::now();
       const bool hit = Spec<Q>::hit(c, subject);
-      o.ns = std::chrono::duration<double, std::nano>(std::chrono::steady_clock::now() - t0).count();
-      if (hit && o.ns < 0) std::puts("");  // keeps the call
+      line.ns = std::chrono::duration<double, std::nano>(std::chrono::steady_clock::now() - t0).count();
+      if (hit && line.ns < 0) std::puts("");  // keeps the call
     } catch (...) {
     }
-    return o;
+    line.figures = report::evaluation_line(e);
+    shrunk = 0;
+    for (const Failure& f : failures) {
+      line.properties.push_back(f.property);
+      line.files.push_back(save(i, f, true).string());
+    }
+    line.shrunk = shrunk;
+    return line;
   };
-  run_guarded(Q, static_cast<int>(cases.size()), opt.isolate, opt.case_seconds, tally, check, save);
+  auto absorb = [&](int i, const detail::CaseLine& line) { tally.add(Q, i, line); };
+  auto lost = [&](int i, const Failure& f) {
+    ++tally.rep.cases;  // run, and failed without an answer to count
+    tally.fail(i, {f.property}, {save(i, f, false).string()});
+  };
+  detail::run_guarded(static_cast<int>(cases.size()), {opt.isolate, opt.case_seconds}, run, absorb, lost);
   VerifyResult& res = tally.res;
   res.cases = static_cast<int>(cases.size());
   res.not_expressed = not_expressed;
@@ -537,33 +428,16 @@ VerifyResult verify_file_cases(const ImplOf<Q>& subject, const std::vector<std::
 template <QueryId Q>
 int verify_program(const ImplOf<Q>& subject, int argc, char** argv) {
   VerifyOptions opt;
-  if (argc > 0 && argv[0]) opt.program = argv[0];
   std::vector<std::filesystem::path> replays;
-  CLI::App app{std::string("Holds subject '") + subject.name + "' to every property of " + info(Q).name +
-               " on generated cases; saves and draws each failing case."};
-  app.add_option("--cases", opt.cases, "targeted cases to draw")->capture_default_str()->check(CLI::PositiveNumber);
-  app.add_option("--seed", opt.seed, "the seed (the same seed draws the same cases)")->capture_default_str();
-  app.add_option("--out", opt.out, "where the failing cases go (one folder per query)")->capture_default_str();
-  app.add_option("--max-saved", opt.max_saved,
-                 "case files saved per failing property (and at most " + std::to_string(report::kMaxSavedPerSignature) +
-                     " per property and generator mode)")
-      ->capture_default_str()
-      ->check(CLI::NonNegativeNumber);
-  bool no_shrink = false;
-  app.add_flag("--no-shrink", no_shrink, "save failing cases as found, not shrunk");
-  app.add_option("--replay", replays, "replay these case files instead")->check(CLI::ExistingFile);
-  app.add_flag("--quiet", opt.quiet, "no line per saved failure");
-  app.add_flag("!--in-process", opt.isolate,
-               "run the subject in this process (its state changes stay; a crash ends the run)");
-  app.add_flag("!--no-report", opt.report, "write no report.json and report.html");
-  app.add_option("--junit", opt.junit, "also write a JUnit XML file here");
-  try {
-    app.parse(argc, argv);
-  } catch (const CLI::ParseError& e) {
-    const int rc = app.exit(e);
-    return rc == 0 ? 0 : 2;
-  }
-  if (no_shrink) opt.shrink_budget = 0;
+  const int rc = detail::parse_verify_command(
+      argc, argv,
+      std::string("Holds subject '") + subject.name + "' to every property of " + info(Q).name +
+          " on generated cases; saves and draws each failing case.",
+      "cases",
+      "case files saved per failing property (and at most " + std::to_string(report::kMaxSavedPerSignature) +
+          " per property and generator mode)",
+      opt, replays);
+  if (rc >= 0) return rc;
   if (!replays.empty()) {
     for (const auto& path : replays) {  // a file of another query is a usage error
       const ParseResult pr = load_case(path);
@@ -575,7 +449,6 @@ int verify_program(const ImplOf<Q>& subject, int argc, char** argv) {
     }
     return replay_files<Q>(subject, replays) == 0 ? 0 : 1;
   }
-  for (int i = 0; i < argc; ++i) opt.command += (i ? " " : "") + std::string(argv[i]);
   return verify_cases<Q>(subject, opt).failures == 0 ? 0 : 1;
 }
 

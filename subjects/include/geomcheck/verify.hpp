@@ -81,6 +81,7 @@
 
 #include "geomcheck/casefile.hpp"
 #include "geomcheck/properties/checks.hpp"
+#include "geomcheck/properties/pointset_checks.hpp"
 #include "geomcheck/properties/spec.hpp"
 #include "geomcheck/reports/report.hpp"
 
@@ -165,6 +166,7 @@ struct VerifyResult {
   std::filesystem::path report;                  ///< report.html written (empty: none)
   report::QueryReport figures;                   ///< what the report shows: counts, error tails, time per call
   std::vector<std::string> failed_cases;         ///< the failing cases' tags (generator mode, or file name), in order
+  report::PointSetReport point_set_figures;      ///< a point-set subject's report: sets by mode and kind, times against CGAL
 };
 
 /// The subject as a RapidCheck property: targeted cases of Q drawn by
@@ -229,5 +231,62 @@ using PlainSubject = std::conditional_t<answers_penetration(Q), NamedOnly<Q>, Im
   int verify(const PlainSubject<QueryId::id>& subject, int argc, char** argv);
 GEOMCHECK_QUERY_LIST(GEOMCHECK_X)
 #undef GEOMCHECK_X
+
+// ---- The point-set family ---------------------------------------------------
+//
+// A user's 2D Delaunay triangulation through the same door:
+//
+//   auto mine = geomcheck::subject<geomcheck::PointSetQueryId::delaunay_2d>(
+//       "my-delaunay", [](const std::vector<geomcheck::Vec2>& p) { return my_triangulate(p); });
+//   return geomcheck::verify(mine, argc, argv);
+//
+// The callable answers the Delaunay triangles as triples of input indices
+// (any integer type, any container of three), counter-clockwise. They are
+// held to the exact validity checker and to CGAL's triangulation
+// (pointset_checks.hpp: every distinct point a vertex, duplicates one
+// vertex, no triangle for collinear input, every triangle counter-clockwise
+// and non-degenerate, every interior edge locally Delaunay, the boundary the
+// convex hull with its collinear points, the same triangles as CGAL's but
+// for cocircular choices). verify() draws point sets from the campaign's
+// generators (uniform, grids, cocircular, collinear, duplicates, clusters,
+// huge and tiny, perturbed by ulps), in a child process as for a pair; a
+// failing set is shrunk (points removed while it fails the same property),
+// saved as a point-set file (corpora/README.md) with a page drawing the
+// subject's triangles, and replays with `--replay FILE`. The command line,
+// the exit status and the report are those of a pair's verify().
+
+/// What a point-set subject claims beyond a valid triangulation.
+struct PointSetClaims {
+  /// Any input: a NaN or infinite coordinate is rejected by throwing
+  /// DelaunayInputError naming the first such index. Without it (the
+  /// default), such sets are not asked, and counted.
+  bool any_input = false;
+};
+
+/// A subject of point-set query Q.
+template <PointSetQueryId Q>
+struct PointSetSubject : PointSetImpl {};
+
+/// A subject of point-set query Q from triangulate(points) -> triangles
+/// (a container of index triples: std::array<int, 3>, std::vector<int>,
+/// ...), copied (std::ref to share one).
+template <PointSetQueryId Q, class Triangulate>
+PointSetSubject<Q> subject(const char* name, Triangulate triangulate, PointSetClaims claims = {}) {
+  PointSetSubject<Q> s{{name, {}, {}, claims.any_input}};
+  s.triangles = [f = std::move(triangulate)](const std::vector<Vec2>& points) {
+    IndexTriangles out;
+    for (const auto& t : f(points))
+      out.push_back({static_cast<std::uint32_t>(t[0]), static_cast<std::uint32_t>(t[1]), static_cast<std::uint32_t>(t[2])});
+    return out;
+  };
+  return s;
+}
+
+/// verify(), replay() and the whole program for a point-set subject, as for
+/// a pair's (above); case files are point-set files.
+VerifyResult verify(const PointSetImpl& subject, const VerifyOptions& opt);
+VerifyResult verify(const PointSetImpl& subject, const std::vector<std::filesystem::path>& files, const VerifyOptions& opt);
+int replay(const PointSetImpl& subject, const std::vector<std::filesystem::path>& files);
+int verify(const PointSetImpl& subject, int argc, char** argv);
 
 }  // namespace geomcheck

@@ -4,10 +4,12 @@
 // witness, and optionally another engine's answer, as inline SVG.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <string>
 #include <vector>
 
+#include "geomcheck/predicates2d.hpp"
 #include "geomcheck/registry.hpp"
 #include "geomcheck/results.hpp"
 #include "geomcheck/shapes.hpp"
@@ -68,5 +70,10 @@ std::string views(const Case& c, const std::string& title, const std::vector<Mar
 /// and the certified engine's witness for that face (green).
 std::string mesh_views(const Cylinder& cyl, const TriangleMesh& mesh, const Contact& k, std::uint32_t face,
                        const std::string& who, const std::string& title);
+
+/// A point set and a subject's triangles (input-index triples) in the
+/// plane, fitted to the finite points; `title` (HTML) heads the figure.
+std::string point_set_view(const std::vector<Vec2>& points, const std::vector<std::array<std::uint32_t, 3>>& triangles,
+                           const std::string& title);
 
 }  // namespace geomcheck::draw

@@ -120,6 +120,8 @@ Evaluation evaluation_from_line(const std::string& line);
 /// Everything reported about one point-set query (delaunay_2d) of a campaign.
 struct PointSetReport {
   std::string name, summary;
+  std::string subject = "production";  ///< the subject's name (production, or a user's under verify())
+  int not_asked = 0;  ///< sets the subject was not asked: a non-finite coordinate, and it claims finite input only
   int requested = 0;             ///< point sets asked for
   bool stopped_by_time = false;  ///< --seconds ran out first
   int sets = 0;             ///< point sets run
@@ -131,7 +133,7 @@ struct PointSetReport {
   /// Sets whose triangles differ from CGAL's where four or more points are
   /// cocircular (both choices legitimate, checked exactly).
   int cgal_choices_differ = 0;
-  double production_us = 0, cgal_us = 0;  ///< time summed over the sets both triangulated
+  double production_us = 0, cgal_us = 0;  ///< time summed over the sets both triangulated (the subject's, and CGAL's)
   std::vector<std::string> counterexamples;  ///< failing sets, saved as point-set files
 };
 

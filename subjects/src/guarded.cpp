@@ -1,0 +1,165 @@
+// geomcheck — verify()'s case runner (guarded.hpp).
+#include "guarded.hpp"
+
+#include <CLI/CLI.hpp>
+
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <csignal>
+#include <cstdio>
+#include <cstdlib>
+
+namespace geomcheck::detail {
+
+namespace {
+
+/// Separates the properties of one case (and their case files) on the
+/// child's line: no property name or path holds it.
+constexpr char kSep = '\x1f';
+
+std::string joined(const std::vector<std::string>& fields) {
+  std::string out;
+  for (std::size_t k = 0; k < fields.size(); ++k) out += (k ? std::string(1, kSep) : std::string()) + fields[k];
+  return out;
+}
+
+/// The fields of `text` separated by kSep (none in an empty text).
+std::vector<std::string> split(const std::string& text) {
+  std::vector<std::string> out;
+  if (text.empty()) return out;
+  std::size_t from = 0;
+  for (std::size_t at; (at = text.find(kSep, from)) != std::string::npos; from = at + 1) out.push_back(text.substr(from, at - from));
+  out.push_back(text.substr(from));
+  return out;
+}
+
+}  // namespace
+
+int parse_verify_command(int argc, char** argv, const std::string& about, const std::string& unit,
+                         const std::string& max_saved_help, VerifyOptions& opt,
+                         std::vector<std::filesystem::path>& replays) {
+  if (argc > 0 && argv[0]) opt.program = argv[0];
+  CLI::App app{about};
+  app.add_option("--cases", opt.cases, unit + " to draw")->capture_default_str()->check(CLI::PositiveNumber);
+  app.add_option("--seed", opt.seed, "the seed (the same seed draws the same " + unit + ")")->capture_default_str();
+  app.add_option("--out", opt.out, "where the failing " + unit + " go (one folder per query)")->capture_default_str();
+  app.add_option("--max-saved", opt.max_saved, max_saved_help)->capture_default_str()->check(CLI::NonNegativeNumber);
+  bool no_shrink = false;
+  app.add_flag("--no-shrink", no_shrink, "save failing " + unit + " as found, not shrunk");
+  app.add_option("--replay", replays, "replay these case files instead")->check(CLI::ExistingFile);
+  app.add_flag("--quiet", opt.quiet, "no line per saved failure");
+  app.add_flag("!--in-process", opt.isolate,
+               "run the subject in this process (its state changes stay; a crash ends the run)");
+  app.add_flag("!--no-report", opt.report, "write no report.json and report.html");
+  app.add_option("--junit", opt.junit, "also write a JUnit XML file here");
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    const int rc = app.exit(e);
+    return rc == 0 ? 0 : 2;
+  }
+  if (no_shrink) opt.shrink_budget = 0;
+  for (int i = 0; i < argc; ++i) opt.command += (i ? " " : "") + std::string(argv[i]);
+  return -1;
+}
+
+std::string shell_quote(const std::string& word) {
+  const bool plain = !word.empty() && word.find_first_not_of("ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz"
+                                                            "0123456789_-+./:=@%,") == std::string::npos;
+  if (plain) return word;
+  std::string q = "'";
+  for (char ch : word) q += ch == '\'' ? std::string("'\\''") : std::string(1, ch);
+  return q + "'";
+}
+
+// "<i>\t<properties>\t<saved case files>\t<shrunk>\t<ns per call, a hex
+// float>\t<figures>", the properties ("-": none) and their case files each
+// separated by kSep.
+std::string case_line_text(int i, const CaseLine& line) {
+  char head[96];
+  std::snprintf(head, sizeof head, "%d\t", i);
+  char tail[64];
+  std::snprintf(tail, sizeof tail, "\t%d\t%a\t", line.shrunk, line.ns);
+  return head + (line.properties.empty() ? std::string("-") : joined(line.properties)) + "\t" + joined(line.files) +
+         tail + line.figures;
+}
+
+bool case_line_from_text(const std::string& text, int& i, CaseLine& line) {
+  std::size_t at[5];
+  std::size_t from = 0;
+  for (std::size_t& a : at) {
+    a = text.find('\t', from);
+    if (a == std::string::npos) return false;
+    from = a + 1;
+  }
+  i = std::atoi(text.c_str());
+  line = CaseLine{};
+  const std::string properties = text.substr(at[0] + 1, at[1] - at[0] - 1);
+  if (properties != "-") {
+    line.properties = split(properties);
+    line.files = split(text.substr(at[1] + 1, at[2] - at[1] - 1));
+    line.files.resize(line.properties.size());
+  }
+  line.shrunk = std::atoi(text.c_str() + at[2] + 1);
+  line.ns = std::strtod(text.c_str() + at[3] + 1, nullptr);
+  line.figures = text.substr(at[4] + 1);
+  return true;
+}
+
+void run_guarded(int n, const GuardOptions& opt, const std::function<CaseLine(int)>& run,
+                 const std::function<void(int, const CaseLine&)>& absorb,
+                 const std::function<void(int, const Failure&)>& lost) {
+  int next = 0;
+  while (next < n) {
+    int fds[2];
+    const pid_t pid = opt.isolate && ::pipe(fds) == 0 ? ::fork() : -1;
+    if (pid < 0) {  // no child: in process
+      for (; next < n; ++next) absorb(next, run(next));
+      return;
+    }
+    if (pid == 0) {  // the child: a line per case
+      ::close(fds[0]);
+      FILE* out = ::fdopen(fds[1], "w");
+      for (int i = next; i < n; ++i) {
+        ::alarm(opt.case_seconds);  // a subject that hangs (checks or shrink) is ended by SIGALRM
+        const CaseLine line = run(i);
+        ::alarm(0);
+        absorb(i, line);  // the child's copy: the caps of what it saves next
+        std::fprintf(out, "%s\n", case_line_text(i, line).c_str());
+        std::fflush(out);
+      }
+      std::fflush(stdout);
+      std::_Exit(0);
+    }
+    ::close(fds[1]);
+    FILE* in = ::fdopen(fds[0], "r");
+    std::string text;
+    for (int ch; (ch = std::fgetc(in)) != EOF;) {
+      if (ch != '\n') {
+        text += static_cast<char>(ch);
+        continue;
+      }
+      int i = 0;
+      CaseLine line;
+      if (case_line_from_text(text, i, line)) {
+        absorb(i, line);
+        next = i + 1;
+      }
+      text.clear();
+    }
+    std::fclose(in);
+    int status = 0;
+    ::waitpid(pid, &status, 0);
+    if (next < n) {  // the child ended before its cases did (a subject's own exit(0) too)
+      const bool hung = WIFSIGNALED(status) && WTERMSIG(status) == SIGALRM;
+      const std::string how = WIFSIGNALED(status) ? std::string("signal ") + std::to_string(WTERMSIG(status))
+                                                  : "exit status " + std::to_string(WEXITSTATUS(status));
+      lost(next, hung ? Failure{"subject-hung", "no answer within " + std::to_string(opt.case_seconds) + " s"}
+                      : Failure{"subject-crashed", "the subject ended the process (" + how + ")"});
+      ++next;
+    }
+  }
+}
+
+}  // namespace geomcheck::detail
