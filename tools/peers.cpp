@@ -133,7 +133,7 @@ std::vector<report::QueryReport> run_peers(int cases, std::uint64_t seed, const 
         std::ifstream f(figures(k));
         std::stringstream text;
         text << f.rdbuf();
-        out[k] = query_report_from_json(text.str());
+        report::from_json(text.str(), out[k]);
       } catch (const std::exception& e) {
         std::fprintf(stderr, "[campaign] %s: %s's report unreadable (%s)\n", info(Q).name, engines[k]->name, e.what());
         ok = false;
@@ -154,7 +154,7 @@ std::vector<report::QueryReport> run_peers(int cases, std::uint64_t seed, const 
     if (pid == 0) {  // the child: the run, its report to the file
       int rc = 1;
       try {
-        const std::string text = query_report_json(run_one(*engines[k]));
+        const std::string text = report::to_json(run_one(*engines[k]));
         std::ofstream f(figures(k));
         f << text;
         f.close();

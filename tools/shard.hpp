@@ -26,12 +26,6 @@ void write_shard(const std::filesystem::path& file, const CampaignOptions& opt, 
                  const std::vector<report::QueryReport>& reps, const std::vector<report::PointSetReport>& point_sets,
                  const std::vector<report::MeshReport>& meshes);
 
-/// One query's report as JSON text (shard.json's layout for a report:
-/// exact, doubles round-trip) and back; the reading throws
-/// std::runtime_error on a missing field.
-std::string query_report_json(const report::QueryReport& r);
-report::QueryReport query_report_from_json(const std::string& text);
-
 /// `geomcheck merge`: reads DIR/shard.json of every directory, checks they
 /// are the N distinct shards of one campaign, copies their saved cases into
 /// `out` and writes out/report.json, out/report.html (and `junit` when

@@ -17,8 +17,8 @@ namespace geomcheck::detail {
 /// What one case gave, as the child tells the parent: the properties it
 /// failed, the case file saved for each (empty: not saved), the counterexamples
 /// shrunk on the way, the subject's time per call, and the family's own
-/// figures (one line of text, no newline: report::evaluation_line for a
-/// pair, a JSON object for a point set).
+/// figures (one line of text, no newline: report::to_json of the case's
+/// evaluation for a pair, of a one-set report for a point set).
 struct CaseLine {
   std::vector<std::string> properties;
   std::vector<std::string> files;

@@ -173,7 +173,9 @@ struct Tally {
   /// Case i's line (detail::run_guarded): its figures, its failures and
   /// their case files.
   void add(QueryId id, int i, const detail::CaseLine& line) {
-    report::add_evaluation(rep, id, report::evaluation_from_line(line.figures));
+    Evaluation e;
+    report::from_json(line.figures, e);
+    report::add_evaluation(rep, id, e);
     if (std::isfinite(line.ns)) ns.push_back(line.ns);
     rep.shrunk += line.shrunk;
     fail(i, line.properties, line.files);
@@ -341,7 +343,7 @@ VerifyResult run_cases(const ImplOf<Q>& subject, const std::vector<Tagged<typena
       if (hit && line.ns < 0) std::puts("");  // keeps the call
     } catch (...) {
     }
-    line.figures = report::evaluation_line(e);
+    line.figures = report::to_json(e);
     shrunk = 0;
     for (const Failure& f : failures) {
       line.properties.push_back(f.property);

@@ -36,14 +36,17 @@ std::string declared_query_of(const std::filesystem::path& path) {
   return "";
 }
 
-/// The figures of one set on the child's line: mode, kind, points, CGAL's
-/// other cocircular choices, the two times (microseconds, hex floats).
-std::string figures_text(const std::string& mode, std::string_view kind, std::size_t points, bool asked,
-                         const PointSetOutcome& o) {
-  char buf[160];
-  std::snprintf(buf, sizeof buf, "%zu %d %d %a %a ", points, asked ? 1 : 0, o.cgal_differs ? 1 : 0, o.subject_us,
-                o.cgal_us);
-  return buf + std::string(kind) + " " + mode;
+/// One set's figures on the child's line: a report of that set alone
+/// (report::to_json), merged by the parent (report::merge_into).
+std::string figures_text(const std::string& mode, std::string_view kind, std::size_t points, const PointSetOutcome& o) {
+  report::PointSetReport one;
+  one.sets = 1;
+  one.points = points;
+  one.modes[mode] = 1;
+  one.kinds[std::string(kind)] = 1;
+  one.cgal_choices_differ = o.cgal_differs;
+  if (std::isfinite(o.subject_us) && std::isfinite(o.cgal_us)) one.production_us = o.subject_us, one.cgal_us = o.cgal_us;
+  return report::to_json(one);
 }
 
 /// A set's points without the points at `drop` (sorted indices).
@@ -88,7 +91,6 @@ struct PointSetRun {
   report::PointSetReport rep;
   VerifyResult res;
   std::map<std::string, int> saved_of_property;
-  std::vector<double> subject_us, cgal_us;
 
   std::string replay_command(const std::filesystem::path& path) const {
     return (opt.replay.empty() ? detail::shell_quote(opt.program) + " --replay " : opt.replay) +
@@ -145,7 +147,7 @@ struct PointSetRun {
     const Points& p = sets[i].first;
     const PointSetOutcome o = check_point_set(p, subject);
     line.ns = std::isfinite(o.subject_us) ? o.subject_us * 1e3 : NAN;
-    line.figures = figures_text(sets[i].second, classify_point_set(p), p.size(), o.asked, o);
+    line.figures = figures_text(sets[i].second, classify_point_set(p), p.size(), o);
     if (o.failure) {
       line.properties.push_back(o.failure->property);
       line.files.push_back(save(i, *o.failure, true, line.shrunk));
@@ -154,18 +156,9 @@ struct PointSetRun {
   }
 
   void absorb(int i, const detail::CaseLine& line) {
-    std::istringstream in(line.figures);
-    std::size_t points = 0;
-    int asked = 0, differs = 0;
-    std::string sus, cus, kind, mode;
-    in >> points >> asked >> differs >> sus >> cus >> kind >> mode;
-    ++rep.sets;
-    rep.points += points;
-    rep.modes[mode]++;
-    rep.kinds[kind]++;
-    rep.cgal_choices_differ += differs;
-    const double su = std::strtod(sus.c_str(), nullptr), cu = std::strtod(cus.c_str(), nullptr);
-    if (std::isfinite(su) && std::isfinite(cu)) subject_us.push_back(su), cgal_us.push_back(cu);
+    report::PointSetReport one;
+    report::from_json(line.figures, one);
+    report::merge_into(rep, one);
     fail(i, line.properties, line.files);
   }
 
@@ -198,7 +191,7 @@ struct PointSetRun {
 VerifyResult run_sets(const PointSetImpl& subject, const std::vector<std::pair<Points, std::string>>& all,
                       const VerifyOptions& opt, const std::string& what) {
   const auto start = std::chrono::steady_clock::now();
-  PointSetRun r{subject, opt, {}, {}, {}, {}, {}, {}};
+  PointSetRun r{subject, opt, {}, {}, {}, {}};
   int not_expressed = 0;
   for (const auto& s : all) {
     if (subject.any_input || all_finite(s.first)) r.sets.push_back(s);
@@ -225,7 +218,6 @@ VerifyResult run_sets(const PointSetImpl& subject, const std::vector<std::pair<P
         shrunk += line.shrunk;
       },
       [&](int i, const Failure& f) { r.lost(i, f); });
-  for (std::size_t k = 0; k < r.subject_us.size(); ++k) r.rep.production_us += r.subject_us[k], r.rep.cgal_us += r.cgal_us[k];
   r.rep.not_asked = not_expressed;
   VerifyResult& res = r.res;
   res.cases = static_cast<int>(r.sets.size());

@@ -7,6 +7,7 @@
 
 #include <cmath>
 #include <string>
+#include <type_traits>
 
 namespace geomcheck::peers {
 
@@ -374,68 +375,46 @@ PeerSubject<Q> collide_peer() {
 
 }  // namespace
 
-/// Bullet's collide(Cylinder, Sphere).
-template <>
-PeerSubject<QueryId::collide_cylinder_sphere> peer_bullet<QueryId::collide_cylinder_sphere>() {
-  return collide_peer<QueryId::collide_cylinder_sphere>();
+/// Whether Bullet has a shape for geomcheck's shape S (BtOf<S>).
+template <class S, class = void>
+struct HasBt : std::false_type {};
+template <class S>
+struct HasBt<S, std::void_t<typename BtOf<S>::type>> : std::true_type {};
+
+/// Bullet's subject of query Q, found from the query's entry point and
+/// shapes alone: a collide or penetration query of the cylinder against a
+/// shape Bullet has (btCylinderShapeZ, btSphereShape, btCapsuleShapeZ,
+/// btBoxShape, btTriangleShape; held to the query's claims), the segment
+/// cast (start test, then rayTest) and the sphere sweep (start test, then
+/// convexSweepTest) against the cylinder; a null subject for any other
+/// query, so that a query Bullet cannot express needs no code here.
+template <QueryId Q>
+PeerSubject<Q> peer_bullet() {
+  using A = typename QueryTraits<Q>::ShapeA;
+  using B = typename QueryTraits<Q>::ShapeB;
+  constexpr QueryKind kind = QueryTraits<Q>::kind;
+  if constexpr (kind == QueryKind::Collide && std::is_same_v<A, Cylinder> && HasBt<B>::value) {
+    return collide_peer<Q>();
+  } else if constexpr (kind == QueryKind::Cast && std::is_same_v<B, Cylinder>) {
+    static const ImplOf<Q> subject{
+        "Bullet", [](const Segment& s, const Cylinder& c) { return bullet_cast(s, c); },
+        moving_claims<Q>("rayTest's m_hitNormalWorld: the cylinder's outward normal at the hit (zero when the "
+                         "segment starts inside: contactPairTest of a zero-radius sphere at the start)")};
+    return {&subject, [](const typename QueryTraits<Q>::Case& c) { return expresses_case(c); }, engine_name()};
+  } else if constexpr (kind == QueryKind::Sweep && std::is_same_v<B, Cylinder>) {
+    static const ImplOf<Q> subject{
+        "Bullet", [](const MovingSphere& m, const Cylinder& c) { return bullet_sweep(m, c); },
+        moving_claims<Q>("convexSweepTest's m_hitNormalWorld: the cylinder's normal towards the ball at t (zero "
+                         "when the ball meets the cylinder at t = 0: contactPairTest)")};
+    return {&subject, [](const typename QueryTraits<Q>::Case& c) { return expresses_case(c); }, engine_name()};
+  } else {
+    return {};
+  }
 }
 
-/// Bullet's collide(Cylinder, Capsule).
-template <>
-PeerSubject<QueryId::collide_cylinder_capsule> peer_bullet<QueryId::collide_cylinder_capsule>() {
-  return collide_peer<QueryId::collide_cylinder_capsule>();
-}
-
-/// Bullet's collide(Cylinder, Obb): a btBoxShape.
-template <>
-PeerSubject<QueryId::collide_cylinder_obb> peer_bullet<QueryId::collide_cylinder_obb>() {
-  return collide_peer<QueryId::collide_cylinder_obb>();
-}
-
-/// Bullet's collide(Cylinder, Triangle): a btTriangleShape.
-template <>
-PeerSubject<QueryId::collide_cylinder_triangle> peer_bullet<QueryId::collide_cylinder_triangle>() {
-  return collide_peer<QueryId::collide_cylinder_triangle>();
-}
-
-/// Bullet's collide(Cylinder, Obb), held to the exact penetration depth.
-template <>
-PeerSubject<QueryId::penetration_cylinder_obb> peer_bullet<QueryId::penetration_cylinder_obb>() {
-  return collide_peer<QueryId::penetration_cylinder_obb>();
-}
-
-/// Bullet's collide(Cylinder, Triangle), held to the exact penetration depth.
-template <>
-PeerSubject<QueryId::penetration_cylinder_triangle> peer_bullet<QueryId::penetration_cylinder_triangle>() {
-  return collide_peer<QueryId::penetration_cylinder_triangle>();
-}
-
-/// Bullet's collide(Cylinder, Cylinder).
-template <>
-PeerSubject<QueryId::collide_cylinder_cylinder> peer_bullet<QueryId::collide_cylinder_cylinder>() {
-  return collide_peer<QueryId::collide_cylinder_cylinder>();
-}
-
-/// Bullet's cast(Segment, Cylinder): start test, then rayTest.
-template <>
-PeerSubject<QueryId::cast_segment_cylinder> peer_bullet<QueryId::cast_segment_cylinder>() {
-  constexpr QueryId Q = QueryId::cast_segment_cylinder;
-  static const ImplOf<Q> subject{
-      "Bullet", [](const Segment& s, const Cylinder& c) { return bullet_cast(s, c); },
-      moving_claims<Q>("rayTest's m_hitNormalWorld: the cylinder's outward normal at the hit (zero when the "
-                       "segment starts inside: contactPairTest of a zero-radius sphere at the start)")};
-  return {&subject, [](const SegmentCylinderCase& c) { return expresses_case(c); }, engine_name()};
-}
-
-/// Bullet's sweep(MovingSphere, Cylinder): start test, then convexSweepTest.
-template <>
-PeerSubject<QueryId::sweep_sphere_cylinder> peer_bullet<QueryId::sweep_sphere_cylinder>() {
-  constexpr QueryId Q = QueryId::sweep_sphere_cylinder;
-  static const ImplOf<Q> subject{
-      "Bullet", [](const MovingSphere& m, const Cylinder& c) { return bullet_sweep(m, c); },
-      moving_claims<Q>("convexSweepTest's m_hitNormalWorld: the cylinder's normal towards the ball at t (zero "
-                       "when the ball meets the cylinder at t = 0: contactPairTest)")};
-  return {&subject, [](const SweepCylinderCase& c) { return expresses_case(c); }, engine_name()};
-}
+// Every registered query: the template above, instantiated.
+#define GEOMCHECK_X(id, entry, A, B, summary) template PeerSubject<QueryId::id> peer_bullet<QueryId::id>();
+GEOMCHECK_QUERY_LIST(GEOMCHECK_X)
+#undef GEOMCHECK_X
 
 }  // namespace geomcheck::peers

@@ -365,83 +365,82 @@ const char* ode_configuration() {
   return dGetConfiguration();
 }
 
-/// ODE's subject of collide_cylinder_sphere (ode.hpp).
+/// What ODE says of its contact between a cylinder and shape B: its
+/// normal's convention in words, and whether exactly touching shapes make a
+/// contact. A shape without an entry is one ODE is not asked about (its
+/// queries get a null subject).
+template <class B>
+struct OdeContact;
 template <>
-PeerSubject<QueryId::collide_cylinder_sphere> peer_ode<QueryId::collide_cylinder_sphere>() {
-  return collide_subject<QueryId::collide_cylinder_sphere>(
+struct OdeContact<Sphere> {
+  static constexpr const char* normal =
       "unit, from the cylinder towards the sphere: ODE's contact normal negated (dCollideCylinderSphere, closed "
-      "form); a consistent contact (depth along it), not documented as the minimal translation",
-      true);
-}
-
-/// ODE's subject of cast_segment_cylinder (ode.hpp).
+      "form); a consistent contact (depth along it), not documented as the minimal translation";
+  static constexpr bool touching_is_contact = true;
+};
 template <>
-PeerSubject<QueryId::cast_segment_cylinder> peer_ode<QueryId::cast_segment_cylinder>() {
-  static const Claims claims = ode_claims<QueryId::cast_segment_cylinder>(
-      "ODE's ray contact normal (dCollideRayCylinder, the ray as g1): the cylinder's outward surface normal at the "
-      "hit; zero when the start is in the cylinder (asked of ODE with a ball of radius 0)",
-      true, true);
-  static const CastSegmentCylinderImpl subject{
-      "ODE", [](const Segment& s, const Cylinder& c) { return ode_cast(s, c); }, &claims};
-  return {&subject, [](const SegmentCylinderCase& c) { return expresses(c); }, kEngine};
-}
-
-/// ODE's subject of collide_cylinder_capsule (ode.hpp).
-template <>
-PeerSubject<QueryId::collide_cylinder_capsule> peer_ode<QueryId::collide_cylinder_capsule>() {
-  return collide_subject<QueryId::collide_cylinder_capsule>(
+struct OdeContact<Capsule> {
+  static constexpr const char* normal =
       "unit, from the cylinder towards the capsule: ODE's contact normal negated (dCollideCapsuleCylinder: libccd's "
-      "MPR); a consistent contact by ODE's convention, MPR's portal direction in fact",
-      false);
-}
-
-/// ODE's subject of sweep_sphere_cylinder (ode.hpp).
+      "MPR); a consistent contact by ODE's convention, MPR's portal direction in fact";
+  static constexpr bool touching_is_contact = false;
+};
 template <>
-PeerSubject<QueryId::sweep_sphere_cylinder> peer_ode<QueryId::sweep_sphere_cylinder>() {
-  return {};  // ODE has no sweep (no continuous collision)
-}
-
-/// ODE's subject of collide_cylinder_obb (ode.hpp).
-template <>
-PeerSubject<QueryId::collide_cylinder_obb> peer_ode<QueryId::collide_cylinder_obb>() {
-  return collide_subject<QueryId::collide_cylinder_obb>(
+struct OdeContact<Obb> {
+  static constexpr const char* normal =
       "unit, from the cylinder towards the box: ODE's contact normal negated (dCollideCylinderBox: separating "
-      "axes); the deepest contact of ODE's clipped manifold",
-      false);
-}
-
-/// ODE's subject of collide_cylinder_triangle (ode.hpp).
+      "axes); the deepest contact of ODE's clipped manifold";
+  static constexpr bool touching_is_contact = false;
+};
 template <>
-PeerSubject<QueryId::collide_cylinder_triangle> peer_ode<QueryId::collide_cylinder_triangle>() {
-  return collide_subject<QueryId::collide_cylinder_triangle>(
+struct OdeContact<Triangle> {
+  static constexpr const char* normal =
       "unit, from the cylinder towards the triangle: ODE's contact normal negated (dCollideCylinderTrimesh on a "
-      "two-faced trimesh, both windings); the deepest contact",
-      false);
-}
-
-/// ODE's subject of collide_cylinder_cylinder (ode.hpp).
+      "two-faced trimesh, both windings); the deepest contact";
+  static constexpr bool touching_is_contact = false;
+};
 template <>
-PeerSubject<QueryId::collide_cylinder_cylinder> peer_ode<QueryId::collide_cylinder_cylinder>() {
-  return collide_subject<QueryId::collide_cylinder_cylinder>(
+struct OdeContact<Cylinder> {
+  static constexpr const char* normal =
       "unit, from the first cylinder towards the second: ODE's contact normal negated (dCollideCylinderCylinder: "
-      "libccd's MPR, a rim ring for parallel axes); the deepest contact",
-      false);
+      "libccd's MPR, a rim ring for parallel axes); the deepest contact";
+  static constexpr bool touching_is_contact = false;
+};
+
+/// Whether OdeContact<B> has an entry.
+template <class B, class = void>
+struct HasOdeContact : std::false_type {};
+template <class B>
+struct HasOdeContact<B, std::void_t<decltype(OdeContact<B>::normal)>> : std::true_type {};
+
+/// ODE's subject of query Q (ode.hpp), found from the query's entry point
+/// and shapes alone: a collide or penetration query of the cylinder against
+/// a shape with an OdeContact entry (held to the query's claims), and the
+/// segment cast (dCollideRayCylinder); a null subject for any other query
+/// (ODE has no sweep, no continuous collision), so that a query ODE cannot
+/// express needs no code here.
+template <QueryId Q>
+PeerSubject<Q> peer_ode() {
+  using A = typename QueryTraits<Q>::ShapeA;
+  using B = typename QueryTraits<Q>::ShapeB;
+  constexpr QueryKind kind = QueryTraits<Q>::kind;
+  if constexpr (kind == QueryKind::Collide && std::is_same_v<A, Cylinder> && HasOdeContact<B>::value) {
+    return collide_subject<Q>(OdeContact<B>::normal, OdeContact<B>::touching_is_contact);
+  } else if constexpr (kind == QueryKind::Cast && std::is_same_v<B, Cylinder>) {
+    static const Claims claims = ode_claims<Q>(
+        "ODE's ray contact normal (dCollideRayCylinder, the ray as g1): the cylinder's outward surface normal at the "
+        "hit; zero when the start is in the cylinder (asked of ODE with a ball of radius 0)",
+        true, true);
+    static const ImplOf<Q> subject{"ODE", [](const Segment& s, const Cylinder& c) { return ode_cast(s, c); }, &claims};
+    return {&subject, [](const typename QueryTraits<Q>::Case& c) { return expresses(c); }, kEngine};
+  } else {
+    return {};
+  }
 }
 
-/// ODE's subject of penetration_cylinder_obb (ode.hpp): the box's contact
-/// above, held to the exact penetration depth.
-template <>
-PeerSubject<QueryId::penetration_cylinder_obb> peer_ode<QueryId::penetration_cylinder_obb>() {
-  return collide_subject<QueryId::penetration_cylinder_obb>(
-      peer_ode<QueryId::collide_cylinder_obb>().subject->claims->normal, false);
-}
-
-/// ODE's subject of penetration_cylinder_triangle (ode.hpp): the triangle's
-/// contact above, held to the exact penetration depth.
-template <>
-PeerSubject<QueryId::penetration_cylinder_triangle> peer_ode<QueryId::penetration_cylinder_triangle>() {
-  return collide_subject<QueryId::penetration_cylinder_triangle>(
-      peer_ode<QueryId::collide_cylinder_triangle>().subject->claims->normal, false);
-}
+// Every registered query: the template above, instantiated.
+#define GEOMCHECK_X(id, entry, A, B, summary) template PeerSubject<QueryId::id> peer_ode<QueryId::id>();
+GEOMCHECK_QUERY_LIST(GEOMCHECK_X)
+#undef GEOMCHECK_X
 
 }  // namespace geomcheck::peers

@@ -108,15 +108,6 @@ struct QueryReport {
 /// campaign and verify() both report through it.
 void add_evaluation(QueryReport& rep, QueryId id, const Evaluation& e);
 
-/// An evaluation as one line of JSON (every field; doubles exact, NaN and
-/// infinities as the strings "nan", "inf", "-inf"; no raw tab or newline),
-/// and back: what verify()'s child process sends its parent for each case.
-/// evaluation_from_line(evaluation_line(e)) equals e field for field.
-/// Throws std::runtime_error (or nlohmann's parse error, a
-/// std::exception) on a line that is not one.
-std::string evaluation_line(const Evaluation& e);
-Evaluation evaluation_from_line(const std::string& line);
-
 /// Everything reported about one point-set query (delaunay_2d) of a campaign.
 struct PointSetReport {
   std::string name, summary;
@@ -173,6 +164,37 @@ struct RunInfo {
 inline constexpr int kMaxSavedPerKind = 25;
 /// Case files saved per failure signature (property and generator mode).
 inline constexpr int kMaxSavedPerSignature = 5;
+
+// ---- Serialising -------------------------------------------------------------
+//
+// The one serialiser of the harness's figures: every field of an evaluation,
+// a query's report (with its claims, precision and bounds, its peers and
+// first cases), a point-set or a mesh query's report and a run's facts, as
+// one line of JSON (doubles exact; NaN and infinities as the strings "nan",
+// "inf", "-inf"; no raw tab or newline), and back. It writes shard.json (read
+// by `geomcheck merge`), the other engines' processes' reports and verify()'s
+// child lines, so that nothing is lost between a child and its parent or a
+// shard and the merge: from_json(to_json(x)) equals x field for field. A
+// field added to one of these structures stops the build until it is
+// written there (reports/src/serialize.cpp). from_json throws
+// std::runtime_error naming what it read and the field missing or malformed.
+std::string to_json(const Evaluation& e);
+std::string to_json(const QueryReport& r);
+std::string to_json(const PointSetReport& r);
+std::string to_json(const MeshReport& r);
+std::string to_json(const RunInfo& r);
+void from_json(const std::string& text, Evaluation& e);
+void from_json(const std::string& text, QueryReport& r);
+void from_json(const std::string& text, PointSetReport& r);
+void from_json(const std::string& text, MeshReport& r);
+void from_json(const std::string& text, RunInfo& r);
+
+/// b's counts, samples and saved cases added into a: two parts of one
+/// query's run (two shards of a campaign, or a case of verify() and the
+/// cases before it). Per-case times are weighted by the cases.
+void merge_into(QueryReport& a, const QueryReport& b);
+void merge_into(PointSetReport& a, const PointSetReport& b);
+void merge_into(MeshReport& a, const MeshReport& b);
 
 /// A subject's precision in words, for verify's summary and the report's
 /// claims line: "production's (...)" for production's, else the type, its

@@ -140,7 +140,9 @@
 
 #include "geomcheck/peers/peer.hpp"
 
-/// peer_bullet<Q>(): Bullet's subject of every registered query Q (all are
-/// expressed), its expresses() test and the engine string
-/// ("Bullet 3.24 (double precision)").
+/// peer_bullet<Q>(): Bullet's subject of query Q (null where Bullet cannot
+/// express Q: found from the query's entry point and shapes, so a new query
+/// needs no code here), its expresses() test and the engine string
+/// ("Bullet 3.24 (double precision)"); instantiated for every registered
+/// query in src/bullet_peer.cpp.
 GEOMCHECK_DECLARE_PEER(bullet)

@@ -213,15 +213,10 @@ GEOMCHECK_DECLARE_PEER(ode)
 namespace geomcheck::peers {
 
 /// peer_ode<Q>(): ODE's subject of query Q (its claims above), the cases it
-/// expresses and "ODE 0.16.2"; a null subject for sweep_sphere_cylinder.
-/// One explicit specialization per registered query, defined in
-/// src/ode.cpp (declared here so that callers use them).
-#define GEOMCHECK_X(id, kind, A, B, summary) \
-  template <>                                \
-  PeerSubject<QueryId::id> peer_ode<QueryId::id>();
-GEOMCHECK_QUERY_LIST(GEOMCHECK_X)
-#undef GEOMCHECK_X
-
+/// expresses and "ODE 0.16.2"; a null subject where ODE cannot express Q
+/// (sweep_sphere_cylinder). Found from the query's entry point and shapes
+/// (src/ode.cpp), so a new query needs no code here; instantiated for every
+/// registered query there.
 /// ODE's build configuration, as dGetConfiguration() states it (initialises
 /// ODE on first use).
 const char* ode_configuration();
