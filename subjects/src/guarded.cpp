@@ -6,6 +6,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <chrono>
 #include <csignal>
 #include <cstdio>
 #include <cstdlib>
@@ -42,6 +43,9 @@ int parse_verify_command(int argc, char** argv, const std::string& about, const 
   if (argc > 0 && argv[0]) opt.program = argv[0];
   CLI::App app{about};
   app.add_option("--cases", opt.cases, unit + " to draw")->capture_default_str()->check(CLI::PositiveNumber);
+  app.add_option("--seconds", opt.seconds, "start no case after this many seconds (0: no limit)")
+      ->capture_default_str()
+      ->check(CLI::NonNegativeNumber);
   app.add_option("--seed", opt.seed, "the seed (the same seed draws the same " + unit + ")")->capture_default_str();
   app.add_option("--out", opt.out, "where the failing " + unit + " go (one folder per query)")->capture_default_str();
   app.add_option("--max-saved", opt.max_saved, max_saved_help)->capture_default_str()->check(CLI::NonNegativeNumber);
@@ -107,21 +111,25 @@ bool case_line_from_text(const std::string& text, int& i, CaseLine& line) {
   return true;
 }
 
-void run_guarded(int n, const GuardOptions& opt, const std::function<CaseLine(int)>& run,
-                 const std::function<void(int, const CaseLine&)>& absorb,
-                 const std::function<void(int, const Failure&)>& lost) {
+int run_guarded(int n, const GuardOptions& opt, const std::function<CaseLine(int)>& run,
+                const std::function<void(int, const CaseLine&)>& absorb,
+                const std::function<void(int, const Failure&)>& lost) {
+  const auto start = std::chrono::steady_clock::now();
+  const auto expired = [&] {
+    return opt.seconds > 0 && std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() > opt.seconds;
+  };
   int next = 0;
-  while (next < n) {
+  while (next < n && !expired()) {
     int fds[2];
     const pid_t pid = opt.isolate && ::pipe(fds) == 0 ? ::fork() : -1;
     if (pid < 0) {  // no child: in process
-      for (; next < n; ++next) absorb(next, run(next));
-      return;
+      for (; next < n && !expired(); ++next) absorb(next, run(next));
+      return next;
     }
     if (pid == 0) {  // the child: a line per case
       ::close(fds[0]);
       FILE* out = ::fdopen(fds[1], "w");
-      for (int i = next; i < n; ++i) {
+      for (int i = next; i < n && !expired(); ++i) {
         ::alarm(opt.case_seconds);  // a subject that hangs (checks or shrink) is ended by SIGALRM
         const CaseLine line = run(i);
         ::alarm(0);
@@ -151,7 +159,8 @@ void run_guarded(int n, const GuardOptions& opt, const std::function<CaseLine(in
     std::fclose(in);
     int status = 0;
     ::waitpid(pid, &status, 0);
-    if (next < n) {  // the child ended before its cases did (a subject's own exit(0) too)
+    const bool finished = WIFEXITED(status) && WEXITSTATUS(status) == 0 && expired();
+    if (next < n && !finished) {  // the child ended before its cases did (a subject's own exit(0) too)
       const bool hung = WIFSIGNALED(status) && WTERMSIG(status) == SIGALRM;
       const std::string how = WIFSIGNALED(status) ? std::string("signal ") + std::to_string(WTERMSIG(status))
                                                   : "exit status " + std::to_string(WEXITSTATUS(status));
@@ -160,6 +169,7 @@ void run_guarded(int n, const GuardOptions& opt, const std::function<CaseLine(in
       ++next;
     }
   }
+  return next;
 }
 
 }  // namespace geomcheck::detail

@@ -36,6 +36,7 @@ bool case_line_from_text(const std::string& text, int& i, CaseLine& line);
 struct GuardOptions {
   bool isolate = true;          ///< a child process (false, or no fork: in process)
   unsigned case_seconds = 60;   ///< a case taking longer: the subject hung
+  double seconds = 0;           ///< no case started after this many seconds (0: no limit)
 };
 
 /// Runs case i for every i in [0, n): `run(i)` checks the case (and saves
@@ -47,8 +48,9 @@ struct GuardOptions {
 /// handed to `lost(i, failure)` ("subject-crashed" or "subject-hung") in the
 /// parent, and a new child goes on after it. Without `isolate`, run() and
 /// absorb() in this process: the subject's state changes stay, and a crash
-/// ends the run.
-void run_guarded(int n, const GuardOptions& opt, const std::function<CaseLine(int)>& run,
+/// ends the run. With opt.seconds, no case is started once that many seconds
+/// have passed. Returns the number of cases run (n unless stopped by time).
+int run_guarded(int n, const GuardOptions& opt, const std::function<CaseLine(int)>& run,
                  const std::function<void(int, const CaseLine&)>& absorb,
                  const std::function<void(int, const Failure&)>& lost);
 

@@ -112,7 +112,7 @@ bool save_failure(const typename QueryTraits<Q>::Case& c, const ImplOf<Q>& subje
   std::snprintf(name, sizeof name, "%05d-%s.case", index, f.property.c_str());
   path = dir / name;
   const Evaluation e = with_answer ? truth_of<Q>(c, subject) : evaluate(c, production_of<Q>());
-  CaseFile file = from_case<Q>(c, "verify " + std::string(subject.name) + " seed=" + std::to_string(opt.seed) +
+  CaseFile file = from_case<Q>(c, opt.found_by + " " + subject.name + " seed=" + std::to_string(opt.seed) +
                                       " case=" + std::to_string(index),
                                e.valid ? verdict_word(Q, e) : std::string(), f.property + ": " + f.detail);
   std::string err;
@@ -357,9 +357,11 @@ VerifyResult run_cases(const ImplOf<Q>& subject, const std::vector<Tagged<typena
     ++tally.rep.cases;  // run, and failed without an answer to count
     tally.fail(i, {f.property}, {save(i, f, false).string()});
   };
-  detail::run_guarded(static_cast<int>(cases.size()), {opt.isolate, opt.case_seconds}, run, absorb, lost);
+  const int ran = detail::run_guarded(static_cast<int>(cases.size()), {opt.isolate, opt.case_seconds, opt.seconds}, run,
+                                      absorb, lost);
   VerifyResult& res = tally.res;
-  res.cases = static_cast<int>(cases.size());
+  res.cases = ran;
+  tally.rep.stopped_by_time = ran < static_cast<int>(cases.size());
   res.not_expressed = not_expressed;
   tally.rep.not_expressed = not_expressed;
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -88,6 +88,7 @@ struct PointSetRun {
   const PointSetImpl& subject;
   const VerifyOptions& opt;
   std::vector<std::pair<Points, std::string>> sets;  // asked sets and their tags
+  std::vector<int> index;                            // the number each asked set is saved under
   report::PointSetReport rep;
   VerifyResult res;
   std::map<std::string, int> saved_of_property;
@@ -119,12 +120,12 @@ struct PointSetRun {
     std::error_code ec;
     std::filesystem::create_directories(dir, ec);
     char name[96];
-    std::snprintf(name, sizeof name, "%05d-%s.case", i, f.property.c_str());
+    std::snprintf(name, sizeof name, "%05d-%s.case", index[i], f.property.c_str());
     const std::filesystem::path path = dir / name;
     PointSetFile file;
     file.points = p;
     file.oracle_verdict = std::string(classify_point_set(p));
-    file.found_by = "verify " + std::string(subject.name) + " seed=" + std::to_string(opt.seed) + " case=" + std::to_string(i);
+    file.found_by = opt.found_by + " " + subject.name + " seed=" + std::to_string(opt.seed) + " case=" + std::to_string(index[i]);
     file.note = shown.property + ": " + shown.detail;
     std::string err;
     if (!save_point_set(path, file, err)) {
@@ -135,7 +136,7 @@ struct PointSetRun {
     report::write_counterexample_page(std::filesystem::path(path).replace_extension(".html"), name,
                                       draw::point_set_view(p, drawn, title), subject.name, replay_command(path));
     if (!opt.quiet)
-      std::printf("FAIL %s %s (set %d, %s): %s\n  drawn: %s\n  replay: %s\n", subject.name, f.property.c_str(), i,
+      std::printf("FAIL %s %s (set %d, %s): %s\n  drawn: %s\n  replay: %s\n", subject.name, f.property.c_str(), index[i],
                   sets[i].second.c_str(), shown.detail.c_str(),
                   std::filesystem::path(path).replace_extension(".html").string().c_str(), replay_command(path).c_str());
     std::fflush(stdout);
@@ -189,13 +190,17 @@ struct PointSetRun {
 };
 
 VerifyResult run_sets(const PointSetImpl& subject, const std::vector<std::pair<Points, std::string>>& all,
-                      const VerifyOptions& opt, const std::string& what) {
+                      const std::vector<int>& index, const VerifyOptions& opt, const std::string& what) {
   const auto start = std::chrono::steady_clock::now();
-  PointSetRun r{subject, opt, {}, {}, {}, {}};
+  PointSetRun r{subject, opt, {}, {}, {}, {}, {}};
   int not_expressed = 0;
-  for (const auto& s : all) {
-    if (subject.any_input || all_finite(s.first)) r.sets.push_back(s);
-    else ++not_expressed;
+  for (std::size_t k = 0; k < all.size(); ++k) {
+    if (subject.any_input || all_finite(all[k].first)) {
+      r.sets.push_back(all[k]);
+      r.index.push_back(k < index.size() ? index[k] : static_cast<int>(k));
+    } else {
+      ++not_expressed;
+    }
   }
   if (opt.summary) {
     std::fprintf(stderr, "verify %s against %s: %s, seed %llu%s\n", subject.name, kDelaunayQueryName, what.c_str(),
@@ -211,8 +216,8 @@ VerifyResult run_sets(const PointSetImpl& subject, const std::vector<std::pair<P
   r.rep.subject = subject.name;
   r.rep.requested = static_cast<int>(all.size());
   int shrunk = 0;
-  detail::run_guarded(
-      static_cast<int>(r.sets.size()), {opt.isolate, opt.case_seconds}, [&](int i) { return r.run(i); },
+  const int ran = detail::run_guarded(
+      static_cast<int>(r.sets.size()), {opt.isolate, opt.case_seconds, opt.seconds}, [&](int i) { return r.run(i); },
       [&](int i, const detail::CaseLine& line) {
         r.absorb(i, line);
         shrunk += line.shrunk;
@@ -220,7 +225,8 @@ VerifyResult run_sets(const PointSetImpl& subject, const std::vector<std::pair<P
       [&](int i, const Failure& f) { r.lost(i, f); });
   r.rep.not_asked = not_expressed;
   VerifyResult& res = r.res;
-  res.cases = static_cast<int>(r.sets.size());
+  res.cases = ran;
+  r.rep.stopped_by_time = ran < static_cast<int>(r.sets.size());
   res.not_expressed = not_expressed;
   if (opt.report) {
     report::RunInfo run;
@@ -278,7 +284,12 @@ VerifyResult verify(const PointSetImpl& subject, const VerifyOptions& opt) {
   rc::Random random(opt.seed ^ 0xd1b54a32d192ed03ull);
   std::vector<std::pair<Points, std::string>> sets;
   for (int i = 0; i < opt.cases; ++i) sets.push_back(gen(random.split(), rc::kNominalSize).value());
-  return run_sets(subject, sets, opt, std::to_string(opt.cases) + " point sets");
+  return run_sets(subject, sets, {}, opt, std::to_string(opt.cases) + " point sets");
+}
+
+VerifyResult verify(const PointSetImpl& subject, const std::vector<std::pair<Points, std::string>>& sets,
+                    const std::vector<int>& index, const VerifyOptions& opt) {
+  return run_sets(subject, sets, index, opt, std::to_string(sets.size()) + " point sets");
 }
 
 VerifyResult verify(const PointSetImpl& subject, const std::vector<std::filesystem::path>& files,
@@ -294,7 +305,7 @@ VerifyResult verify(const PointSetImpl& subject, const std::vector<std::filesyst
   }
   VerifyOptions o = opt;
   o.cases = static_cast<int>(sets.size());
-  return run_sets(subject, sets, o, std::to_string(sets.size()) + " point-set files");
+  return run_sets(subject, sets, {}, o, std::to_string(sets.size()) + " point-set files");
 }
 
 int replay(const PointSetImpl& subject, const std::vector<std::filesystem::path>& files) {

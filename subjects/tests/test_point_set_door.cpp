@@ -133,6 +133,16 @@ TEST(PointSetDoor, AnyInputClaimHeldOnNonFiniteSets) {
   EXPECT_EQ(prod.cases, 1);
 }
 
+TEST(PointSetDoor, SecondsStopTheRun) {
+  const auto mine = subject<kDelaunay>("production-triangles", production_triangles);
+  VerifyOptions opt = quiet_options("ps-seconds", 500);
+  opt.seconds = 1e-9;  // past before the first case
+  const VerifyResult r = verify(mine, opt);
+  EXPECT_LT(r.cases, 500);
+  EXPECT_TRUE(r.point_set_figures.stopped_by_time);
+  EXPECT_EQ(r.point_set_figures.sets, r.cases);
+}
+
 TEST(PointSetDoor, FileOfAnotherQueryRefused) {
   const auto mine = subject<kDelaunay>("production-triangles", production_triangles);
   const std::filesystem::path pair =

@@ -56,6 +56,7 @@
 //
 // Command line (verify(subject, argc, argv)):
 //   --cases N       cases to draw (default 2000)
+//   --seconds S     start no case after S seconds (default: no limit)
 //   --seed N        the seed (default 20261121)
 //   --out DIR       where counterexamples and the report go (default geomcheck-out)
 //   --max-saved N   case files saved per failing property (default 10)
@@ -152,6 +153,8 @@ struct VerifyOptions {
   /// The command that replays a saved case, its path appended (default:
   /// program + " --replay ").
   std::string replay;
+  double seconds = 0;                        ///< no case started after this many seconds (0: no limit); the rest are not run
+  std::string found_by = "verify";           ///< a saved case file's found-by line starts with it (then the subject, seed and case)
   std::string command;                       ///< for the report: the command line (default: program)
   std::string started;                       ///< for the report: the UTC start time (default: now)
 };
@@ -285,6 +288,11 @@ PointSetSubject<Q> subject(const char* name, Triangulate triangulate, PointSetCl
 /// verify(), replay() and the whole program for a point-set subject, as for
 /// a pair's (above); case files are point-set files.
 VerifyResult verify(const PointSetImpl& subject, const VerifyOptions& opt);
+/// verify() of a point-set subject on these sets (each tagged by its
+/// generator mode), set k saved under the number index[k] (its place in the
+/// seed's sequence): what the campaign runs for the point-set family.
+VerifyResult verify(const PointSetImpl& subject, const std::vector<std::pair<std::vector<Vec2>, std::string>>& sets,
+                    const std::vector<int>& index, const VerifyOptions& opt);
 VerifyResult verify(const PointSetImpl& subject, const std::vector<std::filesystem::path>& files, const VerifyOptions& opt);
 int replay(const PointSetImpl& subject, const std::vector<std::filesystem::path>& files);
 int verify(const PointSetImpl& subject, int argc, char** argv);
