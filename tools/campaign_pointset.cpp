@@ -21,14 +21,12 @@ report::PointSetReport run_delaunay_2d(const CampaignOptions& opt, const std::fi
   const int n = opt.cases > 0 ? opt.cases : kDelaunayDefaultSets;
   // Every set of the seed is drawn (the same sets in every shard); this
   // shard's are run.
-  const auto gen = gen::point_sets();
-  rc::Random random(opt.seed ^ 0xd1b54a32d192ed03ull);
+  auto all = gen::draw_point_sets(opt.seed, n);
   std::vector<std::pair<std::vector<Vec2>, std::string>> sets;
   std::vector<int> index;
   for (int i = 0; i < n; ++i) {
-    auto set = gen(random.split(), rc::kNominalSize).value();
     if (i % opt.shards != opt.shard) continue;
-    sets.push_back(std::move(set));
+    sets.push_back(std::move(all[i]));
     index.push_back(i);
   }
   VerifyOptions v;

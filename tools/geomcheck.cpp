@@ -76,23 +76,6 @@ std::string shapes_text(const CaseFile& f) {
   return o.str();
 }
 
-// The query a case file declares in its header (`query NAME`, among the
-// first lines), without reading further: it decides the file's family and
-// so its parser. Empty when the header names none (the parser then says why).
-std::string declared_query(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  char head[4096];
-  in.read(head, sizeof head);  // the header is short; a file is never read whole here
-  std::istringstream lines(std::string(head, static_cast<std::size_t>(in.gcount())));
-  std::string line;
-  while (std::getline(lines, line)) {
-    std::istringstream words(line);
-    std::string key, name;
-    if (words >> key && key == "query") return words >> name ? name : "";  // the first query line decides
-  }
-  return "";
-}
-
 /// How a replayed file came out.
 enum class Replayed { Passed, Failed, Unreadable };
 

@@ -5,6 +5,8 @@
 #include "geomcheck/detail/text_format.hpp"
 #include "geomcheck/pointset_file.hpp"
 
+#include <sstream>
+#include <fstream>
 #include <algorithm>
 
 namespace geomcheck {
@@ -245,5 +247,19 @@ std::string write_case(const CaseFile& c) {
 }
 
 ParseResult parse_case(std::string_view text) { return Parser().run(text, kMaxCaseFileBytes); }
+
+std::string declared_query(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  char head[4096];
+  in.read(head, sizeof head);  // the header is short; a file is never read whole here
+  std::istringstream lines(std::string(head, static_cast<std::size_t>(in.gcount())));
+  std::string line;
+  while (std::getline(lines, line)) {
+    std::istringstream words(line);
+    std::string key, name;
+    if (words >> key && key == "query") return words >> name ? name : "";  // the first query line decides
+  }
+  return "";
+}
 
 }  // namespace geomcheck

@@ -1,5 +1,5 @@
 // geomcheck — the precision table, measured: on a fixed seed, the worst
-// observed error of every bound in tolerances.hpp must lie in
+// observed error of every bound of production (each query's spec) must lie in
 // [bound / 100, bound]. Above: production is less precise than claimed.
 // Below: the bound is stale (far too loose) and must be tightened.
 #include <gtest/gtest.h>
@@ -78,7 +78,7 @@ void expect_in_range(const char* query, const char* what, double worst, double b
                           << (where.empty() ? "" : "; the worst case is saved as " + where);
   if (cases() < kCases) return;  // a partial sample: upper bounds only
   EXPECT_GE(worst, bound / 100) << query << " " << what << ": the bound is stale (worst " << worst
-                                << " is below bound/100); tighten it in tolerances.hpp and docs/tolerances.md";
+                                << " is below bound/100); tighten it in the query's spec (checks_<id>.cpp) and docs/tolerances.md";
 }
 
 template <QueryId Q>
@@ -91,7 +91,7 @@ void check_table() {
   for (int k = 0; k < 6; ++k) expect_in_range(n, kMetric[k], w.v[k], bound_of(t, k), w.where[k]);
 }
 
-// One test per registered query (its row of tolerances.hpp).
+// One test per registered query (its row of bounds, in its spec).
 #define GEOMCHECK_X(id, kind, A, B, summary) \
   TEST(precision, id) { check_table<QueryId::id>(); }
 GEOMCHECK_QUERY_LIST(GEOMCHECK_X)

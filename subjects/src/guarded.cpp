@@ -68,6 +68,14 @@ int parse_verify_command(int argc, char** argv, const std::string& about, const 
   return -1;
 }
 
+std::string replay_prefix(const VerifyOptions& opt) {
+  return opt.replay.empty() ? shell_quote(opt.program) + " --replay " : opt.replay;
+}
+
+std::string replay_command(const VerifyOptions& opt, const std::filesystem::path& path) {
+  return replay_prefix(opt) + shell_quote(path.string());
+}
+
 std::string shell_quote(const std::string& word) {
   const bool plain = !word.empty() && word.find_first_not_of("ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz"
                                                             "0123456789_-+./:=@%,") == std::string::npos;
@@ -111,38 +119,66 @@ bool case_line_from_text(const std::string& text, int& i, CaseLine& line) {
   return true;
 }
 
-int run_guarded(int n, const GuardOptions& opt, const std::function<CaseLine(int)>& run,
-                const std::function<void(int, const CaseLine&)>& absorb,
-                const std::function<void(int, const Failure&)>& lost) {
+int run_guarded(int n, const GuardOptions& opt, const CaseSteps& steps) {
   const auto start = std::chrono::steady_clock::now();
   const auto expired = [&] {
     return opt.seconds > 0 && std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() > opt.seconds;
   };
+  const auto whole = [&](int i) {  // check, save, count
+    CaseLine line = steps.check(i);
+    line.files = steps.save(i, line, true);
+    return line;
+  };
   int next = 0;
   while (next < n && !expired()) {
-    int fds[2];
-    const pid_t pid = opt.isolate && ::pipe(fds) == 0 ? ::fork() : -1;
+    std::fflush(nullptr);  // nothing buffered is written twice, by the child too
+    int fds[2] = {-1, -1};
+    pid_t pid = -1;
+    if (opt.isolate && ::pipe(fds) == 0) {
+      pid = ::fork();
+      if (pid < 0) ::close(fds[0]), ::close(fds[1]);
+    }
     if (pid < 0) {  // no child: in process
-      for (; next < n && !expired(); ++next) absorb(next, run(next));
+      for (; next < n && !expired(); ++next) steps.absorb(next, whole(next));
       return next;
     }
-    if (pid == 0) {  // the child: a line per case
+    // The child: "C\t<line>" when a case's checks are done, "F\t<line>" when
+    // its failures are saved, "D" when every case is.
+    if (pid == 0) {
       ::close(fds[0]);
       FILE* out = ::fdopen(fds[1], "w");
-      for (int i = next; i < n && !expired(); ++i) {
-        ::alarm(opt.case_seconds);  // a subject that hangs (checks or shrink) is ended by SIGALRM
-        const CaseLine line = run(i);
-        ::alarm(0);
-        absorb(i, line);  // the child's copy: the caps of what it saves next
-        std::fprintf(out, "%s\n", case_line_text(i, line).c_str());
-        std::fflush(out);
+      int status = 0;
+      try {
+        for (int i = next; i < n && !expired(); ++i) {
+          ::alarm(opt.case_seconds);  // a subject that hangs (checks, shrink, drawing) is ended by SIGALRM
+          CaseLine line = steps.check(i);
+          if (!line.properties.empty()) {
+            std::fprintf(out, "C\t%s\n", case_line_text(i, line).c_str());
+            std::fflush(out);
+            line.files = steps.save(i, line, true);
+          }
+          ::alarm(0);
+          steps.absorb(i, line);  // the child's copy: the caps of what it saves next
+          std::fprintf(out, "F\t%s\n", case_line_text(i, line).c_str());
+          std::fflush(out);
+        }
+        std::fprintf(out, "D\n");
+      } catch (const std::exception& e) {
+        std::fprintf(stderr, "verify: internal error: %s\n", e.what());
+        status = 3;
+      } catch (...) {
+        std::fprintf(stderr, "verify: internal error\n");
+        status = 3;
       }
-      std::fflush(stdout);
-      std::_Exit(0);
+      std::fflush(nullptr);
+      std::_Exit(status);
     }
     ::close(fds[1]);
     FILE* in = ::fdopen(fds[0], "r");
     std::string text;
+    bool done = false, pending = false;
+    int pending_i = -1;
+    CaseLine checked;
     for (int ch; (ch = std::fgetc(in)) != EOF;) {
       if (ch != '\n') {
         text += static_cast<char>(ch);
@@ -150,24 +186,44 @@ int run_guarded(int n, const GuardOptions& opt, const std::function<CaseLine(int
       }
       int i = 0;
       CaseLine line;
-      if (case_line_from_text(text, i, line)) {
-        absorb(i, line);
-        next = i + 1;
+      if (text == "D") {
+        done = true;
+      } else if (text.size() > 2 && text[1] == '\t' && case_line_from_text(text.substr(2), i, line) && i == next) {
+        if (text[0] == 'C') {
+          pending = true, pending_i = i, checked = std::move(line);
+        } else if (text[0] == 'F') {
+          steps.absorb(i, line);
+          pending = false;
+          next = i + 1;
+        }
       }
       text.clear();
     }
     std::fclose(in);
     int status = 0;
-    ::waitpid(pid, &status, 0);
-    const bool finished = WIFEXITED(status) && WEXITSTATUS(status) == 0 && expired();
-    if (next < n && !finished) {  // the child ended before its cases did (a subject's own exit(0) too)
-      const bool hung = WIFSIGNALED(status) && WTERMSIG(status) == SIGALRM;
-      const std::string how = WIFSIGNALED(status) ? std::string("signal ") + std::to_string(WTERMSIG(status))
-                                                  : "exit status " + std::to_string(WEXITSTATUS(status));
-      lost(next, hung ? Failure{"subject-hung", "no answer within " + std::to_string(opt.case_seconds) + " s"}
-                      : Failure{"subject-crashed", "the subject ended the process (" + how + ")"});
-      ++next;
+    const bool waited = ::waitpid(pid, &status, 0) == pid;
+    if (done || next >= n) continue;
+    if (waited && WIFEXITED(status) && WEXITSTATUS(status) == 0) {
+      if (expired()) break;  // the child stopped by the clock
     }
+    const bool hung = waited && WIFSIGNALED(status) && WTERMSIG(status) == SIGALRM;
+    const bool harness = waited && WIFEXITED(status) && WEXITSTATUS(status) == 3;
+    const std::string how = !waited                ? std::string("its status is unknown")
+                            : WIFSIGNALED(status) ? "signal " + std::to_string(WTERMSIG(status))
+                                                  : "exit status " + std::to_string(WEXITSTATUS(status));
+    if (pending && pending_i == next && !harness) {
+      // The checks were done: the subject ended the child while its
+      // failures were being saved (asked again to shrink or draw them).
+      std::fprintf(stderr, "verify: case %d: the subject %s while its failure was being shrunk or drawn; saved as found\n",
+                   next, hung ? "hung" : ("ended the process (" + how + ")").c_str());
+      checked.files = steps.save(next, checked, false);
+      steps.absorb(next, checked);
+    } else {
+      steps.lost(next, harness  ? Failure{"harness-error", "the harness failed on this case (" + how + "; its message is on stderr)"}
+                       : hung   ? Failure{"subject-hung", "no answer within " + std::to_string(opt.case_seconds) + " s"}
+                                : Failure{"subject-crashed", "the subject ended the process (" + how + ")"});
+    }
+    ++next;
   }
   return next;
 }

@@ -39,20 +39,38 @@ struct GuardOptions {
   double seconds = 0;           ///< no case started after this many seconds (0: no limit)
 };
 
-/// Runs case i for every i in [0, n): `run(i)` checks the case (and saves
-/// its failures, within the caps its process has counted), and `absorb(i,
-/// line)` counts what it gave. With `isolate`, run() is called in a child
-/// process and absorb() both there (so that the child's caps grow) and in
-/// the parent, from the child's line; when the child dies (a signal: a
-/// segfault, an abort) or gives no answer within case_seconds, the case is
-/// handed to `lost(i, failure)` ("subject-crashed" or "subject-hung") in the
-/// parent, and a new child goes on after it. Without `isolate`, run() and
-/// absorb() in this process: the subject's state changes stay, and a crash
-/// ends the run. With opt.seconds, no case is started once that many seconds
-/// have passed. Returns the number of cases run (n unless stopped by time).
-int run_guarded(int n, const GuardOptions& opt, const std::function<CaseLine(int)>& run,
-                 const std::function<void(int, const CaseLine&)>& absorb,
-                 const std::function<void(int, const Failure&)>& lost);
+/// The steps of one case, as the family runs them.
+struct CaseSteps {
+  /// The checks of case i: its failing properties, its figures and the
+  /// subject's time (no case file saved yet).
+  std::function<CaseLine(int)> check;
+  /// Saves the failures of case i (line.properties, capped): the case file
+  /// of each (empty: not saved), shrunk on the way unless `ask_subject` is
+  /// false (the subject is not asked again: it crashed or hung while they
+  /// were being saved); counts the shrunk ones into line.shrunk.
+  std::function<std::vector<std::string>(int, CaseLine&, bool ask_subject)> save;
+  /// Counts what case i gave (its figures, failures and case files).
+  std::function<void(int, const CaseLine&)> absorb;
+  /// Case i ended its child before its checks were done ("subject-crashed",
+  /// "subject-hung", or "harness-error" when the harness itself failed
+  /// there): saves it without asking the subject, and counts it.
+  std::function<void(int, const Failure&)> lost;
+};
+
+/// Runs every case i in [0, n): check, save, absorb. With opt.isolate, in a
+/// child process, so that a subject that crashes (a signal: a segfault, an
+/// abort) or gives no answer within case_seconds fails its case instead of
+/// ending the run; the child sends the parent a line when a case's checks
+/// are done and another when its failures are saved, so that a subject
+/// that dies while its failure is being shrunk or drawn loses nothing:
+/// the case's checks are counted and its failures saved as found. A new
+/// child goes on after a lost case. absorb() runs in the child too (its
+/// caps of what it saves next) and in the parent from the child's lines.
+/// Without isolate (or without fork), in this process: the subject's state
+/// changes stay, and a crash ends the run. With opt.seconds, no case is
+/// started once that many seconds have passed. Returns the number of cases
+/// run (n unless stopped by time).
+int run_guarded(int n, const GuardOptions& opt, const CaseSteps& steps);
 
 /// Parses verify()'s command line (verify.hpp's options) into `opt` and
 /// `replays`; `about` heads --help, `unit` names what is drawn ("cases",
@@ -61,6 +79,11 @@ int run_guarded(int n, const GuardOptions& opt, const std::function<CaseLine(int
 int parse_verify_command(int argc, char** argv, const std::string& about, const std::string& unit,
                          const std::string& max_saved_help, VerifyOptions& opt,
                          std::vector<std::filesystem::path>& replays);
+
+/// The command that replays a saved case, less its path (opt.replay, or the
+/// program with --replay), and with it.
+std::string replay_prefix(const VerifyOptions& opt);
+std::string replay_command(const VerifyOptions& opt, const std::filesystem::path& path);
 
 /// `word` quoted for a POSIX shell where it needs it.
 std::string shell_quote(const std::string& word);

@@ -28,14 +28,8 @@ namespace {
 
 using detail::shell_quote;
 
-/// The replay command of a saved case, less its path.
-std::string replay_prefix(const VerifyOptions& opt) {
-  return opt.replay.empty() ? shell_quote(opt.program) + " --replay " : opt.replay;
-}
-/// The replay command of a saved case.
-std::string replay_command(const VerifyOptions& opt, const std::filesystem::path& path) {
-  return replay_prefix(opt) + shell_quote(path.string());
-}
+using detail::replay_command;
+using detail::replay_prefix;
 
 /// check_all, with a subject that throws failing the case instead of
 /// ending the run.
@@ -328,14 +322,17 @@ VerifyResult run_cases(const ImplOf<Q>& subject, const std::vector<Tagged<typena
     std::fflush(stdout);
     return path;
   };
-  // Every property, the figures of the report, one call timed, and each
-  // failure saved.
-  auto run = [&](int i) {
+  // Every property, the figures of the report and one call timed; the
+  // failures kept for their pages (the same process saves them next).
+  int checked_case = -1;
+  std::vector<Failure> checked_failures;
+  auto check = [&](int i) {
     detail::CaseLine line;
     const Case& c = cases[i].first;
     bool answered = false;
     const Evaluation e = truth_of<Q>(c, subject, &answered);
-    const std::vector<Failure> failures = guarded_every(c, subject, answered ? &e : nullptr);
+    checked_failures = guarded_every(c, subject, answered ? &e : nullptr);
+    checked_case = i;
     try {
       const auto t0 = std::chrono::steady_clock::now();
       const bool hit = Spec<Q>::hit(c, subject);
@@ -344,21 +341,28 @@ VerifyResult run_cases(const ImplOf<Q>& subject, const std::vector<Tagged<typena
     } catch (...) {
     }
     line.figures = report::to_json(e);
-    shrunk = 0;
-    for (const Failure& f : failures) {
-      line.properties.push_back(f.property);
-      line.files.push_back(save(i, f, true).string());
-    }
-    line.shrunk = shrunk;
+    for (const Failure& f : checked_failures) line.properties.push_back(f.property);
     return line;
+  };
+  auto save_all = [&](int i, detail::CaseLine& line, bool ask_subject) {
+    std::vector<std::string> files;
+    shrunk = 0;
+    for (std::size_t k = 0; k < line.properties.size(); ++k) {
+      const Failure f = checked_case == i && k < checked_failures.size()
+                            ? checked_failures[k]
+                            : Failure{line.properties[k], "(the subject ended the process while this failure was being shrunk)"};
+      files.push_back(save(i, f, ask_subject).string());
+    }
+    line.shrunk += shrunk;
+    return files;
   };
   auto absorb = [&](int i, const detail::CaseLine& line) { tally.add(Q, i, line); };
   auto lost = [&](int i, const Failure& f) {
     ++tally.rep.cases;  // run, and failed without an answer to count
     tally.fail(i, {f.property}, {save(i, f, false).string()});
   };
-  const int ran = detail::run_guarded(static_cast<int>(cases.size()), {opt.isolate, opt.case_seconds, opt.seconds}, run,
-                                      absorb, lost);
+  const int ran = detail::run_guarded(static_cast<int>(cases.size()), {opt.isolate, opt.case_seconds, opt.seconds},
+                                      {check, save_all, absorb, lost});
   VerifyResult& res = tally.res;
   res.cases = ran;
   tally.rep.stopped_by_time = ran < static_cast<int>(cases.size());
@@ -443,11 +447,11 @@ int verify_program(const ImplOf<Q>& subject, int argc, char** argv) {
       opt, replays);
   if (rc >= 0) return rc;
   if (!replays.empty()) {
-    for (const auto& path : replays) {  // a file of another query is a usage error
-      const ParseResult pr = load_case(path);
-      if (pr.ok() && pr.value.query != Q) {
+    for (const auto& path : replays) {  // a file of another query (of any family) is a usage error
+      const std::string q = declared_query(path);
+      if (!q.empty() && q != info(Q).name) {
         std::fprintf(stderr, "%s: %s is a case of %s; %s verifies %s\n", opt.program.c_str(), path.string().c_str(),
-                     info(pr.value.query).name, subject.name, info(Q).name);
+                     q.c_str(), subject.name, info(Q).name);
         return 2;
       }
     }

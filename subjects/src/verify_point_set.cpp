@@ -8,6 +8,7 @@
 #include <fstream>
 #include <iterator>
 #include <sstream>
+#include <stdexcept>
 #include <system_error>
 
 #include "geomcheck/pointset_file.hpp"
@@ -22,19 +23,6 @@ namespace geomcheck {
 namespace {
 
 using Points = std::vector<Vec2>;
-
-/// The query a case file declares ("" when it declares none it can read).
-std::string declared_query_of(const std::filesystem::path& path) {
-  std::ifstream in(path);
-  std::string line;
-  while (std::getline(in, line)) {
-    std::istringstream words(line);
-    std::string first, second;
-    if (!(words >> first) || first[0] == '#') continue;
-    if (first == "query" && (words >> second)) return second;
-  }
-  return "";
-}
 
 /// One set's figures on the child's line: a report of that set alone
 /// (report::to_json), merged by the parent (report::merge_into).
@@ -61,7 +49,7 @@ Points without(const Points& p, std::size_t from, std::size_t count) {
 std::size_t shrink_set(Points& p, const PointSetImpl& subject, const std::string& property, int budget) {
   const std::size_t before = p.size();
   auto fails = [&](const Points& q) {
-    const PointSetOutcome o = check_point_set(q, subject);
+    const PointSetOutcome o = check_point_set(q, subject, static_cast<std::size_t>(-1), false);
     return o.asked && o.failure && o.failure->property == property;
   };
   for (std::size_t run = std::max<std::size_t>(1, p.size() / 2); budget > 0 && !p.empty();) {
@@ -89,14 +77,13 @@ struct PointSetRun {
   const VerifyOptions& opt;
   std::vector<std::pair<Points, std::string>> sets;  // asked sets and their tags
   std::vector<int> index;                            // the number each asked set is saved under
+  int checked_case = -1;                             // the set check() last ran, and its failure
+  CheckResult checked_failure;
   report::PointSetReport rep;
   VerifyResult res;
   std::map<std::string, int> saved_of_property;
 
-  std::string replay_command(const std::filesystem::path& path) const {
-    return (opt.replay.empty() ? detail::shell_quote(opt.program) + " --replay " : opt.replay) +
-           detail::shell_quote(path.string());
-  }
+  std::string replay_command(const std::filesystem::path& path) const { return detail::replay_command(opt, path); }
 
   /// Saves failing set i (shrunk unless the subject crashed) with its page.
   std::string save(int i, const Failure& f, bool ask_subject, int& shrunk) {
@@ -108,12 +95,12 @@ struct PointSetRun {
       if (opt.shrink_budget > 0) {
         const std::size_t dropped = shrink_set(p, subject, f.property, 4 * opt.shrink_budget);
         if (dropped > 0) ++shrunk;
-        const PointSetOutcome o = check_point_set(p, subject);
+        const PointSetOutcome o = check_point_set(p, subject, static_cast<std::size_t>(-1), false);
         if (o.failure) shown = *o.failure;
         if (dropped > 0) shown.detail += " (shrunk: " + std::to_string(dropped) + " points dropped)";
         drawn = o.triangles;
       } else {
-        drawn = check_point_set(p, subject).triangles;
+        drawn = check_point_set(p, subject, static_cast<std::size_t>(-1), false).triangles;
       }
     }
     const std::filesystem::path dir = opt.out / kDelaunayQueryName;
@@ -143,17 +130,30 @@ struct PointSetRun {
     return path.string();
   }
 
-  detail::CaseLine run(int i) {
+  /// The checks of set i (its failure kept for the page: the same process
+  /// saves it next).
+  detail::CaseLine check(int i) {
     detail::CaseLine line;
     const Points& p = sets[i].first;
     const PointSetOutcome o = check_point_set(p, subject);
     line.ns = std::isfinite(o.subject_us) ? o.subject_us * 1e3 : NAN;
     line.figures = figures_text(sets[i].second, classify_point_set(p), p.size(), o);
-    if (o.failure) {
-      line.properties.push_back(o.failure->property);
-      line.files.push_back(save(i, *o.failure, true, line.shrunk));
-    }
+    checked_case = i;
+    checked_failure = o.failure;
+    if (o.failure) line.properties.push_back(o.failure->property);
     return line;
+  }
+
+  /// Saves set i's failures (shrunk when the subject may be asked again).
+  std::vector<std::string> save_all(int i, detail::CaseLine& line, bool ask_subject) {
+    std::vector<std::string> files;
+    for (const std::string& property : line.properties) {
+      const Failure f = checked_case == i && checked_failure && checked_failure->property == property
+                            ? *checked_failure
+                            : Failure{property, "(the subject ended the process while this failure was being shrunk)"};
+      files.push_back(save(i, f, ask_subject, line.shrunk));
+    }
+    return files;
   }
 
   void absorb(int i, const detail::CaseLine& line) {
@@ -185,19 +185,23 @@ struct PointSetRun {
     ++rep.sets;
     rep.points += sets[i].first.size();
     rep.modes[sets[i].second]++;
+    rep.kinds[std::string(classify_point_set(sets[i].first))]++;
     fail(i, {f.property}, {file});
   }
 };
 
 VerifyResult run_sets(const PointSetImpl& subject, const std::vector<std::pair<Points, std::string>>& all,
                       const std::vector<int>& index, const VerifyOptions& opt, const std::string& what) {
+  if (!index.empty() && index.size() != all.size())
+    throw std::invalid_argument("verify: " + std::to_string(index.size()) + " numbers for " + std::to_string(all.size()) +
+                                " point sets");
   const auto start = std::chrono::steady_clock::now();
-  PointSetRun r{subject, opt, {}, {}, {}, {}, {}};
+  PointSetRun r{subject, opt, {}, {}, -1, {}, {}, {}, {}};
   int not_expressed = 0;
   for (std::size_t k = 0; k < all.size(); ++k) {
     if (subject.any_input || all_finite(all[k].first)) {
       r.sets.push_back(all[k]);
-      r.index.push_back(k < index.size() ? index[k] : static_cast<int>(k));
+      r.index.push_back(index.empty() ? static_cast<int>(k) : index[k]);
     } else {
       ++not_expressed;
     }
@@ -216,13 +220,15 @@ VerifyResult run_sets(const PointSetImpl& subject, const std::vector<std::pair<P
   r.rep.subject = subject.name;
   r.rep.requested = static_cast<int>(all.size());
   int shrunk = 0;
-  const int ran = detail::run_guarded(
-      static_cast<int>(r.sets.size()), {opt.isolate, opt.case_seconds, opt.seconds}, [&](int i) { return r.run(i); },
-      [&](int i, const detail::CaseLine& line) {
-        r.absorb(i, line);
-        shrunk += line.shrunk;
-      },
-      [&](int i, const Failure& f) { r.lost(i, f); });
+  detail::CaseSteps steps;
+  steps.check = [&](int i) { return r.check(i); };
+  steps.save = [&](int i, detail::CaseLine& line, bool ask) { return r.save_all(i, line, ask); };
+  steps.absorb = [&](int i, const detail::CaseLine& line) {
+    r.absorb(i, line);
+    shrunk += line.shrunk;
+  };
+  steps.lost = [&](int i, const Failure& f) { r.lost(i, f); };
+  const int ran = detail::run_guarded(static_cast<int>(r.sets.size()), {opt.isolate, opt.case_seconds, opt.seconds}, steps);
   r.rep.not_asked = not_expressed;
   VerifyResult& res = r.res;
   res.cases = ran;
@@ -268,7 +274,7 @@ VerifyResult run_sets(const PointSetImpl& subject, const std::vector<std::pair<P
 
 /// The point-set file at `path`, or why not (also for a case file of another query).
 std::optional<std::string> load_set(const std::filesystem::path& path, PointSetFile& f) {
-  const std::string q = declared_query_of(path);
+  const std::string q = declared_query(path);
   if (!q.empty() && q != kDelaunayQueryName) return "a case of " + q + ", not of " + kDelaunayQueryName;
   const PointSetParseResult pr = load_point_set(path);
   if (!pr.ok()) return pr.error;
@@ -280,10 +286,7 @@ std::optional<std::string> load_set(const std::filesystem::path& path, PointSetF
 
 VerifyResult verify(const PointSetImpl& subject, const VerifyOptions& opt) {
   // The campaign's derivation: the same seed draws the same sets there.
-  const auto gen = gen::point_sets();
-  rc::Random random(opt.seed ^ 0xd1b54a32d192ed03ull);
-  std::vector<std::pair<Points, std::string>> sets;
-  for (int i = 0; i < opt.cases; ++i) sets.push_back(gen(random.split(), rc::kNominalSize).value());
+  const auto sets = gen::draw_point_sets(opt.seed, opt.cases);
   return run_sets(subject, sets, {}, opt, std::to_string(opt.cases) + " point sets");
 }
 
@@ -344,7 +347,7 @@ int verify(const PointSetImpl& subject, int argc, char** argv) {
   if (rc >= 0) return rc;
   if (!replays.empty()) {
     for (const auto& path : replays) {  // a file of another query is a usage error
-      const std::string q = declared_query_of(path);
+      const std::string q = declared_query(path);
       if (!q.empty() && q != kDelaunayQueryName) {
         std::fprintf(stderr, "%s: %s is a case of %s; %s verifies %s\n", opt.program.c_str(), path.string().c_str(),
                      q.c_str(), subject.name, kDelaunayQueryName);

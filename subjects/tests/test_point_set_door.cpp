@@ -7,9 +7,11 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <chrono>
 #include <csignal>
 #include <filesystem>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "geomcheck/pointset_file.hpp"
@@ -141,6 +143,47 @@ TEST(PointSetDoor, SecondsStopTheRun) {
   EXPECT_LT(r.cases, 500);
   EXPECT_TRUE(r.point_set_figures.stopped_by_time);
   EXPECT_EQ(r.point_set_figures.sets, r.cases);
+}
+
+TEST(PointSetDoor, SecondsStopTheChildToo) {
+  const auto slow = subject<kDelaunay>("slow", [](const Points& p) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    return production_triangles(p);
+  });
+  VerifyOptions opt = quiet_options("ps-seconds-child", 200);
+  opt.seconds = 0.3;
+  const VerifyResult r = verify(slow, opt);
+  EXPECT_GT(r.cases, 0);
+  EXPECT_LT(r.cases, 200);
+  EXPECT_EQ(r.failures, 0) << "stopping by the clock is no failure";
+  EXPECT_TRUE(r.point_set_figures.stopped_by_time);
+}
+
+// A subject that fails on a set and crashes on the smaller sets its shrink
+// asks: the set's failure is counted and saved as found, not lost to the
+// crash.
+TEST(PointSetDoor, CrashWhileShrinkingLosesNothing) {
+  const std::filesystem::path dir = std::filesystem::path(::testing::TempDir()) / "ps-crash-shrink-files";
+  std::filesystem::create_directories(dir);
+  PointSetFile f;
+  for (int x = 0; x < 5; ++x)
+    for (int y = 0; y < 4; ++y) f.points.push_back({x + 0.25 * y, y + 0.125 * x * x});
+  f.found_by = "hand";
+  std::string err;
+  ASSERT_TRUE(save_point_set(dir / "grid.case", f, err)) << err;
+  const auto fragile = subject<kDelaunay>("crashes-on-small-sets", [](const Points& p) {
+    if (p.size() < 20) std::raise(SIGSEGV);
+    auto t = production_triangles(p);
+    t.pop_back();
+    return t;
+  });
+  const VerifyResult r = verify(fragile, {dir / "grid.case"}, quiet_options("ps-crash-shrink"));
+  EXPECT_EQ(r.cases, 1);
+  EXPECT_EQ(r.failures, 1);
+  EXPECT_EQ(r.by_property.count("valid"), 1u);
+  EXPECT_EQ(r.by_property.count("subject-crashed"), 0u);
+  ASSERT_EQ(r.saved.size(), 1u);
+  EXPECT_EQ(load_point_set(r.saved.front()).value.points.size(), 20u) << "saved as found";
 }
 
 TEST(PointSetDoor, FileOfAnotherQueryRefused) {

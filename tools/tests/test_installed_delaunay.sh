@@ -40,7 +40,7 @@ if command -v python3 > /dev/null; then
 fi
 replay=$(grep -m1 '  replay: ' "$work/run.log" | sed 's/^  replay: //')
 [ -n "$replay" ] || fail "no replay command printed"
-$replay > "$work/replay.log" 2>&1
+eval "$replay" > "$work/replay.log" 2>&1
 rstatus=$?
 cat "$work/replay.log"
 [ "$rstatus" -eq 1 ] && grep -q '^FAIL ' "$work/replay.log" || fail "the printed replay command does not reproduce the failure"

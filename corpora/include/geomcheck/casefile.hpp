@@ -166,6 +166,12 @@ std::string write_case(const CaseFile& c);
 /// Parses case-file text. Never throws.
 ParseResult parse_case(std::string_view text);
 
+/// The query a case file of any family declares in its header (its first
+/// `query NAME` line, among the first 4 KiB), without parsing the file: it
+/// decides the file's family and so its parser. Empty when the header names
+/// none or the file cannot be read (the parser then says why).
+std::string declared_query(const std::filesystem::path& path);
+
 /// Reads and parses a file. A parse error reads "<path>: line N: ...";
 /// an unreadable file "cannot open case file '<path>': <reason>" (error_line 0).
 ParseResult load_case(const std::filesystem::path& path);

@@ -185,4 +185,12 @@ rc::Gen<Tagged<Points>> point_sets() {
   return rc::gen::join(rc::gen::elementOf(gens));
 }
 
+std::vector<Tagged<Points>> draw_point_sets(std::uint64_t seed, int n) {
+  const auto gen = point_sets();
+  rc::Random random(seed ^ 0xd1b54a32d192ed03ull);
+  std::vector<Tagged<Points>> sets;
+  for (int i = 0; i < n; ++i) sets.push_back(gen(random.split(), rc::kNominalSize).value());
+  return sets;
+}
+
 }  // namespace geomcheck::gen

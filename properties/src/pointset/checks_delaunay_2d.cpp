@@ -106,11 +106,18 @@ PointSetOutcome check_point_set(const std::vector<Vec2>& p, const PointSetImpl& 
     return o;
   }
   DelaunayTriangulation t;
+  IndexTriangles answered;  // a user subject's triangles, as given
   std::string index_error;
   const auto t0 = Clock::now();
+  auto t1 = t0;
   try {
-    if (subject.triangles) t = triangulation_of(p, subject.triangles(p), &index_error);
-    else t = subject.triangulate(p);
+    if (subject.triangles) {
+      answered = subject.triangles(p);
+      t1 = Clock::now();
+    } else {
+      t = subject.triangulate(p);
+      t1 = Clock::now();
+    }
   } catch (const DelaunayInputError& e) {
     o.answer = std::string("rejected: ") + e.what();
     if (finite) o.failure = Failure{"finite-input-rejected", e.what()};
@@ -120,16 +127,21 @@ PointSetOutcome check_point_set(const std::vector<Vec2>& p, const PointSetImpl& 
     return o;
   } catch (const std::exception& e) {
     o.answer = std::string("threw: ") + e.what();
-    o.failure = Failure{"threw", e.what()};
+    o.failure = Failure{"subject-threw", e.what()};
     return o;
   } catch (...) {
     o.answer = "threw a non-standard exception";
-    o.failure = Failure{"threw", o.answer};
+    o.failure = Failure{"subject-threw", o.answer};
     return o;
   }
-  const auto t1 = Clock::now();
+  if (subject.triangles && !finite) {  // answered input it claims to reject: no structure to complete
+    o.answer = std::to_string(answered.size()) + " triangles";
+    o.failure = Failure{"non-finite-input-accepted", "point " + std::to_string(first_bad) + " is not finite"};
+    return o;
+  }
+  if (subject.triangles) t = triangulation_of(p, answered, &index_error);
   o.answer = t.summary();
-  o.triangles = t.triangles;
+  o.triangles = subject.triangles ? answered : t.triangles;
   if (!finite) {
     o.failure = Failure{"non-finite-input-accepted", "point " + std::to_string(first_bad) + " is not finite"};
     return o;

@@ -72,6 +72,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <iterator>
 #include <map>
 #include <memory>
 #include <optional>
@@ -244,10 +245,13 @@ GEOMCHECK_QUERY_LIST(GEOMCHECK_X)
 //   return geomcheck::verify(mine, argc, argv);
 //
 // The callable answers the Delaunay triangles as triples of input indices
-// (any integer type, any container of three), counter-clockwise. They are
+// (any integer type, any container of three), counter-clockwise; an index
+// outside the input, or a triangle of other than three entries, fails
+// `valid`. Equal points may be named by any of their indices (each is read
+// as the smallest index of its coordinates). They are
 // held to the exact validity checker and to CGAL's triangulation
-// (pointset_checks.hpp: every distinct point a vertex, duplicates one
-// vertex, no triangle for collinear input, every triangle counter-clockwise
+// (pointset_checks.hpp: every distinct point a vertex, no triangle for
+// collinear input, every triangle counter-clockwise
 // and non-degenerate, every interior edge locally Delaunay, the boundary the
 // convex hull with its collinear points, the same triangles as CGAL's but
 // for cocircular choices). verify() draws point sets from the campaign's
@@ -256,7 +260,8 @@ GEOMCHECK_QUERY_LIST(GEOMCHECK_X)
 // failing set is shrunk (points removed while it fails the same property),
 // saved as a point-set file (corpora/README.md) with a page drawing the
 // subject's triangles, and replays with `--replay FILE`. The command line,
-// the exit status and the report are those of a pair's verify().
+// the exit status and the report are those of a pair's verify() (the cap of
+// saved files is per property only: a point set has no generator mode cap).
 
 /// What a point-set subject claims beyond a valid triangulation.
 struct PointSetClaims {
@@ -277,9 +282,26 @@ template <PointSetQueryId Q, class Triangulate>
 PointSetSubject<Q> subject(const char* name, Triangulate triangulate, PointSetClaims claims = {}) {
   PointSetSubject<Q> s{{name, {}, {}, claims.any_input}};
   s.triangles = [f = std::move(triangulate)](const std::vector<Vec2>& points) {
+    // An index outside [0, 2^32 - 1) (negative, or too large to be one)
+    // becomes 2^32 - 1, and a triangle of other than three entries three of
+    // them: the checks then say the triangle names no input point.
+    constexpr std::uint32_t kBad = 0xFFFFFFFFu;
+    const auto index = [](auto v) -> std::uint32_t {
+      using V = std::decay_t<decltype(v)>;
+      if constexpr (std::is_signed_v<V>) {
+        if (v < 0) return kBad;
+      }
+      return static_cast<unsigned long long>(v) >= kBad ? kBad : static_cast<std::uint32_t>(v);
+    };
     IndexTriangles out;
-    for (const auto& t : f(points))
-      out.push_back({static_cast<std::uint32_t>(t[0]), static_cast<std::uint32_t>(t[1]), static_cast<std::uint32_t>(t[2])});
+    for (const auto& t : f(points)) {
+      if (std::size(t) != 3) {
+        out.push_back({kBad, kBad, kBad});
+        continue;
+      }
+      const auto at = std::begin(t);
+      out.push_back({index(at[0]), index(at[1]), index(at[2])});
+    }
     return out;
   };
   return s;

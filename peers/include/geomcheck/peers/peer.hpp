@@ -47,7 +47,8 @@ inline CastHit starts_inside_at(Vec3 point) {
 
 /// Declares peer_<engine><Q>() for every registered query Q (put in the
 /// engine's header: `GEOMCHECK_DECLARE_PEER(ode)`), defined in its sources
-/// by explicit specialization.
+/// (a template chosen by the query's entry point and shapes, instantiated
+/// for every registered query).
 #define GEOMCHECK_DECLARE_PEER(engine)                  \
   namespace geomcheck::peers {                          \
   template <QueryId Q>                                  \

@@ -82,6 +82,10 @@ struct PointSetMode {
 std::vector<PointSetMode> point_set_modes();
 /// A point set of any mode, tagged by its mode.
 rc::Gen<Tagged<std::vector<Vec2>>> point_sets();
+/// The first n point sets of a run with this seed (point_sets(), each
+/// tagged by its mode): what the campaign and verify() of a point-set
+/// subject draw, so that one seed gives both the same sets.
+std::vector<Tagged<std::vector<Vec2>>> draw_point_sets(std::uint64_t seed, int n);
 
 // --- meshes (collide_cylinder_mesh) ------------------------------------------
 /// A cylinder and a mesh built around a cylinder/triangle case of

@@ -1,6 +1,7 @@
 // geomcheck — the checks of the point-set family (delaunay_2d), written once
-// for every subject and every runner: the campaign, verify(), replay, the
-// fuzz target and the property suite call check_point_set.
+// for every subject and every runner: the campaign, verify(), replay and the
+// fuzz target call check_point_set (the property suite drives the oracles
+// themselves, and their teeth).
 //
 // A subject is a PointSetImpl: a name and triangulate(points) ->
 // DelaunayTriangulation. Production answers the whole structure
@@ -11,7 +12,7 @@
 // both are held to the same exact checker.
 //
 // The properties of one point set, the first failing one reported:
-//   threw                      the subject threw on input it accepts
+//   subject-threw              the subject threw (anything but a rejection)
 //   finite-input-rejected      it threw DelaunayInputError on finite input
 //   non-finite-input-accepted  it answered input with a NaN or an infinity
 //                              (only a subject that claims any input:
@@ -78,7 +79,7 @@ struct PointSetOutcome {
   CheckResult failure;       ///< the first failing property, if any
   bool asked = true;         ///< false: the subject does not claim this input (not asked)
   std::string answer;        ///< the subject's answer in words (DelaunayTriangulation::summary, or what it threw)
-  IndexTriangles triangles;  ///< the subject's triangles (for a drawing)
+  IndexTriangles triangles;  ///< the subject's triangles as it answered them (for a drawing)
   bool cgal_differs = false; ///< triangles other than CGAL's where cocircular points allow both
   double subject_us = NAN, cgal_us = NAN;  ///< the two triangulations' times (NaN: not timed)
 };

@@ -2,11 +2,11 @@
 // query Q through one name, Spec<Q>.
 //
 // The facts live with the query: its line in the registry
-// (core/include/geomcheck/registry.hpp: id, kind, shapes), production's
+// (core/include/geomcheck/registry.hpp: id, entry point, shapes), production's
 // entry points (core/include/geomcheck/<id>.hpp), its checks, claims,
-// default case count and known-wrong variants (properties/src/checks_<id>.cpp:
-// production_of<Q>, spec_of<Q>), its generators
-// (properties/src/generators/<id>.cpp), its bounds (tolerances.hpp) and FCL's
+// default case count, bounds and known-wrong variants
+// (properties/src/checks_<id>.cpp: production_of<Q>, spec_of<Q>), its
+// generators (properties/src/generators/<id>.cpp) and FCL's
 // adapter (oracles/fcl/). The RapidCheck suites, the campaign, replay, the
 // fuzz targets and the report take Spec<Q> and nothing else
 // (docs/ARCHITECTURE.md has the checklist for a new query).

@@ -208,15 +208,15 @@
 
 #include "geomcheck/peers/peer.hpp"
 
-GEOMCHECK_DECLARE_PEER(ode)
-
-namespace geomcheck::peers {
-
 /// peer_ode<Q>(): ODE's subject of query Q (its claims above), the cases it
 /// expresses and "ODE 0.16.2"; a null subject where ODE cannot express Q
 /// (sweep_sphere_cylinder). Found from the query's entry point and shapes
 /// (src/ode.cpp), so a new query needs no code here; instantiated for every
 /// registered query there.
+GEOMCHECK_DECLARE_PEER(ode)
+
+namespace geomcheck::peers {
+
 /// ODE's build configuration, as dGetConfiguration() states it (initialises
 /// ODE on first use).
 const char* ode_configuration();
