@@ -11,6 +11,7 @@
 
 #include "geomcheck/oracles/cast_segment_cylinder.hpp"
 #include "geomcheck/oracles/engine.hpp"
+#include "geomcheck/reports/report.hpp"
 #include "geomcheck/properties/checks.hpp"
 
 namespace geomcheck::draw {
@@ -143,11 +144,7 @@ std::string num(double x) {
   return b;
 }
 
-std::string fmt3(double x) {
-  char b[32];
-  std::snprintf(b, sizeof b, "%.3g", x);
-  return b;
-}
+std::string fmt3(double x) { return report::readable(x, 3); }
 
 bool finite3(Vec3 v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
 
@@ -213,7 +210,7 @@ std::string render(const Figure (&shapes)[2], const std::vector<Mark>& marks, co
   static const char* kStroke[2] = {"#2c5aa0", "#c06a00"};
   constexpr double W = 220, M = 12;
   std::ostringstream o;
-  o << "<figure class='cx'><figcaption>" << title << "</figcaption>";
+  o << "<figure class='cx'><figcaption>" << report::readable_numbers(title) << "</figcaption>";
   // Fit: each view centred on the bounds of its finite projected points, one
   // scale for all three (the largest span of any view fits), so that the
   // views can be compared.
@@ -314,16 +311,12 @@ std::string render(const Figure (&shapes)[2], const std::vector<Mark>& marks, co
   o << zoom(marks, span_all, W);
   o << "<p class='legend'><span style='color:#2c5aa0'>&#9632; A</span> <span style='color:#c06a00'>&#9632; B</span>";
   for (const Mark& m : marks)
-    if (!m.label.empty()) o << "<br><span style='color:" << m.color << "'>&#9679; " << m.label << "</span>";
+    if (!m.label.empty()) o << "<br><span style='color:" << m.color << "'>&#9679; " << report::readable_numbers(m.label) << "</span>";
   o << "</p></figure>";
   return o.str();
 }
 
-std::string fmt(double x) {
-  char b[32];
-  std::snprintf(b, sizeof b, "%.6g", x);
-  return b;
-}
+std::string fmt(double x) { return report::readable(x, 6); }
 }  // namespace
 
 Answer answer_of(const Contact& k, const std::string& who) {

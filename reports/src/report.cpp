@@ -1,8 +1,10 @@
 #include "geomcheck/reports/report.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <fstream>
 #include <sstream>
 
@@ -65,12 +67,7 @@ std::string jnum(double x) {
   std::snprintf(b, sizeof b, "%.6g", x);
   return b;
 }
-std::string hnum(double x) {  // for a table cell: three digits, a dash for none
-  if (!std::isfinite(x)) return "&ndash;";
-  char b[32];
-  std::snprintf(b, sizeof b, "%.3g", x);
-  return b;
-}
+std::string hnum(double x) { return readable(x, 3); }  // for the page: three digits, a dash for none
 
 using Json = nlohmann::ordered_json;  // report.json keeps its keys in the order written
 
@@ -96,11 +93,16 @@ Json series_json(Series& s) {
 
 // The range of histogram bin i (Series::hist): exactly 0, below 1e-17, a
 // decade, or 1e-4 and above.
+std::string ten_to(int e) {  // "10⁻¹⁷"
+  const std::string t = readable(std::pow(10.0, e), 1);
+  const std::size_t at = t.find("\u00d7");
+  return at == std::string::npos ? t : t.substr(at + std::string("\u00d7").size());
+}
 std::string bin_range(std::size_t i) {
   if (i == 0) return "0";
-  if (i == 1) return "(0, 1e-17)";
-  if (i == 15) return "[1e-4, inf)";
-  return "[1e" + std::to_string(int(i) - 19) + ", 1e" + std::to_string(int(i) - 18) + ")";
+  if (i == 1) return "(0, " + ten_to(-17) + ")";
+  if (i == 15) return "[" + ten_to(-4) + ", \u221e)";
+  return "[" + ten_to(int(i) - 19) + ", " + ten_to(int(i) - 18) + ")";
 }
 
 // A histogram of log10(error / scale) drawn so that its tails show: bar
@@ -124,20 +126,28 @@ std::string hist_svg(const Series& s, double bound) {
     o << "<rect x='" << kLeft + i * kBin << "' y='" << kBase - bh << "' width='" << kBin - 4 << "' height='" << bh
       << "' fill='#4a78c2' data-count='" << h[i] << "'><title>" << bin_range(i) << ": " << h[i] << "</title></rect>";
   }
-  const std::pair<std::size_t, const char*> labels[] = {{0, "0"}, {1, "<1e-17"}, {3, "1e-16"}, {7, "1e-12"}, {11, "1e-8"}, {15, "≥1e-4"}};
+  const std::pair<std::size_t, std::string> labels[] = {{0, "0"},           {1, "<" + ten_to(-17)}, {3, ten_to(-16)},
+                                                        {7, ten_to(-12)}, {11, ten_to(-8)},       {15, "\u2265" + ten_to(-4)}};
   for (const auto& [i, text] : labels)
     o << "<text x='" << kLeft + i * kBin << "' y='" << kBase + 12 << "' font-size='9'>" << text << "</text>";
   if (bound > 0 && std::isfinite(bound)) {
     const double e = std::log10(bound);
     const double x = kLeft + std::clamp(e + 19, 1.0, 15.0) * kBin;
     o << "<line x1='" << x << "' y1='" << kBase - kTall - 4 << "' x2='" << x << "' y2='" << kBase + 2
-      << "' stroke='#c00' stroke-dasharray='3,2'><title>bound " << jnum(bound) << "</title></line><text x='" << x + 2
-      << "' y='" << kBase + 23 << "' font-size='9' fill='#c00'>bound " << jnum(bound) << "</text>";
+      << "' stroke='#c00' stroke-dasharray='3,2'><title>bound " << hnum(bound) << "</title></line><text x='" << x + 2
+      << "' y='" << kBase + 23 << "' font-size='9' fill='#c00'>bound " << hnum(bound) << "</text>";
   }
   o << "</svg>";
   return o.str();
 }
 
+
+/// The id of an engine's row of a query in the precision table ("q--ODE").
+std::string engine_anchor(const std::string& query, const std::string& engine) {
+  std::string id = query + "--";
+  for (char c : engine) id += std::isalnum(static_cast<unsigned char>(c)) ? c : '-';
+  return id;
+}
 
 // The precision table: production and FCL, a row each, per query.
 std::string claims_text(const QueryReport& r);
@@ -168,14 +178,14 @@ void write_precision_table(std::ostream& h, std::vector<QueryReport>& reps) {
        "<th>t</th><th>|&Delta;t|</th><th>property failures (hung / crashed / threw)</th><th>time per call</th></tr>";
   auto tri = [](Series& s) {
     if (s.v.empty()) return std::string("&ndash;");
-    return hnum(s.pct(0.5)) + " / " + hnum(s.pct(0.99)) + " / " + hnum(s.pct(1.0));
+    return hnum(s.pct(0.5)) + " /<br>" + hnum(s.pct(0.99)) + " /<br>" + hnum(s.pct(1.0));
   };
   auto rate = [&](int n, int of) { return std::to_string(n) + (of ? " (" + hnum(100.0 * n / of) + "%)" : ""); };
   auto production_row = [&](QueryReport& r, const std::string& label) {
     h << "<td class='l'>" << label << "</td><td>" << r.valid << "</td><td class='" << (r.beyond ? "bad" : "ok")
       << "'>" << rate(r.beyond, r.valid) << "</td><td>" << tri(r.depth) << "</td><td>" << tri(r.normal) << "</td><td>"
       << tri(r.point) << "</td><td>&ndash;</td><td>" << tri(r.t) << "</td><td>&ndash;</td><td>" << failures_cell(r)
-      << "</td><td>" << hnum(r.prod_ns) << " ns</td></tr>";
+      << "</td><td>" << hnum(r.prod_ns) << "&nbsp;ns</td></tr>";
   };
   auto fcl_row = [&](QueryReport& r, const std::string& label) {
     h << "<tr><td class='l'>" << label << "</td><td>" << r.fcl_ok << "</td><td class='"
@@ -199,13 +209,13 @@ void write_precision_table(std::ostream& h, std::vector<QueryReport>& reps) {
       if (fcl) fcl_row(f, "FCL" + first);
     }
     for (QueryReport& p : r.peers)
-      h << "<tr><td class='l' title=\"" << html(claims_text(p)) << "\">" << html(p.subject) << "</td><td>" << p.valid
+      h << "<tr id='" << engine_anchor(r.name, p.subject) << "'><td class='l' title=\"" << html(claims_text(p)) << "\">" << html(p.subject) << "</td><td>" << p.valid
         << " of the first " << p.cases + p.not_expressed
         << (p.not_expressed ? " (" + std::to_string(p.not_expressed) + " it cannot state)" : std::string())
         << "</td><td class='" << (p.beyond ? "bad" : "ok") << "'>"
         << rate(p.beyond, p.valid) << "</td><td>" << tri(p.depth) << "</td><td>" << tri(p.normal) << "</td><td>"
         << tri(p.point) << "</td><td>&ndash;</td><td>" << tri(p.t) << "</td><td>&ndash;</td><td>" << failures_cell(p)
-        << bugreports_cell(p) << "</td><td>" << hnum(p.prod_ns) << " ns</td></tr>";
+        << bugreports_cell(p) << "</td><td>" << hnum(p.prod_ns) << "&nbsp;ns</td></tr>";
   }
   h << "</table>";
   if (!any_fcl) return;  // the engines' paragraph: a campaign's
@@ -223,9 +233,9 @@ void write_precision_table(std::ostream& h, std::vector<QueryReport>& reps) {
 void error_row(std::ostream& h, const char* n, Series& s, double bound) {
   if (s.v.empty()) return;
   const double mx = s.pct(1.0);
-  h << "<tr><td class='l'>" << n << "</td><td>" << (bound > 0 ? jnum(bound) : std::string("&ndash;")) << "</td><td>" << s.v.size() << "</td><td>" << jnum(s.pct(0.5))
-    << "</td><td>" << jnum(s.pct(0.9)) << "</td><td>" << jnum(s.pct(0.99)) << "</td><td class='"
-    << (bound > 0 && mx > bound ? "bad" : "") << "'>" << jnum(mx) << "</td><td>" << hist_svg(s, bound) << "</td></tr>";
+  h << "<tr><td class='l'>" << n << "</td><td>" << (bound > 0 ? hnum(bound) : std::string("&ndash;")) << "</td><td>" << s.v.size() << "</td><td>" << hnum(s.pct(0.5))
+    << "</td><td>" << hnum(s.pct(0.9)) << "</td><td>" << hnum(s.pct(0.99)) << "</td><td class='"
+    << (bound > 0 && mx > bound ? "bad" : "") << "'>" << hnum(mx) << "</td><td>" << hist_svg(s, bound) << "</td></tr>";
 }
 
 // What the subject is held to, in words.
@@ -236,7 +246,7 @@ std::string claims_text(const QueryReport& r) {
   std::string t = whose + ": verdict " + (c.exact_verdict ? "exact" : "not exact") + "; depth: " + to_string(c.depth) +
                   "; point " + (c.point_in_both ? "claimed" : "not claimed") + "; touching " +
                   (c.touching_is_contact ? "is" : "is not") + " contact";
-  if (c.margin > 0) t += "; margin " + jnum(c.margin) + " * scale";
+  if (c.margin > 0) t += "; margin " + hnum(c.margin) + " * scale";
   if (*c.normal) t += std::string("; normal: ") + c.normal;
   if (*c.truth) t += std::string("; truth: ") + c.truth;
   t += "; precision: " + report::precision_text(c.precision) + " (the bounds below derive from it)";
@@ -269,7 +279,7 @@ void write_query_section(std::ostream& h, QueryReport& r, const std::filesystem:
   };
   auto num = [](double x) {
     std::ostringstream o;
-    o << jnum(x);
+    o << hnum(x);
     return o.str();
   };
   h << "<h2 id='" << r.name << "'>" << r.name << "</h2><p>" << html(r.summary) << "</p><p class='claims'>"
@@ -285,7 +295,7 @@ void write_query_section(std::ostream& h, QueryReport& r, const std::filesystem:
   row("hit rate (oracle " + num(r.valid ? double(r.truth_hits) / r.valid : NAN) + ")",
       cell(num(r.valid ? double(r.prod_hits) / r.valid : NAN)));
   row("verdict disagreements", cell(std::to_string(r.disagree)), std::to_string(r.fcl_disagree));
-  h << "<tr><td class='l'>beyond the band (" << jnum(r.tol.verdict) << " &times; scale)</td><td class='"
+  h << "<tr><td class='l'>beyond the band (" << hnum(r.tol.verdict) << " &times; scale)</td><td class='"
     << (r.beyond ? "bad" : "ok") << "'>" << r.beyond << "</td>";
   if (fcl) h << "<td class='" << (r.fcl_beyond ? "bad" : "ok") << "'>" << r.fcl_beyond << "</td>";
   h << "</tr>";
@@ -301,7 +311,7 @@ void write_query_section(std::ostream& h, QueryReport& r, const std::filesystem:
     int n = 0;
     for (const auto& kv : r.truth_stages) n += kv.second;
     for (const auto& [k, v] : r.truth_stages)
-      h << "<tr><td class='l'>" << k << "</td><td>" << v << "</td><td>" << jnum(n ? double(v) / n : NAN) << "</td></tr>";
+      h << "<tr><td class='l'>" << k << "</td><td>" << v << "</td><td>" << hnum(n ? double(v) / n : NAN) << "</td></tr>";
   }
   h << "</table><table><tr><th class='l'>error / scale</th><th>bound</th><th>n</th><th>p50</th><th>p90</th><th>p99</th><th>max</th><th>log10 histogram</th></tr>";
   error_row(h, "depth", r.depth, r.tol.depth);
@@ -324,8 +334,8 @@ void write_query_section(std::ostream& h, QueryReport& r, const std::filesystem:
     h << "<table><tr><th class='l'>depth / penetration depth</th><th>n</th><th>min</th><th>p50</th><th>p90</th>"
          "<th>p99</th><th>max</th></tr><tr><td class='l'>"
       << html(r.subject) << " (overlapping cases, penetration depth certified to 1%)</td><td>"
-      << q.v.size() << "</td><td>" << jnum(q.pct(0.0)) << "</td><td>" << jnum(q.pct(0.5)) << "</td><td>"
-      << jnum(q.pct(0.9)) << "</td><td>" << jnum(q.pct(0.99)) << "</td><td>" << jnum(q.pct(1.0))
+      << q.v.size() << "</td><td>" << hnum(q.pct(0.0)) << "</td><td>" << hnum(q.pct(0.5)) << "</td><td>"
+      << hnum(q.pct(0.9)) << "</td><td>" << hnum(q.pct(0.99)) << "</td><td>" << hnum(q.pct(1.0))
       << "</td></tr></table><p>The contact's depth is the overlap of the shapes along its normal, an upper bound "
          "of the penetration depth (1 where the normal is a minimal direction); only a depth below the "
          "penetration depth is an error (the <b>depth</b> row above).</p>";
@@ -447,8 +457,8 @@ void write_point_set_section(std::ostream& h, const PointSetReport& r) {
     << "</td></tr><tr><td class='l'>failures</td><td class='" << (clean ? "ok" : "bad") << "'>"
     << r.failures << "</td></tr><tr><td class='l'>cocircular choices other than CGAL's (legitimate)</td><td>"
     << r.cgal_choices_differ << "</td></tr><tr><td class='l'>time, " << html(r.subject) << " / CGAL (all sets)</td><td>"
-    << jnum(r.production_us / 1e3) << " ms / " << jnum(r.cgal_us / 1e3) << " ms = "
-    << jnum(r.cgal_us > 0 ? r.production_us / r.cgal_us : NAN) << "</td></tr></table>";
+    << hnum(r.production_us / 1e3) << " ms / " << hnum(r.cgal_us / 1e3) << " ms = "
+    << hnum(r.cgal_us > 0 ? r.production_us / r.cgal_us : NAN) << "</td></tr></table>";
   auto table = [&](const char* what, const std::map<std::string, int>& m) {
     h << "<table><tr><th class='l'>" << what << "</th><th>sets</th></tr>";
     for (const auto& [k, v] : m) h << "<tr><td class='l'>" << html(k) << "</td><td>" << v << "</td></tr>";
@@ -496,10 +506,10 @@ void write_mesh_section(std::ostream& h, const MeshReport& r) {
     << "<tr><td class='l'>meshes run of requested (faces)</td><td>" << r.meshes << " of " << r.requested << " ("
     << r.faces << ")" << (r.stopped_by_time ? "; stopped by --seconds" : "") << "</td></tr><tr><td class='l'>failures</td><td class='"
     << (clean ? "ok" : "bad") << "'>" << r.failures << "</td></tr><tr><td class='l'>meshes per second (checks, all threads)</td><td>"
-    << jnum(r.seconds > 0 ? r.meshes / r.seconds : NAN)
+    << hnum(r.seconds > 0 ? r.meshes / r.seconds : NAN)
     << "</td></tr><tr><td class='l'>faces separated by their boxes / decided by the engine</td><td>" << r.faces_by_box
     << " / " << r.faces_by_engine << "</td></tr><tr><td class='l'>time, production (hierarchy) / brute force</td><td>"
-    << jnum(r.production_us / 1e3) << " ms / " << jnum(r.brute_force_us / 1e3) << " ms</td></tr></table>";
+    << hnum(r.production_us / 1e3) << " ms / " << hnum(r.brute_force_us / 1e3) << " ms</td></tr></table>";
   auto table = [&](const char* what, const std::map<std::string, int>& m) {
     h << "<table><tr><th class='l'>" << what << "</th><th>meshes</th></tr>";
     for (const auto& [k, v] : m) h << "<tr><td class='l'>" << html(k) << "</td><td>" << v << "</td></tr>";
@@ -517,6 +527,101 @@ void write_mesh_section(std::ostream& h, const MeshReport& r) {
   }
 }
 
+
+/// A cell of the glance matrix: its state (ok, near: within its bounds but
+/// past half of one, bad, none: not asked), its text and its link.
+struct GlanceCell {
+  std::string state = "none", text = "not asked", href;
+};
+
+/// The largest error of r's over its bound, across depth, normal, point and
+/// t (NaN where no bounded error was measured).
+double worst_over_bound(QueryReport& r) {
+  double worst = NAN;
+  const std::pair<Series*, double> errs[] = {{&r.depth, r.tol.depth}, {&r.normal, r.tol.normal},
+                                             {&r.point, r.tol.point}, {&r.t, r.tol.t}};
+  for (const auto& [s, bound] : errs)
+    if (!s->v.empty() && bound > 0 && std::isfinite(bound))
+      worst = std::isnan(worst) ? s->pct(1.0) / bound : std::max(worst, s->pct(1.0) / bound);
+  return worst;
+}
+
+/// A subject's (or an engine's) cell: its verdicts beyond the band, its
+/// property failures and its worst error against its bound.
+GlanceCell subject_cell(QueryReport& r, const std::string& href) {
+  if (r.cases == 0) return {"none", r.not_expressed ? "cannot state it" : "not asked", href};
+  const double worst = worst_over_bound(r);
+  const bool bad = r.beyond > 0 || r.check_failures > 0 || worst > 1;
+  GlanceCell c;
+  c.href = href;
+  c.state = bad ? "bad" : (worst > 0.5 ? "near" : "ok");
+  c.text = std::string(bad ? "\u2717 " : "\u2713 ") + std::to_string(r.beyond) + " beyond the band, " +
+           std::to_string(r.check_failures) + " failing<br>worst error / bound: " +
+           (std::isnan(worst) ? std::string("\u2013") : hnum(worst)) + "<br>" +
+           std::to_string(r.valid) + " cases";
+  return c;
+}
+
+/// The matrix at the top of the page: a row per query, a column per engine
+/// (the subject, FCL where a campaign asked it, each engine of peers/), each
+/// cell coloured by its verdicts beyond the band and its worst error against
+/// its bound, and linked to the rows that detail it.
+void write_glance(std::ostream& h, std::vector<QueryReport>& reps, const std::vector<PointSetReport>& point_sets,
+                  const std::vector<MeshReport>& meshes) {
+  bool any_fcl = false;
+  std::vector<std::string> engines;
+  for (QueryReport& r : reps) {
+    any_fcl |= fcl_asked(r);
+    for (const QueryReport& p : r.peers)
+      if (std::find(engines.begin(), engines.end(), p.subject) == engines.end()) engines.push_back(p.subject);
+  }
+  std::string subject = "subject";
+  if (!reps.empty()) subject = reps.front().subject;
+  for (const QueryReport& r : reps)
+    if (r.subject != subject) subject = "subject";
+  h << "<h2 id='glance'>At a glance</h2><table class='glance'><tr><th class='l'>query</th><th>" << html(subject)
+    << "</th>" << (any_fcl ? "<th>FCL</th>" : "");
+  for (const std::string& e : engines) h << "<th>" << html(e) << "</th>";
+  h << "</tr>";
+  const std::size_t columns = 1 + (any_fcl ? 1 : 0) + engines.size();
+  auto cell = [&](const GlanceCell& c) {
+    h << "<td class='g " << c.state << "' data-state='" << c.state << "'>"
+      << (c.href.empty() ? c.text : "<a href='#" + c.href + "'>" + c.text + "</a>") << "</td>";
+  };
+  for (QueryReport& r : reps) {
+    h << "<tr><td class='l'><a href='#" << r.name << "'>" << r.name << "</a></td>";
+    cell(subject_cell(r, r.name));
+    if (any_fcl) {
+      GlanceCell c{"none", "not asked", r.name};
+      if (fcl_asked(r)) {
+        const int beyond = r.fcl_beyond + r.fcl_distance_beyond;
+        c.state = beyond ? "bad" : "ok";
+        c.text = std::string(beyond ? "\u2717 " : "\u2713 ") + std::to_string(beyond) +
+                 " beyond the band<br>(FCL states no bounds)<br>" + std::to_string(r.fcl_ok) + " answered";
+      }
+      cell(c);
+    }
+    for (const std::string& e : engines) {
+      auto p = std::find_if(r.peers.begin(), r.peers.end(), [&](const QueryReport& q) { return q.subject == e; });
+      cell(p == r.peers.end() ? GlanceCell{} : subject_cell(*p, engine_anchor(r.name, e)));
+    }
+    h << "</tr>";
+  }
+  auto family_row = [&](const std::string& name, int failures, const std::string& what) {
+    h << "<tr><td class='l'><a href='#" << name << "'>" << name << "</a></td>";
+    cell({failures ? "bad" : "ok", std::string(failures ? "\u2717 " : "\u2713 ") + std::to_string(failures) +
+                                       " failing<br>" + what, name});
+    for (std::size_t k = 1; k < columns; ++k) cell({});
+    h << "</tr>";
+  };
+  for (const PointSetReport& r : point_sets) family_row(r.name, r.failures, std::to_string(r.sets) + " point sets");
+  for (const MeshReport& r : meshes) family_row(r.name, r.failures, std::to_string(r.meshes) + " meshes");
+  h << "</table><p class='legend'><span class='g ok'>&nbsp;\u2713&nbsp;</span> no verdict beyond the band, every "
+       "property holds, every error within half its bound; <span class='g near'>&nbsp;\u2713&nbsp;</span> the same "
+       "but an error past half its bound; <span class='g bad'>&nbsp;\u2717&nbsp;</span> a verdict beyond the band, "
+       "a failing property or an error over its bound; <span class='g none'>&nbsp;&nbsp;&nbsp;</span> not asked. "
+       "Each cell links to its rows below.</p>";
+}
 }  // namespace
 
 std::string html(const std::string& s) {
@@ -528,6 +633,68 @@ std::string html(const std::string& s) {
     else o += c;
   }
   return o;
+}
+
+std::string readable_numbers(const std::string& text) {
+  auto word = [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-' || c == '.'; };
+  std::string out;
+  std::size_t i = 0;
+  while (i < text.size()) {
+    const bool sign = text[i] == '-' && i + 1 < text.size() && std::isdigit(static_cast<unsigned char>(text[i + 1]));
+    if ((sign || std::isdigit(static_cast<unsigned char>(text[i]))) && (i == 0 || !word(text[i - 1]))) {
+      char* end = nullptr;
+      const double x = std::strtod(text.c_str() + i, &end);
+      const std::size_t n = static_cast<std::size_t>(end - (text.c_str() + i));
+      const std::string token = text.substr(i, n);
+      const std::size_t e = token.find_first_of("eE");
+      const bool alone = i + n == text.size() || !word(text[i + n]) || text[i + n] == '.';
+      if (n > 0 && e != std::string::npos && alone && token.find_first_of("xX") == std::string::npos) {
+        int digits = 0;
+        for (std::size_t k = 0; k < e; ++k) digits += std::isdigit(static_cast<unsigned char>(token[k])) ? 1 : 0;
+        out += readable(x, std::max(1, digits));
+        i += n;
+        continue;
+      }
+      out += text.substr(i, std::max<std::size_t>(n, 1));
+      i += std::max<std::size_t>(n, 1);
+      continue;
+    }
+    out += text[i++];
+  }
+  return out;
+}
+
+std::string readable(double x, int digits) {
+  if (std::isnan(x)) return "\u2013";
+  if (std::isinf(x)) return x > 0 ? "\u221e" : "-\u221e";
+  if (x == 0) return "0";
+  digits = std::clamp(digits, 1, 17);
+  auto trim = [](std::string t) {  // "2.500" -> "2.5", "3.0" -> "3"
+    if (t.find('.') == std::string::npos) return t;
+    while (t.back() == '0') t.pop_back();
+    if (t.back() == '.') t.pop_back();
+    return t;
+  };
+  char b[64];
+  const double a = std::fabs(x);
+  if (a >= 1e-3 && a < 1e6) {
+    const int e = static_cast<int>(std::floor(std::log10(a)));
+    std::snprintf(b, sizeof b, "%.*f", std::max(0, digits - 1 - e), x);
+    std::string t = trim(b);
+    if (std::fabs(std::strtod(b, nullptr)) < 1e6) return t;  // else it rounded up to a million: below
+  }
+  std::snprintf(b, sizeof b, "%.*e", digits - 1, x);  // "-2.50e-09"
+  const double rounded = std::fabs(std::strtod(b, nullptr));
+  if (rounded >= 1e-3 && rounded < 1e6) return readable(std::strtod(b, nullptr), digits);  // 0.00099999 -> 0.001
+  const std::string t = b;
+  const std::size_t at = t.find('e');
+  const int exponent = std::atoi(t.c_str() + at + 1);
+  static const char* const kSup[] = {"\u2070", "\u00b9", "\u00b2", "\u00b3", "\u2074",
+                                     "\u2075", "\u2076", "\u2077", "\u2078", "\u2079"};
+  std::string sup = exponent < 0 ? "\u207b" : "";
+  for (char c : std::to_string(std::abs(exponent))) sup += kSup[c - '0'];
+  const std::string mantissa = trim(t.substr(0, at));
+  return mantissa + "\u00d710" + sup;
 }
 
 
@@ -565,11 +732,13 @@ void write_html(const std::filesystem::path& file, const RunInfo& run, std::vect
        "td,th{border:1px solid #bbb;padding:4px 8px;text-align:right}th{background:#eee}td.l,th.l{text-align:left}"
        ".bad{color:#b00;font-weight:bold}.ok{color:#070}.claims{font-size:13px;color:#444}figure.cx{margin:1em 0;border-top:1px solid #ddd}"
        "figure.cx svg{margin-right:6px}figcaption{font-size:12px;margin:4px 0;word-break:break-all}"
-       ".legend{font-size:12px;margin:2px 0}</style></head><body>"
+       ".legend{font-size:12px;margin:2px 0}td.g{text-align:left;font-size:12px}td.g a{color:inherit;text-decoration:none}"
+       ".g.ok{background:#dff0d8}.g.near{background:#fcf3cf}.g.bad{background:#f5c6c6;color:#800}.g.none{background:#eee;color:#777}</style></head><body>"
        "<h1>geomcheck campaign report</h1><p>seed <code>"
     << run.seed << "</code>, " << html(run.per_query) << ", implementation under test: <b>" << html(run.under_test)
     << "</b>. Errors are multiples of the case scale "
        "(largest coordinate magnitude or extent). Rerun: <code>" << html(run.rerun) << "</code></p>";
+  write_glance(h, reps, point_sets, meshes);
   write_precision_table(h, reps);
   for (QueryReport& r : reps) write_query_section(h, r, file.parent_path());
   for (const PointSetReport& r : point_sets) write_point_set_section(h, r);

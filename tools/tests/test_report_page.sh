@@ -3,7 +3,7 @@
 # campaign (fixed seed) whose FCL disagreements are drawn, the page rendered
 # in headless Chromium (screenshot and DOM), and checked: it renders with no
 # console message, the screenshot is a real image, and the
-# page holds the report's parts (the precision table with FCL's rows, the
+# page holds the report's parts (the glance matrix first, the precision table with FCL's rows, the
 # queries' sections, histograms, the drawn disagreements in three views
 # each, every one with the oracle's witness and FCL's answer).
 # usage: test_report_page.sh GEOMCHECK OUT_DIR
@@ -56,6 +56,64 @@ for q in rep["queries"]:
     assert same["production"]["valid"] <= same["cases"] and same["fcl"]["answered"] <= same["cases"]
     assert f"production (the first {same['cases']}, as the engines)" in dom, q["id"]
     print(f"{q['id']}: production and FCL on the engines' {same['cases']} cases")
+PY
+# The first screen: the glance matrix (a row per query, a column per engine)
+# comes before the tables, each cell links to an element of the page, and its
+# colour agrees with report.json's counts; numbers read as numbers (no
+# "1e+03" anywhere in the page's text but its code).
+python3 - "$out/report/report.json" "$out/dom.html" <<'PY' || fail "the glance matrix or the numbers' form is wrong"
+import json, re, sys
+from html.parser import HTMLParser
+rep = json.load(open(sys.argv[1]))
+dom = open(sys.argv[2]).read()
+assert '<h2 id="glance">' in dom, "no glance matrix"
+assert dom.index('<h2 id="glance">') < dom.index('<h2 id="precision">'), "the glance matrix is not first"
+class Page(HTMLParser):
+    def __init__(self):
+        super().__init__(); self.ids = set(); self.rows = []; self.head = []; self.in_glance = False
+        self.cell = None; self.code = 0; self.text = []; self.th = None
+    def handle_starttag(self, tag, attrs):
+        a = dict(attrs)
+        if "id" in a: self.ids.add(a["id"])
+        if tag == "code": self.code += 1
+        if tag == "table" and a.get("class") == "glance": self.in_glance = True
+        if not self.in_glance: return
+        if tag == "tr": self.rows.append([])
+        if tag == "th": self.th = ""
+        if tag == "td": self.cell = {"state": a.get("data-state"), "href": None, "text": ""}; self.rows[-1].append(self.cell)
+        if tag == "a" and self.cell is not None and self.cell["href"] is None: self.cell["href"] = a.get("href")
+    def handle_endtag(self, tag):
+        if tag == "code": self.code -= 1
+        if tag == "table": self.in_glance = False
+        if tag == "td": self.cell = None
+        if tag == "th" and self.th is not None: self.head.append(self.th.strip()); self.th = None
+    def handle_data(self, d):
+        if not self.code: self.text.append(d)
+        if self.cell is not None: self.cell["text"] += d
+        if self.th is not None: self.th += d
+page = Page(); page.feed(dom)
+head, rows = page.head, [r for r in page.rows if r]
+assert head[0] == "query" and head[1] == rep["implementation"], head
+engines = sorted({p["engine"] for q in rep["queries"] for p in q["peers"]})
+assert head[2] == "FCL" and sorted(head[3:]) == engines, (head, engines)
+assert len(rows) == len(rep["queries"]), (len(rows), len(rep["queries"]))
+def judged(cell, bad, what):
+    assert cell["state"] in ("ok", "near", "bad"), (what, cell)
+    assert (cell["state"] == "bad") >= bad, (what, "counts say bad, the cell says", cell["state"])
+for q, row in zip(rep["queries"], rows):
+    assert row[0]["text"].strip() == q["id"] and len(row) == len(head), (q["id"], len(row))
+    for c in row:
+        assert c["href"] and c["href"][1:] in page.ids, (q["id"], "a cell links nowhere", c)
+    judged(row[1], q["beyond_band"] > 0 or q["check_failures"] > 0, q["id"])
+    f = q["fcl"]
+    assert row[2]["state"] == ("bad" if f["beyond_band"] + f["distance_verdicts_beyond_band"] else "ok"), (q["id"], "FCL")
+    for p in q["peers"]:
+        judged(row[head.index(p["engine"])], p["beyond_band"] > 0 or p["check_failures"] > 0, (q["id"], p["engine"]))
+text = " ".join(page.text)
+exp = re.findall(r"(?<![\w.-])\d+(?:\.\d+)?[eE][+-]?\d+(?![\w-])", text)  # a generator mode's name ("coaxial-1e-8-deep") is a word
+assert not exp, f"numbers in e-notation in the page's text: {exp[:5]}"
+assert "\u00d710" in text, "no number written as a power of ten"
+print(f"glance: {len(rows)} queries x {len(head) - 1} engines, every cell linked and coloured as report.json counts")
 PY
 # The tails show: every non-empty bin has a bar of visible height, and the
 # histograms of bounded errors draw their bound.

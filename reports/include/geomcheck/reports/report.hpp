@@ -228,5 +228,15 @@ void write_counterexample_page(const std::filesystem::path& file, const std::str
 std::string utc_now();
 /// s with <, > and & escaped for HTML.
 std::string html(const std::string& s);
+/// x as a page shows it to a person: plain decimals from 0.001 up to a
+/// million (`digits` significant digits, trailing zeros dropped: "1000",
+/// "0.25"), else a mantissa times a power of ten with a superscript exponent
+/// ("2.5×10⁻⁹"); "–" where x is NaN, "∞" where it is infinite. UTF-8, fit for
+/// HTML text and SVG alike; report.json keeps its own numbers.
+std::string readable(double x, int digits = 3);
+/// `text` with every number it writes in e-notation ("depth=5.35e-06")
+/// written as readable() writes it, with the digits it had ("5.35×10⁻⁶");
+/// a number inside a word ("coaxial-1e-8-deep") is left alone.
+std::string readable_numbers(const std::string& text);
 
 }  // namespace geomcheck::report
