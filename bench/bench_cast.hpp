@@ -14,13 +14,13 @@
 
 #include "bench_common.hpp"
 #include "bench_random.hpp"
-#include "geomcheck/oracles/fcl_adapter.hpp"
+#include "geomcheck/peers/fcl_adapter.hpp"
 #include "geomcheck/results.hpp"
 
 namespace geomcheck::bench {
 
 /// A cast-like query on a Case: `prod(k)` is production's CastHit, `fcl(k,
-/// method)` FCL's oracles::PeerCast. The benchmarks are BM_prod_<query>,
+/// method)` FCL's peers::PeerCast. The benchmarks are BM_prod_<query>,
 /// BM_fcl_<query> (the adapter's default) and BM_fcl_<query>_once (a single
 /// FCL call), each followed by _<set> when the batch has a name.
 template <class Prod, class Fcl>
@@ -30,8 +30,8 @@ struct CastBench {
   Fcl fcl;
 
   /// The FCL methods compared: the adapter's default, then a single call.
-  static constexpr oracles::FclCastMethod kMethods[2] = {oracles::FclCastMethod::kConservativeAdvancement,
-                                                         oracles::FclCastMethod::kConservativeAdvancementOnce};
+  static constexpr peers::FclCastMethod kMethods[2] = {peers::FclCastMethod::kConservativeAdvancement,
+                                                         peers::FclCastMethod::kConservativeAdvancementOnce};
 
   /// `n` cases drawn by `draw`, exactly half of them hitting according to production.
   template <class Draw>
@@ -64,7 +64,7 @@ struct CastBench {
       const CastHit p = prod(k);
       prod_hits += p.hit;
       for (int m = 0; m < 2; ++m) {
-        const oracles::PeerCast f = fcl(k, kMethods[m]);
+        const peers::PeerCast f = fcl(k, kMethods[m]);
         hits[m] += f.hit;
         agree[m] += (f.ok && f.hit == p.hit);
         if (p.hit && f.ok && f.hit) max_dt[m] = std::fmax(max_dt[m], std::fabs(f.t - p.t));

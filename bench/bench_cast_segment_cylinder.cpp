@@ -20,7 +20,7 @@
 #include "bench_random.hpp"
 #include "geomcheck/cast_segment_cylinder.hpp"
 #include "geomcheck/oracles/cast_segment_cylinder.hpp"
-#include "geomcheck/oracles/fcl_adapter.hpp"
+#include "geomcheck/peers/fcl_adapter.hpp"
 
 namespace geomcheck::bench {
 namespace {
@@ -43,7 +43,7 @@ Case random_case(Rng& rng) {
 
 /// Production's cast and FCL's through the adapter (bench_cast.hpp).
 const CastBench kCast{"cast", [](const Case& k) { return cast(k.s, k.c); },
-                      [](const Case& k, oracles::FclCastMethod m) { return oracles::fcl_cast(k.s, k.c, m); }};
+                      [](const Case& k, peers::FclCastMethod m) { return peers::fcl_cast(k.s, k.c, m); }};
 
 /// The batch: half hitting according to production, shuffled.
 std::vector<Case> make_batch(std::uint64_t seed) {

@@ -16,7 +16,7 @@ constexpr char kDepthNote[] = "shallow: production's is the minimum, FCL's MPR e
 
 /// A random pose: the capsule's first end within reach + 1.5 of the
 /// cylinder's middle, its segment up to 3 long, radius in [0.05, 1.5].
-const PairBench<Capsule, oracles::FclCylinderCapsule> kBench{"cylinder/capsule", random_capsule, kDepthNote};
+const PairBench<Capsule, peers::FclCylinderCapsule> kBench{"cylinder/capsule", random_capsule, kDepthNote};
 
 }  // namespace
 }  // namespace geomcheck::bench

@@ -37,12 +37,12 @@ Contact collide_before(const Cylinder& a, const Cylinder& b) {
   return detail::cylinder_pair(a, b, true, o);
 }
 
-PairBench<Cylinder, oracles::FclCylinderCylinder> make_bench() {
-  PairBench<Cylinder, oracles::FclCylinderCylinder> b{"cylinder/cylinder", random_b, kDepthNote};
+PairBench<Cylinder, peers::FclCylinderCylinder> make_bench() {
+  PairBench<Cylinder, peers::FclCylinderCylinder> b{"cylinder/cylinder", random_b, kDepthNote};
   b.collide_before = collide_before;
   return b;
 }
-const PairBench<Cylinder, oracles::FclCylinderCylinder> kBench = make_bench();
+const PairBench<Cylinder, peers::FclCylinderCylinder> kBench = make_bench();
 
 }  // namespace
 }  // namespace geomcheck::bench

@@ -55,7 +55,7 @@
 #include "bench_common.hpp"
 #include "bench_random.hpp"
 #include "geomcheck/collide_cylinder_mesh.hpp"
-#include "geomcheck/oracles/fcl_convert.hpp"
+#include "geomcheck/peers/fcl_convert.hpp"
 
 namespace geomcheck::bench {
 namespace {
@@ -122,14 +122,14 @@ Cylinder random_cylinder(Rng& rng) {
 
 struct Batch {
   std::vector<Cylinder> cyl;
-  std::vector<oracles::FclCylinder> fcl;  // the same cylinders, converted for FCL
+  std::vector<peers::FclCylinder> fcl;  // the same cylinders, converted for FCL
 };
 
 struct Inputs {
   std::uint64_t seed = 0;
   MeshData data;
   std::unique_ptr<TriangleMesh> mesh;
-  std::unique_ptr<oracles::FclMesh> fcl_mesh;
+  std::unique_ptr<peers::FclMesh> fcl_mesh;
   int all_contacts = 1;  // max_contacts for BM_fcl_collide_*: the face count
   Batch random, contact;
   std::size_t contact_draws = 0;  // cylinders drawn for the contact batch
@@ -154,7 +154,7 @@ Inputs make_inputs(std::uint64_t seed) {
   in.mesh = std::make_unique<TriangleMesh>(in.data.vertices, in.data.faces);
   in.prod_build_ms = ms_since(t0);
   t0 = std::chrono::steady_clock::now();
-  in.fcl_mesh = std::make_unique<oracles::FclMesh>(*in.mesh);
+  in.fcl_mesh = std::make_unique<peers::FclMesh>(*in.mesh);
   in.fcl_build_ms = ms_since(t0);
   in.all_contacts = static_cast<int>(in.mesh->size());
   const TriangleMesh& m = *in.mesh;
@@ -248,8 +248,8 @@ void print_batch(const char* set, const Batch& b, const Inputs& in) {
     const bool ov = overlap(b.cyl[i], m);
     const Contact p = collide(b.cyl[i], m);
     int n = 0;
-    const oracles::PeerContact f = oracles::fcl_collide_prepared(b.fcl[i], *in.fcl_mesh, in.all_contacts, &n);
-    const oracles::PeerContact f1 = oracles::fcl_collide_prepared(b.fcl[i], *in.fcl_mesh, 1);
+    const peers::PeerContact f = peers::fcl_collide_prepared(b.fcl[i], *in.fcl_mesh, in.all_contacts, &n);
+    const peers::PeerContact f1 = peers::fcl_collide_prepared(b.fcl[i], *in.fcl_mesh, 1);
     prod_overlap += ov;
     prod_hits += p.hit;
     if (!f.ok || !f1.ok) {
@@ -311,7 +311,7 @@ void check_and_print(const Inputs& in) {
 void register_batch(const char* set, const Batch& b, const Inputs& in) {
   const std::string s = set_suffix(set);
   const TriangleMesh& m = *in.mesh;
-  const oracles::FclMesh& fm = *in.fcl_mesh;
+  const peers::FclMesh& fm = *in.fcl_mesh;
   const int all = in.all_contacts;
   register_each("BM_prod_overlap" + s, b.cyl, [&m](const Cylinder& c) { return overlap(c, m); });
   register_each("BM_prod_collide" + s, b.cyl, [&m](const Cylinder& c) {
@@ -321,9 +321,9 @@ void register_batch(const char* set, const Batch& b, const Inputs& in) {
     return hit;
   });
   register_each("BM_fcl_collide" + s, b.fcl,
-                [&fm, all](const oracles::FclCylinder& c) { return oracles::fcl_collide_prepared(c, fm, all); });
+                [&fm, all](const peers::FclCylinder& c) { return peers::fcl_collide_prepared(c, fm, all); });
   register_each("BM_fcl_collide_first" + s, b.fcl,
-                [&fm](const oracles::FclCylinder& c) { return oracles::fcl_collide_prepared(c, fm, 1); });
+                [&fm](const peers::FclCylinder& c) { return peers::fcl_collide_prepared(c, fm, 1); });
 }
 
 /// BM_prod_build and BM_fcl_build: one build of the mesh an iteration
@@ -338,7 +338,7 @@ void register_builds(const Inputs& in, CaptureReporter& reporter) {
   })->Unit(benchmark::kMillisecond);
   benchmark::RegisterBenchmark("BM_fcl_build", [&in](benchmark::State& state) {
     for (auto _ : state) {
-      const oracles::FclMesh m(*in.mesh);
+      const peers::FclMesh m(*in.mesh);
       benchmark::DoNotOptimize(&m.model);
     }
     set_per_query(state, 1);

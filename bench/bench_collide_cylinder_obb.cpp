@@ -20,12 +20,12 @@ constexpr char kDepthNote[] =
     "production's is the overlap along its normal, within 1 + 1/64 of the minimum (penetration's is the minimum); "
     "FCL's MPR estimate is neither";
 
-PairBench<Obb, oracles::FclCylinderBox> make_bench() {
-  PairBench<Obb, oracles::FclCylinderBox> b{"cylinder/box", random_box, kDepthNote};
+PairBench<Obb, peers::FclCylinderBox> make_bench() {
+  PairBench<Obb, peers::FclCylinderBox> b{"cylinder/box", random_box, kDepthNote};
   b.penetration = [](const Cylinder& a, const Obb& x) { return penetration(a, x); };
   return b;
 }
-const PairBench<Obb, oracles::FclCylinderBox> kBench = make_bench();
+const PairBench<Obb, peers::FclCylinderBox> kBench = make_bench();
 
 }  // namespace
 }  // namespace geomcheck::bench

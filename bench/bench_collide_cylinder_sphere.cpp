@@ -22,13 +22,13 @@
 #include "bench_random.hpp"
 #include "geomcheck/collide_cylinder_sphere.hpp"
 #include "geomcheck/oracles/cylinder_sphere.hpp"
-#include "geomcheck/oracles/fcl_adapter.hpp"
-#include "geomcheck/oracles/fcl_convert.hpp"
+#include "geomcheck/peers/fcl_adapter.hpp"
+#include "geomcheck/peers/fcl_convert.hpp"
 
 namespace geomcheck::bench {
 namespace {
 
-using Bench = PairBench<Sphere, oracles::FclCylinderSphere>;
+using Bench = PairBench<Sphere, peers::FclCylinderSphere>;
 
 /// The batch: half overlapping according to production, shuffled.
 Bench::Batch make_batch(std::uint64_t seed) {
@@ -56,7 +56,7 @@ void print_batch(std::uint64_t seed, const Bench::Batch& b) {
   std::size_t prod_hits = 0, fcl_hits = 0, agree = 0;
   for (std::size_t i = 0; i < b.pairs.size(); ++i) {
     const bool p = overlap(b.pairs[i].a, b.pairs[i].b);
-    const bool f = oracles::fcl_overlap_prepared(b.fcl[i]);
+    const bool f = peers::fcl_overlap_prepared(b.fcl[i]);
     prod_hits += p;
     fcl_hits += f;
     agree += (p == f);

@@ -29,7 +29,7 @@
 namespace geomcheck::bench {
 namespace {
 
-using Bench = PairBench<Triangle, oracles::FclCylinderTriangle>;
+using Bench = PairBench<Triangle, peers::FclCylinderTriangle>;
 
 constexpr double kVertexDistance = 0.7;  // from the triangle's centre
 

@@ -25,7 +25,7 @@
 #include "geomcheck/collide_cylinder_obb.hpp"
 #include "geomcheck/collide_cylinder_sphere.hpp"
 #include "geomcheck/collide_many.hpp"
-#include "geomcheck/oracles/fcl_convert.hpp"
+#include "geomcheck/peers/fcl_convert.hpp"
 
 namespace geomcheck::bench {
 namespace {
@@ -71,8 +71,8 @@ void register_batch(const std::string& name, const ManyBatch<B, Prepared>& m) {
   });
   register_each("BM_prod_overlap_" + name, m.b, [&m](const B& x) { return overlap(m.cyl, x); });
   register_each("BM_prod_collide_" + name, m.b, [&m](const B& x) { return collide(m.cyl, x); });
-  register_each("BM_fcl_overlap_" + name, m.fcl, [](const Prepared& p) { return oracles::fcl_overlap_prepared(p); });
-  register_each("BM_fcl_collide_" + name, m.fcl, [](const Prepared& p) { return oracles::fcl_collide_prepared(p); });
+  register_each("BM_fcl_overlap_" + name, m.fcl, [](const Prepared& p) { return peers::fcl_overlap_prepared(p); });
+  register_each("BM_fcl_collide_" + name, m.fcl, [](const Prepared& p) { return peers::fcl_collide_prepared(p); });
 }
 
 Ratio fcl_over_many(const std::string& query, const std::string& b) {
@@ -90,9 +90,9 @@ int main(int argc, char** argv) {
   using namespace geomcheck::bench;
   const std::uint64_t seed = seed_from_env();
   Rng rng(seed);
-  const auto spheres = make_batch<Sphere, oracles::FclCylinderSphere>(rng, random_sphere);
-  const auto capsules = make_batch<Capsule, oracles::FclCylinderCapsule>(rng, random_capsule);
-  const auto boxes = make_batch<Obb, oracles::FclCylinderBox>(rng, random_box);
+  const auto spheres = make_batch<Sphere, peers::FclCylinderSphere>(rng, random_sphere);
+  const auto capsules = make_batch<Capsule, peers::FclCylinderCapsule>(rng, random_capsule);
+  const auto boxes = make_batch<Obb, peers::FclCylinderBox>(rng, random_box);
   std::printf("list queries: one cylinder and %zu shapes per batch (half overlapping according to production), %s\n\n",
               kPairBatch, seed_text(seed).c_str());
   std::fflush(stdout);

@@ -48,7 +48,7 @@
 // is part of every query), and penetration(make_shape(a), make_shape(b),
 // 1e-30).
 //
-// Peer: the FCL adapter (oracles/fcl) has no box or triangle conversion, so
+// Peer: the FCL adapter (peers/fcl) has no box or triangle conversion, so
 // FCL is measured for cylinder-cylinder only, through the adapter's
 // converted-pair calls (FclCylinderCylinder and fcl_*_prepared in
 // fcl_convert.hpp, GST_LIBCCD). The conversion is inside the timed loop, as
@@ -75,7 +75,7 @@
 #include "bench_common.hpp"
 #include "bench_random.hpp"
 #include "geomcheck/oracles/engine.hpp"
-#include "geomcheck/oracles/fcl_convert.hpp"
+#include "geomcheck/peers/fcl_convert.hpp"
 
 namespace geomcheck::bench {
 namespace {
@@ -436,18 +436,18 @@ Set<A> make_depth(Rng& rng, std::size_t n) {
 
 // ---- FCL (cylinder-cylinder) -------------------------------------------------------
 
-using FclPair = oracles::FclCylinderCylinder;
+using FclPair = peers::FclCylinderCylinder;
 FclPair fcl_pair(const Pair<Cylinder>& p) { return FclPair(p.a, p.b); }
 
-// The adapter's calls on converted pairs (oracles/fcl/fcl_convert.hpp).
-bool fcl_collide(const FclPair& p) { return oracles::fcl_overlap_prepared(p); }
+// The adapter's calls on converted pairs (peers/fcl/fcl_convert.hpp).
+bool fcl_collide(const FclPair& p) { return peers::fcl_overlap_prepared(p); }
 /// FCL's penetration depth (collide with contact); -1 when FCL sees no contact.
 double fcl_depth(const FclPair& p) {
-  const oracles::PeerContact c = oracles::fcl_collide_prepared(p);
+  const peers::PeerContact c = peers::fcl_collide_prepared(p);
   return c.hit ? c.depth : -1.0;
 }
 /// FCL's distance (> 0 separated; negative when FCL sees contact).
-double fcl_distance(const FclPair& p) { return oracles::fcl_distance_prepared(p).distance; }
+double fcl_distance(const FclPair& p) { return peers::fcl_distance_prepared(p).distance; }
 
 /// FCL's verdicts on a random or near cylinder set against the certified
 /// ones (untimed; also runs every FCL query once before timing).

@@ -30,10 +30,10 @@
 
 #include "bench_common.hpp"
 #include "bench_random.hpp"
-#include "geomcheck/oracles/fcl_adapter.hpp"
+#include "geomcheck/peers/fcl_adapter.hpp"
 #include "geomcheck/results.hpp"
 #include "geomcheck/shapes.hpp"
-#include "geomcheck/oracles/fcl_convert.hpp"
+#include "geomcheck/peers/fcl_convert.hpp"
 
 namespace geomcheck::bench {
 
@@ -124,11 +124,11 @@ struct PairBench {
       const auto pen = penetration;
       register_each("BM_prod_penetration" + s, b.pairs, [pen](const Pair& pr) { return pen(pr.a, pr.b); });
     }
-    register_each("BM_fcl_overlap" + s, b.fcl, [](const Prepared& pr) { return oracles::fcl_overlap_prepared(pr); });
-    register_each("BM_fcl_collide" + s, b.fcl, [](const Prepared& pr) { return oracles::fcl_collide_prepared(pr); });
+    register_each("BM_fcl_overlap" + s, b.fcl, [](const Prepared& pr) { return peers::fcl_overlap_prepared(pr); });
+    register_each("BM_fcl_collide" + s, b.fcl, [](const Prepared& pr) { return peers::fcl_collide_prepared(pr); });
     // Reference only: validation + conversion + guarded fcl::collide, per query.
     register_each("BM_fcl_collide_adapter" + s, b.pairs,
-                  [](const Pair& pr) { return oracles::fcl_collide(pr.a, pr.b); });
+                  [](const Pair& pr) { return peers::fcl_collide(pr.a, pr.b); });
   }
 
   void print_batch(const char* set, const Batch& b) const {
@@ -136,7 +136,7 @@ struct PairBench {
     std::vector<double> excess;  // FCL depth - production depth, where both hit
     for (std::size_t i = 0; i < b.pairs.size(); ++i) {
       const Contact p = collide(b.pairs[i].a, b.pairs[i].b);
-      const oracles::PeerContact f = oracles::fcl_collide(b.pairs[i].a, b.pairs[i].b);
+      const peers::PeerContact f = peers::fcl_collide(b.pairs[i].a, b.pairs[i].b);
       if (!f.ok) {
         ++fcl_not_ok;
         continue;

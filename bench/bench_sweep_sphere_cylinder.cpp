@@ -28,7 +28,7 @@
 #include "bench_cast.hpp"
 #include "bench_common.hpp"
 #include "bench_random.hpp"
-#include "geomcheck/oracles/fcl_adapter.hpp"
+#include "geomcheck/peers/fcl_adapter.hpp"
 #include "geomcheck/sweep_sphere_cylinder.hpp"
 
 namespace geomcheck::bench {
@@ -48,7 +48,7 @@ struct Inputs {
 
 /// Production's sweep and FCL's through the adapter (bench_cast.hpp).
 const CastBench kSweep{"sweep", [](const Case& k) { return sweep(k.m, k.c); },
-                       [](const Case& k, oracles::FclCastMethod m) { return oracles::fcl_sweep(k.m, k.c, m); }};
+                       [](const Case& k, peers::FclCastMethod m) { return peers::fcl_sweep(k.m, k.c, m); }};
 
 /// A random cylinder, then a ball (radius 0.05 to 1.5) moving between two
 /// points within reach + 3 of its middle.

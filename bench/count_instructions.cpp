@@ -13,7 +13,7 @@
 #include "bench_random.hpp"
 #include "geomcheck/cast_segment_cylinder.hpp"
 #include "geomcheck/collide_cylinder_sphere.hpp"
-#include "geomcheck/oracles/fcl_convert.hpp"
+#include "geomcheck/peers/fcl_convert.hpp"
 
 using namespace geomcheck;
 
@@ -53,20 +53,20 @@ __attribute__((noinline)) double run_prod_collide(const std::vector<Pair>& v) {
   for (int i = 0; i < kCalls; ++i) s += collide(v[i & 4095].a, v[i & 4095].b).depth;
   return s;
 }
-__attribute__((noinline)) int run_fcl_overlap(const std::vector<oracles::FclCylinderSphere>& v) {
+__attribute__((noinline)) int run_fcl_overlap(const std::vector<peers::FclCylinderSphere>& v) {
   int hits = 0;
-  for (int i = 0; i < kCalls; ++i) hits += oracles::fcl_overlap_prepared(v[i & 4095]);
+  for (int i = 0; i < kCalls; ++i) hits += peers::fcl_overlap_prepared(v[i & 4095]);
   return hits;
 }
-__attribute__((noinline)) double run_fcl_collide(const std::vector<oracles::FclCylinderSphere>& v) {
+__attribute__((noinline)) double run_fcl_collide(const std::vector<peers::FclCylinderSphere>& v) {
   double s = 0;
-  for (int i = 0; i < kCalls; ++i) s += oracles::fcl_collide_prepared(v[i & 4095]).depth;
+  for (int i = 0; i < kCalls; ++i) s += peers::fcl_collide_prepared(v[i & 4095]).depth;
   return s;
 }
 
 int main() {
   const auto pairs = make(0x67656f6d63686b31ULL);
-  std::vector<oracles::FclCylinderSphere> fcl;
+  std::vector<peers::FclCylinderSphere> fcl;
   for (const auto& p : pairs) fcl.emplace_back(p.a, p.b);
   const int a = run_prod_overlap(pairs), c = run_fcl_overlap(fcl);
   const double b = run_prod_collide(pairs), d = run_fcl_collide(fcl);

@@ -22,7 +22,7 @@
 #include "geomcheck/reports/report.hpp"
 #include "geomcheck/casefile.hpp"
 #include "geomcheck/properties/tolerances.hpp"
-#include "peer.hpp"
+#include "geomcheck/peers/fcl_peer.hpp"
 #include "peers.hpp"
 #include "shard.hpp"
 #include "geomcheck/properties/shrink.hpp"
@@ -55,7 +55,7 @@ struct SaveCaps {
 // Everything kept per case.
 struct Row {
   Evaluation e;
-  PeerAnswer fcl;
+  peers::FclAnswer fcl;
   std::string tag;
   CheckResult failure;
   oracle::Stage stage = oracle::Stage::None;  // the deepest stage of the engine the truth needed
@@ -73,7 +73,7 @@ draw::Answer answer_of(const Case& c, const Impl& impl) {
 
 // FCL's answer, drawn beside production's (purple).
 template <class Case>
-draw::Mark fcl_mark(const Case& c, const PeerAnswer& p) {
+draw::Mark fcl_mark(const Case& c, const peers::FclAnswer& p) {
   constexpr const char* kColour = "#83c";
   const Vec3 nowhere{NAN, NAN, NAN};
   char b[96];
@@ -187,9 +187,9 @@ class QueryRun {
         Row& r = rows_[i];
         r.index = i;
         r.tag = cases_[i].second;
-        r.fcl = peer(cases_[i].first);
+        r.fcl = peers::fcl_answer(cases_[i].first);
         oracle::reset_deepest_stage();
-        r.e = evaluate_with_peer(cases_[i].first, r.fcl, *impl_);
+        r.e = peers::evaluate_with_fcl(cases_[i].first, r.fcl, *impl_);
         r.stage = oracle::deepest_stage();
         r.failure = check_all(cases_[i].first, r.e, *impl_);  // the truth asked once
         if constexpr (std::is_same_v<Case, SweepCylinderCase>)
@@ -242,7 +242,7 @@ class QueryRun {
   // The kinds of FCL's disagreement beyond the band on one case: its
   // verdict (false-hit, missed-hit), its distance's verdict
   // (distance-says-meet, distance-says-apart); none where it agrees.
-  static std::vector<const char*> fcl_kinds(const PeerAnswer& p, const Evaluation& e) {
+  static std::vector<const char*> fcl_kinds(const peers::FclAnswer& p, const Evaluation& e) {
     std::vector<const char*> out;
     if (!e.valid || !p.supported || !p.ok || e.near_boundary) return out;  // the same band as production's
     if (p.hit != e.truth_hit) out.push_back(p.hit ? "false-hit" : "missed-hit");
@@ -304,7 +304,7 @@ class QueryRun {
     int row = 0;
     const char* kind = "";
     Case small{};
-    PeerAnswer fcl;
+    peers::FclAnswer fcl;
     Evaluation e;
     Shrunk how;
   };
@@ -332,14 +332,14 @@ class QueryRun {
         s.small = shrink(
             cases_[s.row].first,
             [&](const Case& c) {
-              const PeerAnswer p = peer(c);
-              for (const char* k2 : fcl_kinds(p, evaluate_with_peer(c, p, *impl_)))
+              const peers::FclAnswer p = peers::fcl_answer(c);
+              for (const char* k2 : fcl_kinds(p, peers::evaluate_with_fcl(c, p, *impl_)))
                 if (kind == k2) return true;
               return false;
             },
             report::kShrinkBudget, &s.how);
-        s.fcl = s.how.simplified ? peer(s.small) : rows_[s.row].fcl;
-        s.e = s.how.simplified ? evaluate_with_peer(s.small, s.fcl, *impl_) : rows_[s.row].e;
+        s.fcl = s.how.simplified ? peers::fcl_answer(s.small) : rows_[s.row].fcl;
+        s.e = s.how.simplified ? peers::evaluate_with_fcl(s.small, s.fcl, *impl_) : rows_[s.row].e;
       }
     };
     std::vector<std::thread> pool;

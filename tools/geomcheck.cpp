@@ -29,7 +29,7 @@
 #include "geomcheck/properties/spec.hpp"
 #include "geomcheck/properties/tolerances.hpp"
 #include "geomcheck/shape_traits.hpp"
-#include "peer.hpp"
+#include "geomcheck/peers/fcl_peer.hpp"
 #include "peers.hpp"
 
 namespace fs = std::filesystem;
@@ -174,8 +174,8 @@ Replayed replay_one(const fs::path& path, bool quiet, const std::string& subject
     const auto* impl = Spec<Q>::subject(subject);
     if (!impl) impl = peer_subject<Q>(subject);  // another engine (peers/)
     if (!impl) return unreadable(path, "no subject '" + subject + "' of query " + info(Q).name);
-    const PeerAnswer fcl = peer(c);
-    const Evaluation e = evaluate_with_peer(c, fcl, *impl);
+    const peers::FclAnswer fcl = peers::fcl_answer(c);
+    const Evaluation e = peers::evaluate_with_fcl(c, fcl, *impl);
     const CheckResult failure = check_all(c, *impl);
     const Tolerances tol = bounds_of(Q, impl->claims);
     bool filed_ok = true;

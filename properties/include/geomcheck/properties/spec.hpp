@@ -7,7 +7,7 @@
 // default case count, bounds and known-wrong variants
 // (properties/src/checks_<id>.cpp: production_of<Q>, spec_of<Q>), its
 // generators (properties/src/generators/<id>.cpp) and FCL's
-// adapter (oracles/fcl/). The RapidCheck suites, the campaign, replay, the
+// adapter (peers/fcl/). The RapidCheck suites, the campaign, replay, the
 // fuzz targets and the report take Spec<Q> and nothing else
 // (docs/ARCHITECTURE.md has the checklist for a new query).
 #pragma once

@@ -128,7 +128,7 @@
 //     depth 0.908 and a normal 19 degrees off; scaled by 1e3, 0.2 and +z).
 //     libccd 2.1's MPR portal discovery and refinement loops have no
 //     iteration cap (only the penetration phase stops after 50; see
-//     oracles/fcl/include/geomcheck/oracles/fcl_adapter.hpp): seen here on
+//     peers/fcl/include/geomcheck/peers/fcl_adapter.hpp): seen here on
 //     two segments (a cylinder and a capsule of radius 0, which MuJoCo's
 //     compiler would refuse) 1.9e5 long, which never return; verify()
 //     contains it ("subject-hung").

@@ -1,18 +1,19 @@
-// geomcheck — FCL's answer to any registered query, in one shape.
+// geomcheck — FCL's answer to any registered query, in one shape: FCL as a
+// peer of the campaign (it answers every case of a query it can express).
 #pragma once
 
 #include <string>
 #include <type_traits>
 #include <utility>
 
-#include "geomcheck/oracles/fcl_adapter.hpp"
+#include "geomcheck/peers/fcl_adapter.hpp"
 #include "geomcheck/properties/checks.hpp"
 
-namespace geomcheck {
+namespace geomcheck::peers {
 
 /// FCL's answer, reduced to what reports compare.
-struct PeerAnswer {
-  bool supported = false;  ///< FCL can express this query
+struct FclAnswer {
+  bool supported = false;  ///< FCL can express this query (kFclAsks, kFclCasts)
   bool ok = false;         ///< FCL answered (no exception, no garbage)
   bool hit = false;
   double depth = NAN;      ///< collide: penetration depth
@@ -24,23 +25,25 @@ struct PeerAnswer {
   std::string text;        ///< human readable
 };
 
-/// FCL's answer to a case of any registered query (oracles/fcl/fcl_adapter.hpp
-/// says how FCL is asked for each pair: libccd's MPR and GJK, guarded, or a
-/// closed form; continuous collision for casts and sweeps).
+/// FCL's answer to a case of any registered query (fcl_adapter.hpp says how
+/// FCL is asked for each pair: libccd's MPR and GJK, guarded, or a closed
+/// form; continuous collision for casts and sweeps); not supported where the
+/// adapter does not ask FCL about the query's shapes, with no code for it.
 template <class Case>
-PeerAnswer peer(const Case& c);
+FclAnswer fcl_answer(const Case& c);
 
 /// `impl` (default: production) evaluated with FCL's answer scored against
 /// the same truth.
 template <class Case>
-Evaluation evaluate_with_peer(const Case& c, const PeerAnswer& p,
+Evaluation evaluate_with_fcl(const Case& c, const FclAnswer& p,
                               const ImplOfCase<Case>& impl = production_of<query_of_case<Case>>()) {
   const bool answered = p.supported && p.ok;
-  if constexpr (std::is_same_v<Case, SegmentCylinderCase> || std::is_same_v<Case, SweepCylinderCase>) {
+  constexpr QueryKind kind = QueryTraits<query_of_case<Case>>::kind;
+  if constexpr (kind == QueryKind::Cast || kind == QueryKind::Sweep) {
     return evaluate(c, impl, answered && p.hit ? &p.t : nullptr);
   } else {
     return evaluate(c, impl, answered ? &p.contact : nullptr);
   }
 }
 
-}  // namespace geomcheck
+}  // namespace geomcheck::peers

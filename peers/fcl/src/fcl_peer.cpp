@@ -1,9 +1,9 @@
-#include "peer.hpp"
+#include "geomcheck/peers/fcl_peer.hpp"
 
 #include <cstdio>
 #include <type_traits>
 
-namespace geomcheck {
+namespace geomcheck::peers {
 
 namespace {
 std::string v3(Vec3 v) {
@@ -12,9 +12,9 @@ std::string v3(Vec3 v) {
   return b;
 }
 
-/// A collide answer (cylinder against a sphere, capsule, box, triangle or cylinder); `note` follows the depth.
-PeerAnswer contact_answer(const oracles::PeerContact& r, const char* note = "") {
-  PeerAnswer p;
+/// A collide answer; `note` follows the depth.
+FclAnswer contact_answer(const PeerContact& r, const char* note = "") {
+  FclAnswer p;
   p.supported = true;
   p.ok = r.ok;
   if (!r.ok) {
@@ -38,8 +38,8 @@ PeerAnswer contact_answer(const oracles::PeerContact& r, const char* note = "") 
 }
 
 /// A cast or sweep answer; `how` says what FCL was asked.
-PeerAnswer cast_answer(const oracles::PeerCast& r, const char* how) {
-  PeerAnswer p;
+FclAnswer cast_answer(const PeerCast& r, const char* how) {
+  FclAnswer p;
   p.supported = r.supported;
   p.ok = r.ok;
   if (!r.ok) {
@@ -59,7 +59,7 @@ PeerAnswer cast_answer(const oracles::PeerCast& r, const char* how) {
 }
 
 /// Adds FCL's distance on the same pair.
-PeerAnswer with_distance(PeerAnswer p, const oracles::PeerDistance& d) {
+FclAnswer with_distance(FclAnswer p, const PeerDistance& d) {
   if (d.ok) {
     p.distance = d.distance;
     char b[64];
@@ -71,11 +71,11 @@ PeerAnswer with_distance(PeerAnswer p, const oracles::PeerDistance& d) {
   return p;
 }
 
-// How FCL answers a collide pair, after its depth: libccd's MPR everywhere
-// but the sphere (FCL's closed form) and the triangle (its mesh narrow phase).
-template <class B>
+// How FCL answers a collide pair, after its depth: its closed form, or
+// libccd's MPR (for a triangle, in its mesh narrow phase).
+template <class A, class B>
 const char* collide_note() {
-  if constexpr (std::is_same_v<B, Sphere>) return "";
+  if constexpr (kFclClosedFormCollide<A, B>) return "";
   else if constexpr (std::is_same_v<B, Triangle>)
     return " (FCL's mesh narrow phase shapeTriangleIntersect; libccd MPR estimate, not the minimum)";
   else return " (libccd MPR estimate, not the minimum)";
@@ -84,18 +84,25 @@ const char* collide_note() {
 }  // namespace
 
 template <class Case>
-PeerAnswer peer(const Case& c) {
+FclAnswer fcl_answer(const Case& c) {
+  using A = typename QueryTraits<query_of_case<Case>>::ShapeA;
+  using B = typename QueryTraits<query_of_case<Case>>::ShapeB;
   constexpr QueryKind kind = QueryTraits<query_of_case<Case>>::kind;
-  if constexpr (kind == QueryKind::Collide)
-    return with_distance(contact_answer(oracles::fcl_collide(c.a, c.b), collide_note<typename Case::ShapeB>()),
-                         oracles::fcl_distance(c.a, c.b));
-  else if constexpr (kind == QueryKind::Cast)
-    return cast_answer(oracles::fcl_cast(c.a, c.b), "FCL continuous collision of a radius-0 sphere");
-  else return cast_answer(oracles::fcl_sweep(c.a, c.b), "FCL continuous collision of the ball; no point or normal");
+  if constexpr (kind == QueryKind::Collide) {
+    if constexpr (kFclAsks<A, B>)
+      return with_distance(contact_answer(fcl_collide(c.a, c.b), collide_note<A, B>()), fcl_distance(c.a, c.b));
+    else return FclAnswer{};  // not supported
+  } else if constexpr (kind == QueryKind::Cast && std::is_same_v<A, Segment> && kFclCasts<B>) {
+    return cast_answer(fcl_cast(c.a, c.b), "FCL continuous collision of a radius-0 sphere");
+  } else if constexpr (kind == QueryKind::Sweep && std::is_same_v<A, MovingSphere> && kFclCasts<B>) {
+    return cast_answer(fcl_sweep(c.a, c.b), "FCL continuous collision of the ball; no point or normal");
+  } else {
+    return FclAnswer{};  // not supported
+  }
 }
 
-#define GEOMCHECK_X(id, kind, A, B, summary) template PeerAnswer peer(const PairCase<A, B, QueryId::id>&);
+#define GEOMCHECK_X(id, kind, A, B, summary) template FclAnswer fcl_answer(const PairCase<A, B, QueryId::id>&);
 GEOMCHECK_QUERY_LIST(GEOMCHECK_X)
 #undef GEOMCHECK_X
 
-}  // namespace geomcheck
+}  // namespace geomcheck::peers

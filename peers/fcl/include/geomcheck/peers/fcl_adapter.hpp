@@ -402,30 +402,30 @@
 
 #include <cmath>
 #include <string>
+#include <type_traits>
 
 #include "geomcheck/shapes.hpp"
 #include "geomcheck/vec3.hpp"
 
-namespace geomcheck::oracles {
+namespace geomcheck::peers {
 
-/// FCL's contact for cylinder (A) against a sphere, capsule, box or
-/// triangle (B), in geomcheck's convention (normal from A towards B).
+/// FCL's contact for a pair (A, B), in geomcheck's convention (normal from
+/// A towards B).
 struct PeerContact {
   bool ok = false;    ///< false if the input was invalid, FCL threw or returned garbage
   std::string error;  ///< why not ok; empty when ok
   bool hit = false;   ///< FCL says the shapes intersect (touching: sphere yes, capsule no, box/triangle either)
   Vec3 point;         ///< FCL's contact position (world frame)
-  Vec3 normal;        ///< unit, from the cylinder towards B (MPR pairs: zero for its touching contact)
+  Vec3 normal;        ///< unit, from A towards B (MPR pairs: zero for its touching contact)
   double depth = 0;   ///< FCL's penetration depth
 };
 
-/// FCL's separation distance for cylinder (A) against B (sphere, capsule,
-/// box or triangle).
+/// FCL's separation distance for a pair (A, B).
 struct PeerDistance {
   bool ok = false;    ///< false if the input was invalid, FCL threw or returned garbage
   std::string error;  ///< why not ok; empty when ok
   double distance = 0;  ///< > 0 separated; exactly -1 when FCL sees overlap/touching
-  Vec3 p_a;           ///< nearest point on the cylinder (zero when distance < 0)
+  Vec3 p_a;           ///< nearest point on A (zero when distance < 0)
   Vec3 p_b;           ///< nearest point on B (zero when distance < 0)
 };
 
@@ -433,8 +433,8 @@ struct PeerDistance {
 struct PeerCast {
   bool ok = false;         ///< false if the input was invalid, FCL threw or returned garbage
   std::string error;       ///< why not ok; empty when ok
-  bool supported = false;  ///< FCL can express this query (true for segment/cylinder and sphere/cylinder)
-  bool hit = false;        ///< FCL says the segment (the ball) touches the cylinder
+  bool supported = false;  ///< FCL can express this query (kFclCasts)
+  bool hit = false;        ///< FCL says the segment (the ball) touches the resting shape
   double t = 0;            ///< first-touch parameter in [0, 1] when hit: FCL's time of contact
 };
 
@@ -443,37 +443,6 @@ enum class FclCastMethod {
   kConservativeAdvancement,      ///< continuousCollide; after a miss, again in up to 3 equivalent frames
   kConservativeAdvancementOnce,  ///< one continuousCollide call on the scene as given (FCL as shipped)
 };
-
-/// fcl::collide(cylinder, sphere), num_max_contacts = 1, enable_contact, GST_LIBCCD.
-PeerContact fcl_collide(const Cylinder& a, const Sphere& b);
-
-/// fcl::collide(cylinder, sphere) with enable_contact = false, GST_LIBCCD.
-/// false for invalid input or when FCL throws; then `*error` (if given) says why.
-bool fcl_overlap(const Cylinder& a, const Sphere& b, std::string* error = nullptr);
-
-/// fcl::distance(cylinder, sphere), enable_nearest_points, GST_LIBCCD.
-PeerDistance fcl_distance(const Cylinder& a, const Sphere& b);
-
-/// First touch of segment `s` (from s.a towards s.b) with the cylinder, as
-/// far as FCL can tell: t within 1e-4, early (see the header notes).
-PeerCast fcl_cast(const Segment& s, const Cylinder& c,
-                  FclCastMethod method = FclCastMethod::kConservativeAdvancement);
-
-/// fcl::collide(cylinder, capsule), num_max_contacts = 1, enable_contact,
-/// GST_LIBCCD (libccd's MPR with guarded support functions: never hangs;
-/// see the header notes). Normal from the cylinder towards the capsule;
-/// depth and normal are MPR's estimate, not the minimal translation.
-PeerContact fcl_collide(const Cylinder& a, const Capsule& b);
-
-/// fcl::collide(cylinder, capsule) with enable_contact = false, GST_LIBCCD,
-/// guarded the same way. false for invalid input, when FCL throws or the
-/// guard stopped it; then `*error` (if given) says why.
-bool fcl_overlap(const Cylinder& a, const Capsule& b, std::string* error = nullptr);
-
-/// fcl::distance(cylinder, capsule), enable_nearest_points, GST_LIBCCD
-/// (libccd's GJK with guarded support functions: never aborts): > 0
-/// separated, exactly -1 when FCL sees them meet.
-PeerDistance fcl_distance(const Cylinder& a, const Capsule& b);
 
 /// True when the box's stored axes are orthonormal to rounding:
 /// |axes_i . axes_j - delta_ij| <= 16 * 2^-52 for every i, j (false for
@@ -490,56 +459,89 @@ inline bool obb_axes_orthonormal(const Obb& b) {
   return true;
 }
 
-/// fcl::collide(cylinder, box), num_max_contacts = 1, enable_contact,
-/// GST_LIBCCD (libccd's MPR with guarded support functions, as for the
-/// capsule). Normal from the cylinder towards the box; depth and normal are
-/// MPR's estimate, not the minimal translation. Not ok: invalid input,
-/// "box axes not orthonormal", or the guard stopped FCL.
-PeerContact fcl_collide(const Cylinder& a, const Obb& b);
+/// Whether s is one of the shapes FCL is asked about as a solid (fcl::Sphered,
+/// Capsuled, Boxd, Cylinderd; fcl_convert.hpp): the first shape of every
+/// pair, and the second of every pair but the triangle's.
+/// The list: X(S) for each solid (the adapter's explicit instantiations and
+/// kFclSolid follow from it).
+#define GEOMCHECK_FCL_SOLIDS(X) X(Sphere) X(Capsule) X(Obb) X(Cylinder)
+#define GEOMCHECK_FCL_IS(T) || std::is_same_v<S, T>
+template <class S>
+inline constexpr bool kFclSolid = false GEOMCHECK_FCL_SOLIDS(GEOMCHECK_FCL_IS);
+#undef GEOMCHECK_FCL_IS
 
-/// fcl::collide(cylinder, box) with enable_contact = false, GST_LIBCCD,
-/// guarded. false for invalid input, non-orthonormal axes, when FCL throws or
-/// the guard stopped it; then `*error` (if given) says why.
-bool fcl_overlap(const Cylinder& a, const Obb& b, std::string* error = nullptr);
+/// Whether the adapter asks FCL about the pair (A, B): a solid against a
+/// solid or a triangle (FCL's per-triangle narrow phase). Other pairs have no
+/// FCL answer (a peer reports them not supported) and need no code.
+template <class A, class B>
+inline constexpr bool kFclAsks = kFclSolid<A> && (kFclSolid<B> || std::is_same_v<B, Triangle>);
 
-/// fcl::distance(cylinder, box), enable_nearest_points, GST_LIBCCD (libccd's
-/// GJK, guarded): > 0 separated, exactly -1 when FCL sees them meet.
-PeerDistance fcl_distance(const Cylinder& a, const Obb& b);
+/// Whether FCL answers (A, B)'s collide with a closed form of its own
+/// (GJKSolver_libccd's shapeIntersect specialisations: sphere/sphere,
+/// box/box, a sphere against a capsule, box or cylinder, either order;
+/// shapeTriangleIntersect's sphere/triangle). Otherwise FCL runs libccd's
+/// MPR on the shapes' support functions, which the adapter runs guarded
+/// (never hangs, never aborts; the header notes), and its depth and normal
+/// are MPR's estimate, not the minimal translation; MPR's touching contact
+/// (zero normal, depth below libccd's CCD_EPS) is accepted.
+template <class A, class B>
+inline constexpr bool kFclClosedFormCollide =
+    (std::is_same_v<A, Sphere> && std::is_same_v<B, Sphere>) || (std::is_same_v<A, Obb> && std::is_same_v<B, Obb>) ||
+    (std::is_same_v<A, Sphere> && (std::is_same_v<B, Capsule> || std::is_same_v<B, Obb> ||
+                                   std::is_same_v<B, Cylinder> || std::is_same_v<B, Triangle>)) ||
+    (std::is_same_v<B, Sphere> && (std::is_same_v<A, Capsule> || std::is_same_v<A, Obb> || std::is_same_v<A, Cylinder>));
 
-/// FCL's per-triangle narrow phase (GJKSolver_libccd::shapeTriangleIntersect:
-/// libccd's MPR on the cylinder and FCL's triangle object, guarded), with
-/// contact. Normal from the cylinder towards the triangle. fcl::collide
-/// itself has no cylinder/triangle pair (see the header notes).
-PeerContact fcl_collide(const Cylinder& a, const Triangle& b);
+/// Whether FCL answers (A, B)'s distance with a closed form of its own
+/// (shapeDistance's sphere/sphere, capsule/capsule, a sphere against a box,
+/// capsule or cylinder, either order; shapeTriangleDistance's
+/// sphere/triangle). Otherwise libccd's GJK, run guarded.
+template <class A, class B>
+inline constexpr bool kFclClosedFormDistance =
+    (std::is_same_v<A, Sphere> && std::is_same_v<B, Sphere>) ||
+    (std::is_same_v<A, Capsule> && std::is_same_v<B, Capsule>) ||
+    (std::is_same_v<A, Sphere> && (std::is_same_v<B, Capsule> || std::is_same_v<B, Obb> ||
+                                   std::is_same_v<B, Cylinder> || std::is_same_v<B, Triangle>)) ||
+    (std::is_same_v<B, Sphere> && (std::is_same_v<A, Capsule> || std::is_same_v<A, Obb> || std::is_same_v<A, Cylinder>));
 
-/// shapeTriangleIntersect without contact, guarded. false for invalid input,
-/// when FCL throws or the guard stopped it; then `*error` (if given) says why.
-bool fcl_overlap(const Cylinder& a, const Triangle& b, std::string* error = nullptr);
+/// fcl::collide(a, b), num_max_contacts = 1, enable_contact, GST_LIBCCD (for
+/// a triangle B: GJKSolver_libccd::shapeTriangleIntersect with contact, what
+/// fcl::collide calls per triangle of a mesh; fcl::collide has no shape/
+/// triangle pair). The normal from a towards b. FCL's closed form where it
+/// has one, else libccd's MPR, guarded (kFclClosedFormCollide). Not ok:
+/// invalid input, "box axes not orthonormal", FCL threw, returned garbage or
+/// the guard stopped it. Defined for every pair with kFclAsks<A, B>.
+template <class A, class B>
+PeerContact fcl_collide(const A& a, const B& b);
 
-/// GJKSolver_libccd::shapeTriangleDistance (libccd's GJK, guarded): > 0
-/// separated, exactly -1 when FCL sees them meet.
-PeerDistance fcl_distance(const Cylinder& a, const Triangle& b);
+/// The same without contact (enable_contact = false), guarded the same way.
+/// false for invalid input, when FCL throws or the guard stopped it; then
+/// `*error` (if given) says why.
+template <class A, class B>
+bool fcl_overlap(const A& a, const B& b, std::string* error = nullptr);
 
-/// fcl::collide(cylinder, cylinder), num_max_contacts = 1, enable_contact,
-/// GST_LIBCCD (FCL has no closed form for this pair: libccd's MPR on the two
-/// cylinders' support functions, guarded as for the capsule). Normal from
-/// the first cylinder towards the second; depth and normal are MPR's
-/// estimate, not the minimal translation.
-PeerContact fcl_collide(const Cylinder& a, const Cylinder& b);
+/// fcl::distance(a, b), enable_nearest_points, GST_LIBCCD (a triangle B:
+/// shapeTriangleDistance): > 0 separated, exactly -1 when FCL sees them
+/// meet. FCL's closed form where it has one, else libccd's GJK, guarded and
+/// within its range (kFclClosedFormDistance).
+template <class A, class B>
+PeerDistance fcl_distance(const A& a, const B& b);
 
-/// fcl::collide(cylinder, cylinder) with enable_contact = false, GST_LIBCCD,
-/// guarded. false for invalid input, when FCL throws or the guard stopped
-/// it; then `*error` (if given) says why.
-bool fcl_overlap(const Cylinder& a, const Cylinder& b, std::string* error = nullptr);
+/// Whether FCL's continuous collision is asked about a ball (a segment: a
+/// ball of radius 0) moving against a resting B: a solid B.
+template <class B>
+inline constexpr bool kFclCasts = kFclSolid<B>;
 
-/// fcl::distance(cylinder, cylinder), enable_nearest_points, GST_LIBCCD
-/// (libccd's GJK, guarded): > 0 separated, exactly -1 when FCL sees them meet.
-PeerDistance fcl_distance(const Cylinder& a, const Cylinder& b);
+/// First touch of segment `s` (from s.a towards s.b) with the resting b, as
+/// far as FCL can tell: t within 1e-4, early (see the header notes).
+/// Defined for every B with kFclCasts<B>.
+template <class B>
+PeerCast fcl_cast(const Segment& s, const B& b, FclCastMethod method = FclCastMethod::kConservativeAdvancement);
 
 /// First touch of the moving ball `m` (centre m.c, radius m.r, moving by
-/// m.delta) with the resting cylinder, as far as FCL can tell: hit and t
-/// only, t within about 1e-4, early (see the header notes).
-PeerCast fcl_sweep(const MovingSphere& m, const Cylinder& c,
-                   FclCastMethod method = FclCastMethod::kConservativeAdvancement);
+/// m.delta) with the resting b, as far as FCL can tell: hit and t only, t
+/// within about 1e-4, early (see the header notes). Defined for every B with
+/// kFclCasts<B>.
+template <class B>
+PeerCast fcl_sweep(const MovingSphere& m, const B& b, FclCastMethod method = FclCastMethod::kConservativeAdvancement);
 
-}  // namespace geomcheck::oracles
+}  // namespace geomcheck::peers
