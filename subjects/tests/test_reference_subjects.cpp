@@ -102,7 +102,7 @@ TEST(ReferenceIterative, sweep_sphere_cylinder_float) {
 // Their siblings: the cylinder taken as a capsule, the advancement stopped
 // a million times too early.
 TEST(ReferenceIterative, SiblingsCaught) {
-  const int n = 2000;
+  const int n = GEOMCHECK_REFERENCE_SIBLING_CASES;
   const VerifyResult capsule = verify(
       ref::convex_subject<QueryId::collide_cylinder_obb, double>("gjk-rounded-caps", ref::Flaw::RoundedCaps),
       options("gjk-rounded-caps", kSeeds[0], n));
@@ -133,7 +133,7 @@ void expect_proxy_clean(const char* name) {
 template <QueryId Q>
 void expect_stretch_caught_in_float() {
   const auto s = ref::production_seen_in<Q, float>("stretched-in-float", 1 + 0x1p-10);
-  const VerifyResult r = verify<Q>(s, options(std::string("stretched-") + info(Q).name, kSeeds[0], 2000));
+  const VerifyResult r = verify<Q>(s, options(std::string("stretched-") + info(Q).name, kSeeds[0], GEOMCHECK_REFERENCE_SIBLING_CASES));
   EXPECT_GT(r.failures, 0) << "production seen in float with its first shape stretched by 2^-10 passes "
                            << info(Q).name;
 }
@@ -148,7 +148,7 @@ GEOMCHECK_QUERY_LIST(GEOMCHECK_X)
 // precisions (the float bounds are wide, not blind).
 template <class T>
 void expect_siblings_caught() {
-  const int n = 2000;
+  const int n = GEOMCHECK_REFERENCE_SIBLING_CASES;
   const VerifyResult deep = verify(ref::sphere_subject<T>("ref-deep-point", ref::Flaw::DeepPointOnFace),
                                    options("deep-point", kSeeds[0], n));
   EXPECT_GT(count(deep, "oracle-point"), 0) << "the point on the nearest face, outside a small ball";
