@@ -8,6 +8,8 @@
 
 #include "common.hpp"
 #include "geomcheck/collide_cylinder_triangle.hpp"
+#include "geomcheck/oracles/engine.hpp"
+#include "geomcheck/properties/tolerances.hpp"
 
 namespace geomcheck {
 
@@ -65,6 +67,77 @@ Contact first_face_collide(const Cylinder& a, const TriangleMesh& m, std::uint32
   return {};
 }
 
+/// A triangle subject answering `k` for the one face it is asked about,
+/// under `claims`: the door's mesh answer judged as a triangle answer.
+struct FaceAnswer {
+  Contact k;
+  CollideImpl<Cylinder, Triangle> impl;
+  FaceAnswer(const Contact& contact, const char* name, const Claims* claims)
+      : k(contact),
+        impl{name, [this](const Cylinder&, const Triangle&) { return k.hit; },
+             [this](const Cylinder&, const Triangle&) { return k; }, claims} {}
+  FaceAnswer(const FaceAnswer&) = delete;
+  FaceAnswer& operator=(const FaceAnswer&) = delete;
+};
+
+/// The certified penetration depth of the cylinder into face f, enclosed:
+/// [0, 0] where the face is certainly touching or apart, nothing where the
+/// verdict or the depth is not certified.
+std::optional<std::pair<double, double>> face_depth(const Cylinder& cyl, const Triangle& t,
+                                                    const std::optional<Evaluation>& e) {
+  if (!e || e->verdict == oracle::Verdict::Separated || e->verdict == oracle::Verdict::Touching)
+    return std::make_pair(0.0, 0.0);  // no evaluation: the face's box is apart
+  if (e->verdict != oracle::Verdict::Overlapping) return std::nullopt;
+  const oracle::PenetrationResult p = oracle::penetration(oracle::make_shape(cyl), oracle::make_shape(t), 1e-9);
+  if (!p.overlapping) return std::nullopt;
+  return std::make_pair(oracle::to_double_down(p.depth.lo), oracle::to_double_up(p.depth.hi));
+}
+
+/// check_mesh_oracle for a subject with claims of its own (MeshClaims).
+CheckResult check_own_claims(const Cylinder& cyl, const TriangleMesh& m, const MeshTruth& truth, const MeshImpl& impl,
+                             const MeshClaims& claims) {
+  std::uint32_t idx = kNoFace;
+  const Contact k = impl.collide(cyl, m, &idx);
+  if (!k.hit) {
+    // A miss: every face the truth finds overlapping or touching is judged
+    // with no hit under the subject's band; beyond it, a missed face.
+    const FaceAnswer none(Contact{}, impl.name, &claims.face);
+    for (std::uint32_t f = 0; f < m.size() && f < truth.faces.size(); ++f) {
+      if (!truth.faces[f] || !truth.faces[f]->truth_hit) continue;
+      const Evaluation e = evaluate(CylinderTriangleCase{cyl, m.triangle(f)}, none.impl);
+      for (const Failure& g : judge_every(kTriangle, e, &claims.face))
+        if (g.property == "oracle-verdict") return fail("oracle-verdict", "missed face " + std::to_string(f) + ": " + g.detail);
+    }
+    return std::nullopt;
+  }
+  if (idx >= m.size()) return fail("oracle-face", "reported face " + std::to_string(idx) + " out of range");
+  // The reported face's contact, judged as the triangle query's answer.
+  const FaceAnswer answer(k, impl.name, &claims.face);
+  const Evaluation e = evaluate(CylinderTriangleCase{cyl, m.triangle(idx)}, answer.impl);
+  if (auto g = judge(kTriangle, e, &claims.face))
+    return fail(g->property == "oracle-verdict" ? "oracle-verdict" : "oracle-face",
+                "face " + std::to_string(idx) + ": " + g->property + ": " + g->detail);
+  if (!claims.deepest) return std::nullopt;
+  // The deepest face: the reported face's penetration depth, certified,
+  // against every overlapping face's.
+  double ratio = claims.deepest_ratio;
+  if (ratio <= 0)
+    ratio = claims.face.depth == Claims::Depth::UpperBound ? tolerances(kTriangle).depth_ratio : 1.0;
+  const std::optional<Evaluation> none;
+  const auto mine = face_depth(cyl, m.triangle(idx), idx < truth.faces.size() ? truth.faces[idx] : none);
+  if (!mine) return std::nullopt;  // not certified: not judged
+  const double slack = 2 * e.tol.depth * e.scale;
+  for (std::uint32_t f = 0; f < m.size() && f < truth.faces.size(); ++f) {
+    if (f == idx || !truth.faces[f] || truth.faces[f]->verdict != oracle::Verdict::Overlapping) continue;
+    const auto other = face_depth(cyl, m.triangle(f), truth.faces[f]);
+    if (other && other->first > ratio * mine->second + slack)
+      return fail("deepest-face", "reported face " + std::to_string(idx) + " (penetration depth at most " +
+                                      fmt("%.17g", mine->second) + "), but face " + std::to_string(f) +
+                                      " is deeper (at least " + fmt("%.17g", other->first) + fmt(", ratio %.3g", ratio) + ")");
+  }
+  return std::nullopt;
+}
+
 }  // namespace
 
 const MeshImpl& production_mesh() {
@@ -95,9 +168,9 @@ const MeshImpl* mesh_subject(const std::string& name) {
 }
 
 CheckResult check_mesh_consistency(const Cylinder& cyl, const TriangleMesh& m, const MeshImpl& impl) {
-  const bool o = impl.overlap(cyl, m);
   std::uint32_t idx = kNoFace, idx_s = kNoFace;
   const Contact k = impl.collide(cyl, m, &idx);
+  const bool o = impl.overlap ? impl.overlap(cyl, m) : k.hit;
   if (k.hit != o) return fail("consistency", std::string("collide.hit ") + (k.hit ? "yes" : "no") + ", overlap " + (o ? "yes" : "no"));
   if (!is_valid(cyl) || !m.valid()) {
     if (o) return fail("robust", "invalid input (cylinder or mesh) gives a hit");
@@ -105,10 +178,15 @@ CheckResult check_mesh_consistency(const Cylinder& cyl, const TriangleMesh& m, c
   }
   if (k.hit && (!std::isfinite(k.depth) || !is_finite(k.normal) || !is_finite(k.point)))
     return fail("robust", "non-finite contact: " + describe(k));
-  const Contact s = impl.collide_flipped(m, cyl, &idx_s);
-  if (s.hit != k.hit || (k.hit && (idx_s != idx || !(s.normal == -k.normal && s.depth == k.depth && s.point == k.point))))
-    return fail("symmetry-argument-order", "collide(mesh, cylinder) is not the flipped collide(cylinder, mesh): " +
-                                               describe(s) + " (face " + std::to_string(idx_s) + ")");
+  if (impl.collide_flipped) {
+    const Contact s = impl.collide_flipped(m, cyl, &idx_s);
+    if (s.hit != k.hit || (k.hit && (idx_s != idx || !(s.normal == -k.normal && s.depth == k.depth && s.point == k.point))))
+      return fail("symmetry-argument-order", "collide(mesh, cylinder) is not the flipped collide(cylinder, mesh): " +
+                                                 describe(s) + " (face " + std::to_string(idx_s) + ")");
+  }
+  // A subject of its own claims: its answers are held to the truth
+  // (check_mesh_oracle), not to production's triangle query.
+  if (impl.claims) return std::nullopt;
   // The definition, face by face in index order: the verdict is "some face
   // overlaps" and the contact the deepest face's own (smallest index on ties).
   bool any = false;
@@ -170,6 +248,7 @@ MeshTruth mesh_truth(const Cylinder& cyl, const TriangleMesh& m) {
 CheckResult check_mesh_oracle(const Cylinder& cyl, const TriangleMesh& m, const MeshTruth& truth,
                               const MeshImpl& impl) {
   if (!truth.valid) return std::nullopt;  // the robust check's
+  if (impl.claims) return check_own_claims(cyl, m, truth, impl, *impl.claims);
   std::uint32_t idx = kNoFace;
   const Contact k = impl.collide(cyl, m, &idx);
   if (truth.robust_hit && !k.hit) return fail("oracle-verdict", "missed: " + truth.hit_text);

@@ -16,6 +16,11 @@
 //   * production only: its hierarchy and face filter give the answers of
 //     its brute force over every face, bit for bit (overlap, hit, depth,
 //     normal, point, face index);
+//   * a subject with claims of its own (MeshClaims: a user's, through the
+//     door) is held instead to what it claims, never to production's bits:
+//     no robust hit missed under its own verdict band, the reported face's
+//     contact judged as a triangle answer under its face claims, and the
+//     deepest face read against the faces' certified penetration depths;
 //   * the truth, face by face: a face the certified engine finds
 //     overlapping beyond the verdict band is not missed, and the reported
 //     face's contact meets every claim of collide_cylinder_triangle
@@ -44,13 +49,40 @@ struct MeshCase {
   std::string mode;
 };
 
-/// A subject of the mesh query (production, a known-wrong variant): both
-/// argument orders of collide and overlap, the face index as production's.
+/// What a subject of the mesh query claims (a user's, through the door);
+/// without claims a subject is held to production's yardsticks (its
+/// triangle query's answer and its brute force, bit for bit).
+struct MeshClaims {
+  /// The reported face's contact, as an answer of collide_cylinder_triangle
+  /// for the cylinder and that face, is held to these claims and to the
+  /// bounds of their precision (production's claims of that query by
+  /// default: a consistent contact, double precision).
+  Claims face = spec_of<QueryId::collide_cylinder_triangle>().claims;
+  /// The contact is the deepest face's: the reported face's certified
+  /// penetration depth times `deepest_ratio`, plus twice the face's depth
+  /// bound, is at least every face's (checked only where every enclosure
+  /// involved is certified).
+  bool deepest = true;
+  /// 0: from the face claims: 1 for a penetration depth, production's
+  /// bound of a consistent contact's depth over the penetration depth for
+  /// an upper bound (a subject choosing the face of its largest consistent
+  /// depth may pick a face that much shallower).
+  double deepest_ratio = 0;
+  /// Invalid input (an invalid cylinder, a non-finite vertex, an index out
+  /// of range) answered with no hit; without it such meshes are not asked.
+  bool any_input = false;
+};
+
+/// A subject of the mesh query (production, a known-wrong variant, a user's
+/// through the door): collide with the face index, and where given overlap
+/// (else collide's hit) and the flipped argument order (else not checked).
 struct MeshImpl {
   const char* name;
   Callable<bool(const Cylinder&, const TriangleMesh&)> overlap;
   Callable<Contact(const Cylinder&, const TriangleMesh&, std::uint32_t*)> collide;
   Callable<Contact(const TriangleMesh&, const Cylinder&, std::uint32_t*)> collide_flipped;
+  /// Null: production's yardsticks; else the subject's own (MeshClaims).
+  const MeshClaims* claims = nullptr;
 };
 
 /// Production's mesh query.
