@@ -35,27 +35,25 @@ template <> struct ShapeTraits<Sphere> {
   static void to(const Sphere& s, double* v) { ShapeTraits<Segment>::put(s.c, v); v[3] = s.r; }
   static Sphere from(const double* v) { return {ShapeTraits<Segment>::get(v), v[3]}; }
 };
-template <> struct ShapeTraits<Capsule> {
-  static constexpr const char* kind = "capsule";
+/// The fields of a solid around a segment: its ends p and q and its radius r
+/// (Capsule, Cylinder); the specialisations add the kind.
+template <class S> struct AxisRadiusTraits {
   static constexpr std::array<ShapeField, 3> fields{{{"p", 3}, {"q", 3}, {"r", 1}}};
   static constexpr std::size_t size = 7;
-  static void to(const Capsule& s, double* v) {
+  /// Stores p, q and r into v[0..7).
+  static void to(const S& s, double* v) {
     ShapeTraits<Segment>::put(s.p, v); ShapeTraits<Segment>::put(s.q, v + 3); v[6] = s.r;
   }
-  static Capsule from(const double* v) {
+  /// The solid of v[0..7) as stored by to().
+  static S from(const double* v) {
     return {ShapeTraits<Segment>::get(v), ShapeTraits<Segment>::get(v + 3), v[6]};
   }
 };
-template <> struct ShapeTraits<Cylinder> {
+template <> struct ShapeTraits<Capsule> : AxisRadiusTraits<Capsule> {
+  static constexpr const char* kind = "capsule";
+};
+template <> struct ShapeTraits<Cylinder> : AxisRadiusTraits<Cylinder> {
   static constexpr const char* kind = "cylinder";
-  static constexpr std::array<ShapeField, 3> fields{{{"p", 3}, {"q", 3}, {"r", 1}}};
-  static constexpr std::size_t size = 7;
-  static void to(const Cylinder& s, double* v) {
-    ShapeTraits<Segment>::put(s.p, v); ShapeTraits<Segment>::put(s.q, v + 3); v[6] = s.r;
-  }
-  static Cylinder from(const double* v) {
-    return {ShapeTraits<Segment>::get(v), ShapeTraits<Segment>::get(v + 3), v[6]};
-  }
 };
 template <> struct ShapeTraits<Obb> {
   static constexpr const char* kind = "obb";
