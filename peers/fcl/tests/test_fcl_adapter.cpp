@@ -15,26 +15,11 @@
 
 #include "geomcheck/peers/fcl_adapter.hpp"
 #include "geomcheck/peers/fcl_convert.hpp"
+#include "hand_cylinders.hpp"
 
 namespace geomcheck::peers {
 namespace {
 
-// Cylinder along z from z = -1 to z = 1, radius 1.
-const Cylinder kZ{{0, 0, -1}, {0, 0, 1}, 1.0};
-// The same solid with the caps swapped (axis -z): the anti-parallel rotation.
-const Cylinder kZFlipped{{0, 0, 1}, {0, 0, -1}, 1.0};
-// An oblique cylinder away from the origin: axis (2, 3, 6)/7, length 7.
-const Cylinder kOblique{{10, -4, 3}, {12, -1, 9}, 0.5};
-// kOblique's mid-point, unit axis, and a unit perpendicular to the axis,
-// (3, -2, 0)/sqrt(13).
-const Vec3 kObliqueMid{11, -2.5, 6};
-const Vec3 kObliqueAxis = (1.0 / 7) * Vec3{2, 3, 6};
-const Vec3 kObliquePerp = (1.0 / std::sqrt(13.0)) * Vec3{3, -2, 0};
-
-/// Tolerances of a contact check: on the depth and on the normal's direction.
-struct Tol {
-  double depth, normal;
-};
 /// FCL's closed form (cylinder/sphere): to rounding.
 constexpr Tol kClosedForm{1e-14, 1e-14};
 /// libccd's MPR (tolerance 1e-6, absolute) on the symmetric hand cases.

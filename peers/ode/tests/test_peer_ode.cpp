@@ -10,25 +10,11 @@
 
 #include "geomcheck/peers/ode.hpp"
 #include "geomcheck/verify.hpp"
+#include "hand_cylinders.hpp"
 
 namespace geomcheck::peers {
 namespace {
 
-// Cylinder along z from z = -1 to z = 1, radius 1.
-const Cylinder kZ{{0, 0, -1}, {0, 0, 1}, 1.0};
-// The same solid with the caps swapped (axis -z).
-const Cylinder kZFlipped{{0, 0, 1}, {0, 0, -1}, 1.0};
-// An oblique cylinder away from the origin: axis (2, 3, 6)/7, length 7,
-// radius 0.5, mid point (11, -2.5, 6); kPerp a unit perpendicular to the axis.
-const Cylinder kOblique{{10, -4, 3}, {12, -1, 9}, 0.5};
-const Vec3 kMid{11, -2.5, 6};
-const Vec3 kAxis = (1.0 / 7) * Vec3{2, 3, 6};
-const Vec3 kPerp = (1.0 / std::sqrt(13.0)) * Vec3{3, -2, 0};
-
-/// Tolerances of a hand case: on the depth and on the normal's direction.
-struct Tol {
-  double depth, normal;
-};
 /// ODE's native colliders (sphere, box, ray) on these cases: to rounding.
 constexpr Tol kNative{1e-12, 1e-12};
 /// ODE's box collider off the coordinate axes: 7.5e-9 off in depth on the
@@ -138,11 +124,12 @@ TEST(PeerOdeSphere, CentreInsideExitsThroughTheNearerCap) {
 
 TEST(PeerOdeSphere, RotatedCylinder) {
   // kOblique, a ball of radius 0.5 0.7 from the axis: 0.3 into the side.
-  expect_contact<kSphere>(kOblique, Sphere{kMid + 0.7 * kPerp, 0.5}, 0.3, kPerp, kNative);
-  expect_contact<kSphere>(kOblique, Sphere{kMid - 0.7 * kPerp, 0.5}, 0.3, -kPerp, kNative);
+  expect_contact<kSphere>(kOblique, Sphere{kObliqueMid + 0.7 * kObliquePerp, 0.5}, 0.3, kObliquePerp, kNative);
+  expect_contact<kSphere>(kOblique, Sphere{kObliqueMid - 0.7 * kObliquePerp, 0.5}, 0.3, -kObliquePerp, kNative);
   // 0.3 beyond the q cap along the axis: 0.2 deep, normal +axis.
-  expect_contact<kSphere>(kOblique, Sphere{kOblique.q + 0.3 * kAxis, 0.5}, 0.2, kAxis, kNative);
-  expect_contact<kSphere>(kOblique, Sphere{kOblique.p - 0.3 * kAxis + 0.1 * kPerp, 0.5}, 0.2, -kAxis, kNative);
+  expect_contact<kSphere>(kOblique, Sphere{kOblique.q + 0.3 * kObliqueAxis, 0.5}, 0.2, kObliqueAxis, kNative);
+  expect_contact<kSphere>(kOblique, Sphere{kOblique.p - 0.3 * kObliqueAxis + 0.1 * kObliquePerp, 0.5}, 0.2,
+                          -kObliqueAxis, kNative);
 }
 
 TEST(PeerOdeSphere, TouchingIsAContactOfDepthZero) {
@@ -152,7 +139,7 @@ TEST(PeerOdeSphere, TouchingIsAContactOfDepthZero) {
 TEST(PeerOdeSphere, Separated) {
   expect_separated<kSphere>(kZ, Sphere{{3, 0, 0}, 1.0});
   expect_separated<kSphere>(kZ, Sphere{{0, 0, 2.5}, 1.0});
-  expect_separated<kSphere>(kOblique, Sphere{kMid + 1.2 * kPerp, 0.5});
+  expect_separated<kSphere>(kOblique, Sphere{kObliqueMid + 1.2 * kObliquePerp, 0.5});
 }
 
 TEST(PeerOdeSphere, InvalidInputIsNoHitAndNotExpressed) {
@@ -185,11 +172,12 @@ TEST(PeerOdeCast, HitsTheSideAndTheCapWithTheOutwardNormal) {
 TEST(PeerOdeCast, RotatedCylinder) {
   // From 3 beyond the side of kOblique straight at the axis: the side (0.5
   // from the axis) is reached after 2.5 of 6.
-  const CastHit h = subject_of<kCast>().cast(Segment{kMid + 3.0 * kPerp, kMid - 3.0 * kPerp}, kOblique);
+  const CastHit h =
+      subject_of<kCast>().cast(Segment{kObliqueMid + 3.0 * kObliquePerp, kObliqueMid - 3.0 * kObliquePerp}, kOblique);
   ASSERT_TRUE(h.hit);
   EXPECT_NEAR(h.t, 2.5 / 6, 1e-14);
-  EXPECT_NEAR(length(h.normal - kPerp), 0.0, 1e-12);
-  EXPECT_NEAR(length(h.point - (kMid + 0.5 * kPerp)), 0.0, 1e-12);
+  EXPECT_NEAR(length(h.normal - kObliquePerp), 0.0, 1e-12);
+  EXPECT_NEAR(length(h.point - (kObliqueMid + 0.5 * kObliquePerp)), 0.0, 1e-12);
 }
 
 TEST(PeerOdeCast, StartInsideIsTimeZero) {
@@ -230,13 +218,15 @@ TEST(PeerOdeCapsule, RotatedCylinder) {
   // A capsule across kOblique's q cap, its segment 0.3 beyond the cap plane
   // and 0.1 off the axis line. (On the axis line, the centres' difference
   // along the axis, ODE's MPR misses this 0.2 deep overlap: see the header.)
-  const Vec3 c = kOblique.q + 0.3 * kAxis + 0.1 * cross(kAxis, kPerp);
-  expect_contact<kCapsule>(kOblique, Capsule{c - 0.4 * kPerp, c + 0.4 * kPerp, 0.5}, 0.2, kAxis, kMpr);
+  const Vec3 c = kOblique.q + 0.3 * kObliqueAxis + 0.1 * cross(kObliqueAxis, kObliquePerp);
+  expect_contact<kCapsule>(kOblique, Capsule{c - 0.4 * kObliquePerp, c + 0.4 * kObliquePerp, 0.5}, 0.2, kObliqueAxis,
+                           kMpr);
 }
 
 TEST(PeerOdeCapsule, Separated) {
   expect_separated<kCapsule>(kZ, Capsule{{2, 0, -1}, {2, 0, 1}, 0.5});
-  expect_separated<kCapsule>(kOblique, Capsule{kMid + 1.5 * kPerp, kMid + 1.5 * kPerp + kAxis, 0.5});
+  expect_separated<kCapsule>(
+      kOblique, Capsule{kObliqueMid + 1.5 * kObliquePerp, kObliqueMid + 1.5 * kObliquePerp + kObliqueAxis, 0.5});
 }
 
 // --- cylinder / box (dCollideCylinderBox) -------------------------------------------
@@ -259,11 +249,11 @@ TEST(PeerOdeObb, OnTheCapAndBesideTheSide) {
 TEST(PeerOdeObb, RotatedCylinderAndBox) {
   // A box aligned with kOblique's frame, half extent 0.5 along the axis,
   // its centre 0.25 beyond the q cap: 0.25 deep along +axis.
-  const Vec3 e2 = cross(kAxis, kPerp);
-  const Obb box{kOblique.q + 0.25 * kAxis, {{kPerp, e2, kAxis}}, {0.3, 0.3, 0.5}};
-  expect_contact<kObb>(kOblique, box, 0.25, kAxis, kBoxRotated);
-  const Obb beside{kMid + 0.75 * kPerp, {{kPerp, e2, kAxis}}, {0.5, 0.3, 0.3}};
-  expect_contact<kObb>(kOblique, beside, 0.25, kPerp, kBoxRotated);
+  const Vec3 e2 = cross(kObliqueAxis, kObliquePerp);
+  const Obb box{kOblique.q + 0.25 * kObliqueAxis, {{kObliquePerp, e2, kObliqueAxis}}, {0.3, 0.3, 0.5}};
+  expect_contact<kObb>(kOblique, box, 0.25, kObliqueAxis, kBoxRotated);
+  const Obb beside{kObliqueMid + 0.75 * kObliquePerp, {{kObliquePerp, e2, kObliqueAxis}}, {0.5, 0.3, 0.3}};
+  expect_contact<kObb>(kOblique, beside, 0.25, kObliquePerp, kBoxRotated);
 }
 
 TEST(PeerOdeObb, SeparatedAndRefused) {
@@ -319,10 +309,10 @@ TEST(PeerOdeTriangle, BothWindingsAreTheSameClosedTriangle) {
 TEST(PeerOdeTriangle, RotatedCylinder) {
   // A triangle in the plane perpendicular to kOblique's axis, 0.2 below the
   // q cap, spanning the whole disc: 0.2 deep along +axis.
-  const Vec3 e2 = cross(kAxis, kPerp);
-  const Vec3 c = kOblique.q - 0.2 * kAxis;
-  const Triangle t{c + 2.0 * kPerp, c - kPerp + 2.0 * e2, c - kPerp - 2.0 * e2};
-  expect_contact<kTriangle>(kOblique, t, 0.2, kAxis, kTrimesh);
+  const Vec3 e2 = cross(kObliqueAxis, kObliquePerp);
+  const Vec3 c = kOblique.q - 0.2 * kObliqueAxis;
+  const Triangle t{c + 2.0 * kObliquePerp, c - kObliquePerp + 2.0 * e2, c - kObliquePerp - 2.0 * e2};
+  expect_contact<kTriangle>(kOblique, t, 0.2, kObliqueAxis, kTrimesh);
 }
 
 TEST(PeerOdeTriangle, SeparatedAndDegenerate) {
@@ -343,10 +333,10 @@ TEST(PeerOdeCylinder, CoaxialParallelAndCrossed) {
 }
 
 TEST(PeerOdeCylinder, RotatedCylinders) {
-  // A cylinder across kOblique's q cap (axis kPerp), 0.2 into it, 0.1 off
+  // A cylinder across kOblique's q cap (axis kObliquePerp), 0.2 into it, 0.1 off
   // the axis line (on it ODE's MPR misses, as for the capsule).
-  const Vec3 c = kOblique.q + 0.3 * kAxis + 0.1 * cross(kAxis, kPerp);
-  expect_contact<kCylinder>(kOblique, Cylinder{c - kPerp, c + kPerp, 0.5}, 0.2, kAxis, kMpr);
+  const Vec3 c = kOblique.q + 0.3 * kObliqueAxis + 0.1 * cross(kObliqueAxis, kObliquePerp);
+  expect_contact<kCylinder>(kOblique, Cylinder{c - kObliquePerp, c + kObliquePerp, 0.5}, 0.2, kObliqueAxis, kMpr);
 }
 
 TEST(PeerOdeCylinder, CylindersTooShortForLibccdAreRefused) {
