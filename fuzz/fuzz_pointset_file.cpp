@@ -10,13 +10,8 @@
 #include "geomcheck/pointset_file.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-  const std::string_view text(reinterpret_cast<const char*>(data), size);
-  const geomcheck::PointSetParseResult r = geomcheck::parse_point_set(text);
-  if (const auto broken =
-          geomcheck::detail::broken_round_trip(r, &geomcheck::parse_point_set, &geomcheck::write_point_set)) {
-    std::fputs(broken->c_str(), stderr);
-    std::abort();
-  }
+  const geomcheck::PointSetParseResult r =
+      geomcheck::detail::parse_or_abort(data, size, &geomcheck::parse_point_set, &geomcheck::write_point_set);
   if (!r.ok()) return 0;
   // The verdict of any parsed point set is one of the known words.
   const std::string_view verdict = geomcheck::classify_point_set(r.value.points);

@@ -96,8 +96,7 @@ class Parser : public detail::LineParser<Parser, MeshFile> {
     if (have_cylinder_) return fail(n, "duplicate 'cylinder' line");
     stage_ = Stage::Body;
     std::string_view tokens[7];
-    const std::size_t count = detail::value_tokens(rest, tokens, 7);
-    if (count != 7) return fail(n, "'cylinder' takes 7 values (p, q, r), got " + std::to_string(count));
+    if (!exactly(tokens, rest, n, "cylinder", "values (p, q, r)")) return false;
     double v[7];
     if (auto e = detail::parse_values(tokens, 7, v, "in 'cylinder'", "")) return fail(n, *e);
     file_.cylinder = {{v[0], v[1], v[2]}, {v[3], v[4], v[5]}, v[6]};
@@ -105,12 +104,18 @@ class Parser : public detail::LineParser<Parser, MeshFile> {
     return true;
   }
 
+  /// Whether a `word` line may come: after the cylinder line, and fewer
+  /// than `limit` such lines (`held` so far, called `plural`) before it.
+  bool room_for(const char* word, std::size_t held, std::size_t limit, const char* plural, int n) {
+    if (!have_cylinder_) return fail(n, "'" + std::string(word) + "' before the 'cylinder' line");
+    if (held >= limit) return fail(n, too_many(plural, limit));
+    return true;
+  }
+
   bool vertex(std::string_view rest, int n) {
-    if (!have_cylinder_) return fail(n, "'vertex' before the 'cylinder' line");
-    if (file_.vertices.size() >= kMaxMeshVertices) return fail(n, too_many("vertices", kMaxMeshVertices));
+    if (!room_for("vertex", file_.vertices.size(), kMaxMeshVertices, "vertices", n)) return false;
     std::string_view tokens[3];
-    const std::size_t count = detail::value_tokens(rest, tokens, 3);
-    if (count != 3) return fail(n, "'vertex' takes 3 values (x y z), got " + std::to_string(count));
+    if (!exactly(tokens, rest, n, "vertex", "values (x y z)")) return false;
     double v[3];
     if (auto e = detail::parse_values(tokens, 3, v, "in 'vertex'", "")) return fail(n, *e);
     file_.vertices.push_back({v[0], v[1], v[2]});
@@ -118,11 +123,9 @@ class Parser : public detail::LineParser<Parser, MeshFile> {
   }
 
   bool face(std::string_view rest, int n) {
-    if (!have_cylinder_) return fail(n, "'face' before the 'cylinder' line");
-    if (file_.faces.size() >= kMaxMeshFaces) return fail(n, too_many("faces", kMaxMeshFaces));
+    if (!room_for("face", file_.faces.size(), kMaxMeshFaces, "faces", n)) return false;
     std::string_view tokens[3];
-    const std::size_t count = detail::value_tokens(rest, tokens, 3);
-    if (count != 3) return fail(n, "'face' takes 3 vertex indices, got " + std::to_string(count));
+    if (!exactly(tokens, rest, n, "face", "vertex indices")) return false;
     MeshFace f{};
     for (int k = 0; k < 3; ++k)
       if (!parse_index(tokens[k], f[k]))

@@ -66,8 +66,7 @@ class Parser : public detail::LineParser<Parser, PointSetFile> {
     if (!have_query_) return fail(n, "'point' before the 'query' line");
     stage_ = Stage::Body;
     std::string_view tokens[2];
-    const std::size_t count = detail::value_tokens(rest, tokens, 2);
-    if (count != 2) return fail(n, "'point' takes 2 values (x y), got " + std::to_string(count));
+    if (!exactly(tokens, rest, n, "point", "values (x y)")) return false;
     double v[2] = {0, 0};
     if (auto e = detail::parse_values(tokens, 2, v, "in 'point'", "")) return fail(n, *e);
     file_.points.push_back(Vec2{v[0], v[1]});

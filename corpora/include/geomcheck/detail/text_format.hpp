@@ -29,6 +29,8 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <optional>
 #include <string>
@@ -230,6 +232,16 @@ class LineParser {
     return true;
   }
 
+  /// Splits `rest`, the values of a `word` line, into tokens[0..k); unless
+  /// there are exactly k, fails with "'word' takes k <what>, got N".
+  template <std::size_t k>
+  bool exactly(std::string_view (&tokens)[k], std::string_view rest, int n, const char* word, const char* what) {
+    const std::size_t count = value_tokens(rest, tokens, k);
+    if (count == k) return true;
+    return fail(n, std::string("'") + word + "' takes " + std::to_string(k) + " " + what + ", got " +
+                       std::to_string(count));
+  }
+
   File file_;                    ///< the value being parsed (meta lines aside)
   MetaLines meta_;               ///< found-by, oracle-verdict and note so far
   Stage stage_ = Stage::Header;  ///< where in the file the next line is
@@ -337,6 +349,23 @@ std::optional<std::string> broken_round_trip(const BasicParseResult<File>& r,
   const BasicParseResult<File> again = parse(written);
   if (!again.ok() || !(again.value == r.value)) return "round trip failed: " + again.error + "\n" + written + "\n";
   return std::nullopt;
+}
+
+/// The body of a format's fuzz target: parses the input `data` (`size`
+/// bytes, as text) with `parse` and, where broken_round_trip finds the
+/// promise broken, prints its report to stderr and aborts (so that libFuzzer
+/// keeps the input). Returns the parse, for the target's further checks.
+template <class File>
+BasicParseResult<File> parse_or_abort(const std::uint8_t* data, std::size_t size,
+                                      BasicParseResult<File> (*parse)(std::string_view),
+                                      std::string (*write)(const File&)) {
+  const std::string_view text(reinterpret_cast<const char*>(data), size);
+  BasicParseResult<File> r = parse(text);
+  if (const auto broken = broken_round_trip(r, parse, write)) {
+    std::fputs(broken->c_str(), stderr);
+    std::abort();
+  }
+  return r;
 }
 
 }  // namespace geomcheck::detail
