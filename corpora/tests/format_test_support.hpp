@@ -111,6 +111,16 @@ void expect_texts_round_trip(const File& f, BasicParseResult<File> (*parse)(std:
   EXPECT_EQ(r.value, f);
 }
 
+/// expect_texts_round_trip of `f` with a found-by of two lines holding a
+/// backslash, '#', a tab and a trailing blank, and the note kAwkwardNote.
+template <class File>
+void expect_awkward_texts_round_trip(File f, BasicParseResult<File> (*parse)(std::string_view),
+                                     std::string (*write)(const File&)) {
+  f.found_by = "fuzz crash-0123\n second line\\ with # and\ttab ";
+  f.note = kAwkwardNote;
+  expect_texts_round_trip(f, parse, write);
+}
+
 /// The statement lines `lines` framed as a hand-edited file may be: a UTF-8
 /// byte-order mark and a comment line, a blank line, the header line with a
 /// comment, then the lines, then "end # done", a comment line and a blank
