@@ -94,6 +94,16 @@ bool expresses_case(const Case& c) {
 // dimensions to the exact half extents (setMargin(0) alone recomputes them as
 // (h - 0.04) + 0.04, which rounds).
 
+/// A shape along z (btCylinderShapeZ, btCapsuleShapeZ) of radius r on the
+/// axis frame: its implicit dimensions set to the exact (r, r, frame.half),
+/// `object` holding it at the frame's pose.
+template <class Shape>
+void place_on_axis(Shape& shape, btCollisionObject& object, const AxisFrame& frame, double r) {
+  shape.setImplicitShapeDimensions(btVector3(r, r, frame.half));
+  object.setCollisionShape(&shape);
+  object.setWorldTransform(frame.pose);
+}
+
 /// Cylinder{p, q, r}: btCylinderShapeZ, half extents (r, r, |q - p| / 2),
 /// margin 0, at the axis frame.
 struct BtCylinder {
@@ -103,9 +113,7 @@ struct BtCylinder {
   explicit BtCylinder(const Cylinder& c)
       : frame(axis_frame(c.p, c.q)), shape(btVector3(c.r, c.r, frame.half)) {
     shape.setMargin(0);
-    shape.setImplicitShapeDimensions(btVector3(c.r, c.r, frame.half));
-    object.setCollisionShape(&shape);
-    object.setWorldTransform(frame.pose);
+    place_on_axis(shape, object, frame, c.r);
   }
 };
 
@@ -126,9 +134,7 @@ struct BtCapsule {
   btCapsuleShapeZ shape;
   btCollisionObject object;
   explicit BtCapsule(const Capsule& c) : frame(axis_frame(c.p, c.q)), shape(c.r, 0) {
-    shape.setImplicitShapeDimensions(btVector3(c.r, c.r, frame.half));
-    object.setCollisionShape(&shape);
-    object.setWorldTransform(frame.pose);
+    place_on_axis(shape, object, frame, c.r);
   }
 };
 
@@ -264,6 +270,20 @@ bool bullet_overlap(const Cylinder& a, const B& b) {
   return bullet_collide(a, b).hit;
 }
 
+/// The hit a ray or convex sweep callback kept (ClosestRayResultCallback,
+/// ClosestConvexResultCallback): its fraction, point and normal; no hit
+/// when it found none.
+template <class Callback>
+CastHit first_hit(const Callback& cb) {
+  if (!cb.hasHit()) return {};
+  CastHit h;
+  h.hit = true;
+  h.t = cb.m_closestHitFraction;
+  h.point = from_bt(cb.m_hitPointWorld);
+  h.normal = from_bt(cb.m_hitNormalWorld);
+  return h;
+}
+
 /// Segment cast: the start inside (a zero-radius sphere at s.a in contact
 /// with the cylinder: getDistance() <= 0) is t = 0; otherwise rayTest from
 /// s.a to s.b with a ClosestRayResultCallback.
@@ -277,13 +297,7 @@ CastHit bullet_cast(const Segment& s, const Cylinder& c) {
   const InWorld in(cyl.object);
   btCollisionWorld::ClosestRayResultCallback cb(to_bt(s.a), to_bt(s.b));
   world().rayTest(to_bt(s.a), to_bt(s.b), cb);
-  if (!cb.hasHit()) return {};
-  CastHit h;
-  h.hit = true;
-  h.t = cb.m_closestHitFraction;
-  h.point = from_bt(cb.m_hitPointWorld);
-  h.normal = from_bt(cb.m_hitNormalWorld);
-  return h;
+  return first_hit(cb);
 }
 
 /// Sphere sweep: the ball meeting the cylinder at t = 0 (contactPairTest,
@@ -306,13 +320,7 @@ CastHit bullet_sweep(const MovingSphere& m, const Cylinder& c) {
   const btTransform from = translation(m.c), to = translation(m.c + m.delta);
   btCollisionWorld::ClosestConvexResultCallback cb(from.getOrigin(), to.getOrigin());
   world().convexSweepTest(&ball.shape, from, to, cb);
-  if (!cb.hasHit()) return {};
-  CastHit h;
-  h.hit = true;
-  h.t = cb.m_closestHitFraction;
-  h.point = from_bt(cb.m_hitPointWorld);
-  h.normal = from_bt(cb.m_hitNormalWorld);
-  return h;
+  return first_hit(cb);
 }
 
 // --- claims ----------------------------------------------------------------------
@@ -373,6 +381,14 @@ PeerSubject<Q> collide_peer() {
   return {&subject, [](const typename QueryTraits<Q>::Case& c) { return expresses_case(c); }, engine_name()};
 }
 
+/// The subject of the cast or sweep query Q: `entry` (bullet_cast,
+/// bullet_sweep) under moving_claims<Q>(normal).
+template <QueryId Q, auto entry>
+PeerSubject<Q> moving_peer(const char* normal) {
+  static const ImplOf<Q> subject{"Bullet", entry, moving_claims<Q>(normal)};
+  return {&subject, [](const typename QueryTraits<Q>::Case& c) { return expresses_case(c); }, engine_name()};
+}
+
 }  // namespace
 
 /// Whether Bullet has a shape for geomcheck's shape S (BtOf<S>).
@@ -396,17 +412,13 @@ PeerSubject<Q> peer_bullet() {
   if constexpr (kind == QueryKind::Collide && std::is_same_v<A, Cylinder> && HasBt<B>::value) {
     return collide_peer<Q>();
   } else if constexpr (kind == QueryKind::Cast && std::is_same_v<B, Cylinder>) {
-    static const ImplOf<Q> subject{
-        "Bullet", [](const Segment& s, const Cylinder& c) { return bullet_cast(s, c); },
-        moving_claims<Q>("rayTest's m_hitNormalWorld: the cylinder's outward normal at the hit (zero when the "
-                         "segment starts inside: contactPairTest of a zero-radius sphere at the start)")};
-    return {&subject, [](const typename QueryTraits<Q>::Case& c) { return expresses_case(c); }, engine_name()};
+    return moving_peer<Q, &bullet_cast>(
+        "rayTest's m_hitNormalWorld: the cylinder's outward normal at the hit (zero when the segment starts inside: "
+        "contactPairTest of a zero-radius sphere at the start)");
   } else if constexpr (kind == QueryKind::Sweep && std::is_same_v<B, Cylinder>) {
-    static const ImplOf<Q> subject{
-        "Bullet", [](const MovingSphere& m, const Cylinder& c) { return bullet_sweep(m, c); },
-        moving_claims<Q>("convexSweepTest's m_hitNormalWorld: the cylinder's normal towards the ball at t (zero "
-                         "when the ball meets the cylinder at t = 0: contactPairTest)")};
-    return {&subject, [](const typename QueryTraits<Q>::Case& c) { return expresses_case(c); }, engine_name()};
+    return moving_peer<Q, &bullet_sweep>(
+        "convexSweepTest's m_hitNormalWorld: the cylinder's normal towards the ball at t (zero when the ball meets "
+        "the cylinder at t = 0: contactPairTest)");
   } else {
     return {};
   }
