@@ -315,38 +315,36 @@ const char* engine_name() {
   return name.c_str();
 }
 
+/// What MuJoCo claims on top of a query's spec `spec` (whose truth is
+/// production's): an inexact verdict, the point in both shapes, touching
+/// not a contact, no margin; its depth `depth` and its normal `normal`.
+Claims mujoco_claims(const Claims& spec, Claims::Depth depth, const char* normal) {
+  Claims c = spec;
+  c.exact_verdict = false;
+  c.depth = depth;
+  c.point_in_both = true;
+  c.normal = normal;
+  c.touching_is_contact = false;
+  c.margin = 0;
+  return c;
+}
+
 /// What MuJoCo claims for a collide query (the header's "Claims").
 template <QueryId Q>
 const Claims* collide_claims() {
-  static const Claims claims = [] {
-    Claims c = spec_of<Q>().claims;  // the truth is production's
-    c.exact_verdict = false;
-    c.depth = Claims::Depth::Penetration;
-    c.point_in_both = true;
-    c.normal =
-        "MuJoCo's contact normal (libccd MPR's direction, then mjc_fixNormal's analytic normal for a sphere, a "
-        "capsule and a cylinder's curved side), negated when B is MuJoCo's geom 1: from the cylinder towards B";
-    c.touching_is_contact = false;
-    c.margin = 0;
-    return c;
-  }();
+  static const Claims claims = mujoco_claims(
+      spec_of<Q>().claims, Claims::Depth::Penetration,
+      "MuJoCo's contact normal (libccd MPR's direction, then mjc_fixNormal's analytic normal for a sphere, a "
+      "capsule and a cylinder's curved side), negated when B is MuJoCo's geom 1: from the cylinder towards B");
   return &claims;
 }
 
 /// What MuJoCo claims for the cast.
 const Claims* cast_claims() {
-  static const Claims claims = [] {
-    Claims c = spec_of<QueryId::cast_segment_cylinder>().claims;
-    c.exact_verdict = false;
-    c.depth = Claims::Depth::None;
-    c.point_in_both = true;
-    c.normal =
-        "the cylinder's outward normal at MuJoCo's hit point (cap or curved side, whichever surface is nearer; "
-        "mju_rayGeom gives no normal); zero when the segment starts inside";
-    c.touching_is_contact = false;
-    c.margin = 0;
-    return c;
-  }();
+  static const Claims claims = mujoco_claims(
+      spec_of<QueryId::cast_segment_cylinder>().claims, Claims::Depth::None,
+      "the cylinder's outward normal at MuJoCo's hit point (cap or curved side, whichever surface is nearer; "
+      "mju_rayGeom gives no normal); zero when the segment starts inside");
   return &claims;
 }
 
