@@ -40,6 +40,14 @@ constexpr double kCcdEps = 2.220446049250313e-16;
 inline std::string describe(const std::exception& e) { return std::string("FCL threw: ") + e.what(); }
 constexpr const char* kUnknownThrow = "FCL threw a non-standard exception";
 
+/// An answer R that is not ok, saying `why` (its other fields as a default R).
+template <class R>
+R failed(std::string why) {
+  R out;
+  out.error = std::move(why);
+  return out;
+}
+
 /// Runs f() and returns its answer; an exception (FCL's, Eigen's, a
 /// conversion's) becomes an answer R that is not ok, saying why.
 template <class R, class F>
@@ -47,13 +55,9 @@ R guarded(F&& f) {
   try {
     return f();
   } catch (const std::exception& e) {
-    R out;
-    out.error = describe(e);
-    return out;
+    return failed<R>(describe(e));
   } catch (...) {
-    R out;
-    out.error = kUnknownThrow;
-    return out;
+    return failed<R>(kUnknownThrow);
   }
 }
 /// guarded(f), an exception's reason kept in `out` (its other fields as they were).
@@ -103,11 +107,8 @@ const char* refusal(const A& a, const B& b) {
 /// asked (see `refusal`); otherwise f()'s answer, guarded.
 template <class R, class A, class B, class F>
 R validated(const A& a, const B& b, F&& f) {
+  if (const char* why = refusal(a, b)) return failed<R>(why);
   R out;
-  if (const char* why = refusal(a, b)) {
-    out.error = why;
-    return out;
-  }
   return guarded_into(out, std::forward<F>(f));
 }
 

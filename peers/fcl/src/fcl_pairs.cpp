@@ -97,11 +97,7 @@ PeerContact fcl_collide(const A& a, const B& b) {
       return fcl_collide_prepared(pair);
     } else {
       const MprAnswer r = guarded_mpr(libccd(pair.a), libccd(pair.b), true);
-      if (r.error) {
-        PeerContact out;
-        out.error = r.error;
-        return out;
-      }
+      if (r.error) return failed<PeerContact>(r.error);
       if (!r.hit) return no_contact();
       return contact_from(r.point, r.normal, r.depth, true);
     }
@@ -130,11 +126,7 @@ PeerDistance fcl_distance(const A& a, const B& b) {
     if constexpr (kFclClosedFormDistance<A, B>) {
       return fcl_distance_prepared(pair);
     } else {
-      if (!within_gjk_range(a, b)) {
-        PeerDistance out;
-        out.error = "outside FCL's range";
-        return out;
-      }
+      if (!within_gjk_range(a, b)) return failed<PeerDistance>("outside FCL's range");
       return guarded_gjk_distance(libccd(pair.a), libccd(pair.b));
     }
   });
