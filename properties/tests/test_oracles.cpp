@@ -3,6 +3,9 @@
 // the certification of square-root brackets.
 #include <gtest/gtest.h>
 
+#include <cstdint>
+#include <vector>
+
 #include "geomcheck/properties/generators.hpp"
 #include "geomcheck/oracles/cast_segment_cylinder.hpp"
 #include "geomcheck/oracles/cylinder_sphere.hpp"
@@ -11,6 +14,17 @@ namespace geomcheck::oracle {
 namespace {
 
 const Cylinder kUnit{{0, 0, 0}, {0, 0, 2}, 1};  // radius 1, caps at z = 0 and z = 2
+
+/// The first `count` cases of query Q's targeted generator from seed `seed`
+/// (each from the next split of the random stream, at size 50).
+template <QueryId Q>
+std::vector<typename QueryTraits<Q>::Case> targeted_cases(std::uint64_t seed, int count) {
+  const auto gen = gen::targeted<Q>();
+  rc::Random random(seed);
+  std::vector<typename QueryTraits<Q>::Case> cases;
+  for (int i = 0; i < count; ++i) cases.push_back(gen(random.split(), 50).value().first);
+  return cases;
+}
 
 TEST(oracle_cylinder_sphere, hand_cases) {
   // Beside the side: distance 3 - 1 - 1 = 1, exactly.
@@ -103,11 +117,8 @@ TEST(oracle_cast, hand_cases) {
 TEST(oracle_cross, point_oracle_agrees_with_zero_length_cast) {
   // A zero-length segment hits iff its point is in the cylinder: the two
   // oracles reach that by different algebra.
-  const auto gen = gen::targeted<QueryId::collide_cylinder_sphere>();
-  rc::Random random(7);
   int inside = 0;
-  for (int i = 0; i < 3000; ++i) {
-    const auto c = gen(random.split(), 50).value().first;
+  for (const auto& c : targeted_cases<QueryId::collide_cylinder_sphere>(7, 3000)) {
     const Segment s{c.b.c, c.b.c};
     const bool in = signed_distance(to_q(c.a), to_q(c.b.c)).hi <= 0;
     const auto cast = solve_cast(s, c.a);
@@ -123,11 +134,8 @@ TEST(oracle_cross, point_oracle_agrees_with_zero_length_cast) {
 TEST(oracle_cross, cast_t_brackets_the_surface) {
   // At the certified t the segment point is on the surface: the signed
   // distance of S(t_lo) is >= 0 and of S(t_hi) <= 0 (for entries from outside).
-  const auto gen = gen::targeted<QueryId::cast_segment_cylinder>();
-  rc::Random random(11);
   int checked = 0;
-  for (int i = 0; i < 2000; ++i) {
-    const auto c = gen(random.split(), 50).value().first;
+  for (const auto& c : targeted_cases<QueryId::cast_segment_cylinder>(11, 2000)) {
     const auto t = solve_cast(c.a, c.b);
     if (!t.hit || t.feature == CastFeature::StartInside) continue;
     const auto qs = to_q(c.a);
