@@ -189,27 +189,46 @@ const SweepSphereCylinderImpl kSweepTalkRimPoint = {
       return detail::sweep_with(Sphere{m.c, m.r}, m.delta, c, detail::SweepStage2::TalkRimPoint);
     }};
 
-const CylinderObbImpl kBoxAsCapsule = {
-    "box-as-capsule",
-    [](const Cylinder& c, const Obb& b) { return detail::overlap_with_stage(c, b, detail::ObbCapStage::Capsule); },
-    [](const Cylinder& c, const Obb& b) { return detail::collide_with_stage(c, b, detail::ObbCapStage::Capsule); }};
-const CylinderObbImpl kBoxTalkRays = {
-    "box-talk-rays",
-    [](const Cylinder& c, const Obb& b) { return detail::overlap_with_stage(c, b, detail::ObbCapStage::TalkRays); },
-    [](const Cylinder& c, const Obb& b) { return detail::collide_with_stage(c, b, detail::ObbCapStage::TalkRays); }};
+namespace {
+/// overlap() of the cylinder against B with the cap stage `stage`
+/// (detail::overlap_with_stage).
+template <class B, auto stage>
+bool overlap_with(const Cylinder& c, const B& b) {
+  return detail::overlap_with_stage(c, b, stage);
+}
+/// collide() of the cylinder against B with the cap stage `stage`
+/// (detail::collide_with_stage).
+template <class B, auto stage>
+Contact collide_with(const Cylinder& c, const B& b) {
+  return detail::collide_with_stage(c, b, stage);
+}
+/// collide() of the cylinder against B without the circle search
+/// (detail::collide_consistent).
+template <class B>
+Contact collide_without_circle_search(const Cylinder& c, const B& b) {
+  return detail::collide_consistent(c, b, false);
+}
+/// Production's overlap() of the cylinder against B.
+template <class B>
+bool production_overlap(const Cylinder& c, const B& b) {
+  return overlap(c, b);
+}
+}  // namespace
 
-const CylinderObbImpl kBoxNoCircleSearch = {
-    "box-without-circle-search", [](const Cylinder& c, const Obb& b) { return overlap(c, b); },
-    [](const Cylinder& c, const Obb& b) { return detail::collide_consistent(c, b, false); }};
+const CylinderObbImpl kBoxAsCapsule = {"box-as-capsule", &overlap_with<Obb, detail::ObbCapStage::Capsule>,
+                                       &collide_with<Obb, detail::ObbCapStage::Capsule>};
+const CylinderObbImpl kBoxTalkRays = {"box-talk-rays", &overlap_with<Obb, detail::ObbCapStage::TalkRays>,
+                                      &collide_with<Obb, detail::ObbCapStage::TalkRays>};
 
-const CylinderTriangleImpl kTriangleNoCapStage = {
-    "triangle-without-cap-stage",
-    [](const Cylinder& c, const Triangle& t) { return detail::overlap_with_stage(c, t, detail::TriCapStage::None); },
-    [](const Cylinder& c, const Triangle& t) { return detail::collide_with_stage(c, t, detail::TriCapStage::None); }};
+const CylinderObbImpl kBoxNoCircleSearch = {"box-without-circle-search", &production_overlap<Obb>,
+                                            &collide_without_circle_search<Obb>};
 
-const CylinderTriangleImpl kTriangleNoCircleSearch = {
-    "triangle-without-circle-search", [](const Cylinder& c, const Triangle& t) { return overlap(c, t); },
-    [](const Cylinder& c, const Triangle& t) { return detail::collide_consistent(c, t, false); }};
+const CylinderTriangleImpl kTriangleNoCapStage = {"triangle-without-cap-stage",
+                                                  &overlap_with<Triangle, detail::TriCapStage::None>,
+                                                  &collide_with<Triangle, detail::TriCapStage::None>};
+
+const CylinderTriangleImpl kTriangleNoCircleSearch = {"triangle-without-circle-search", &production_overlap<Triangle>,
+                                                      &collide_without_circle_search<Triangle>};
 
 namespace {
 detail::CylinderPairOptions without(int part) {
@@ -220,26 +239,28 @@ detail::CylinderPairOptions without(int part) {
   if (part == 3) o.newton_steps = 1, o.relative_stop = false, o.rim_steps = 0;
   return o;
 }
+/// overlap() of the cylinder pair with the part `without(part)` removed.
+template <int part>
+bool pair_overlap_without(const Cylinder& a, const Cylinder& b) {
+  return detail::cylinder_pair(a, b, false, without(part)).hit;
+}
+/// collide() of the cylinder pair with the part `without(part)` removed.
+template <int part>
+Contact pair_collide_without(const Cylinder& a, const Cylinder& b) {
+  return detail::cylinder_pair(a, b, true, without(part));
+}
 }  // namespace
 
-const CylinderCylinderImpl kCylinderNoPlanes = {
-    "cylinder-pair-without-false-positive-planes",
-    [](const Cylinder& a, const Cylinder& b) { return detail::cylinder_pair(a, b, false, without(0)).hit; },
-    [](const Cylinder& a, const Cylinder& b) { return detail::cylinder_pair(a, b, true, without(0)); }};
+const CylinderCylinderImpl kCylinderNoPlanes = {"cylinder-pair-without-false-positive-planes",
+                                                &pair_overlap_without<0>, &pair_collide_without<0>};
 
-const CylinderCylinderImpl kCylinderNoParallelBranch = {
-    "cylinder-pair-without-parallel-branch",
-    [](const Cylinder& a, const Cylinder& b) { return detail::cylinder_pair(a, b, false, without(1)).hit; },
-    [](const Cylinder& a, const Cylinder& b) { return detail::cylinder_pair(a, b, true, without(1)); }};
+const CylinderCylinderImpl kCylinderNoParallelBranch = {"cylinder-pair-without-parallel-branch",
+                                                        &pair_overlap_without<1>, &pair_collide_without<1>};
 
-const CylinderCylinderImpl kCylinderPlainFrame = {
-    "cylinder-pair-plain-frame",
-    [](const Cylinder& a, const Cylinder& b) { return detail::cylinder_pair(a, b, false, without(2)).hit; },
-    [](const Cylinder& a, const Cylinder& b) { return detail::cylinder_pair(a, b, true, without(2)); }};
+const CylinderCylinderImpl kCylinderPlainFrame = {"cylinder-pair-plain-frame", &pair_overlap_without<2>,
+                                                  &pair_collide_without<2>};
 
-const CylinderCylinderImpl kCylinderShortSearch = {
-    "cylinder-pair-short-search",
-    [](const Cylinder& a, const Cylinder& b) { return detail::cylinder_pair(a, b, false, without(3)).hit; },
-    [](const Cylinder& a, const Cylinder& b) { return detail::cylinder_pair(a, b, true, without(3)); }};
+const CylinderCylinderImpl kCylinderShortSearch = {"cylinder-pair-short-search", &pair_overlap_without<3>,
+                                                   &pair_collide_without<3>};
 
 }  // namespace geomcheck::teeth
