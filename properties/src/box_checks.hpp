@@ -70,19 +70,16 @@ CheckResult consistency(const Case& c, const Impl& impl) {
 
 template <class Case, class Impl>
 CheckResult symmetry(const Case& c, const Impl& impl) {
-  if (auto f = argument_order(c, impl)) return f;
   // Same solid, other representation (contact_checks.hpp).
-  const Tolerances tol = bounds(c, impl);
-  const double bound = 2 * tol.depth + tol.normal;
-  if (!valid_case(c) || !obb_in_contract(c.b)) return std::nullopt;
-  if (auto f = same_answer("symmetry-caps-swapped", c, {{c.a.q, c.a.p, c.a.r}, c.b}, impl, bound)) return f;
-  // The same box with its axes cycled (extents with them), and with one
-  // axis negated: exactly the same set.
-  const Obb& b = c.b;
-  const Obb cycled{b.c, {{b.axes[1], b.axes[2], b.axes[0]}}, Vec3{b.e.y, b.e.z, b.e.x}};
-  if (auto f = same_answer("symmetry-box-axes-cycled", c, {c.a, cycled}, impl, bound)) return f;
-  const Obb negated{b.c, {{-b.axes[0], b.axes[1], b.axes[2]}}, b.e};
-  return same_answer("symmetry-box-axis-negated", c, {c.a, negated}, impl, bound);
+  return cylinder_polytope_symmetry(c, impl, valid_case(c) && obb_in_contract(c.b), [&](double bound) {
+    // The same box with its axes cycled (extents with them), and with one
+    // axis negated: exactly the same set.
+    const Obb& b = c.b;
+    const Obb cycled{b.c, {{b.axes[1], b.axes[2], b.axes[0]}}, Vec3{b.e.y, b.e.z, b.e.x}};
+    if (auto f = same_answer("symmetry-box-axes-cycled", c, {c.a, cycled}, impl, bound)) return f;
+    const Obb negated{b.c, {{-b.axes[0], b.axes[1], b.axes[2]}}, b.e};
+    return same_answer("symmetry-box-axis-negated", c, {c.a, negated}, impl, bound);
+  });
 }
 
 template <class Case, class Impl>
@@ -105,13 +102,8 @@ CheckResult monotone(const Case& c, const Impl& impl) {
       return Failure{"monotone-box-extent", fmt("overlap lost when extent %d grows from %.17g", i, c.b.e[i]),
                      Case{c.a, b}};
   }
-  // A longer cylinder: q moved outwards by q - p, only where that is exact
-  // (else the axis direction rounds and the result is no superset).
-  const Vec3 d = c.a.q - c.a.p, q2 = c.a.q + d;
-  const Case longer{Cylinder{c.a.p, q2, c.a.r}, c.b};
-  if (is_finite(q2) && d + c.a.p == c.a.q && q2 - c.a.q == d && lost(longer))
-    return Failure{"monotone-cylinder-length", "overlap lost when the cylinder is extended beyond q", longer};
-  return std::nullopt;
+  // A longer cylinder (contact_checks.hpp).
+  return cylinder_a_length_kept(c, impl);
 }
 
 }  // namespace geomcheck::box_checks

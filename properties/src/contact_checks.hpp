@@ -162,6 +162,19 @@ CheckResult cylinder_a_radius_kept(const Case& c, const Impl& impl) {
   return std::nullopt;
 }
 
+/// check_monotone for the cylinder A of an overlapping case: A extended
+/// beyond q by q - p never loses the overlap (overlap_lost), checked only
+/// where that is exact (else the axis direction rounds and the result is no
+/// superset).
+template <class Case, class Impl>
+CheckResult cylinder_a_length_kept(const Case& c, const Impl& impl) {
+  const Vec3 d = c.a.q - c.a.p, q2 = c.a.q + d;
+  const Case longer{Cylinder{c.a.p, q2, c.a.r}, c.b};
+  if (is_finite(q2) && d + c.a.p == c.a.q && q2 - c.a.q == d && overlap_lost(c, longer, impl))
+    return Failure{"monotone-cylinder-length", "overlap lost when the cylinder is extended beyond q", longer};
+  return std::nullopt;
+}
+
 /// check_metamorphic's verdict test for a move that is not exact (an axis
 /// permutation, the rigid motion): the moved case t is rounded, so it is
 /// another case, and a change of verdict (ov of c, ov2 of t) is a failure
@@ -201,6 +214,22 @@ CheckResult argument_order(const Case& c, const Impl& impl) {
   if (sov != ov || sw.hit != ct.hit || (ct.hit && !(sw.normal == -ct.normal)))
     return Failure{"symmetry-argument-order", describe(ct, ov) + " vs swapped " + describe(sw, sov)};
   return std::nullopt;
+}
+
+/// check_symmetry of a cylinder A against a polytope B (a box, a triangle),
+/// written once: argument_order; then, for a case `in_contract`, the same
+/// solids in other representations agree (same_answer, depths within
+/// 2 * depth + normal of bounds()): the cylinder with its caps swapped, then
+/// the representations of B that `other_b(bound)` checks.
+template <class Case, class Impl, class OtherB>
+CheckResult cylinder_polytope_symmetry(const Case& c, const Impl& impl, bool in_contract, OtherB&& other_b) {
+  if (auto f = argument_order(c, impl)) return f;
+  // Same solid, other representation.
+  const Tolerances tol = bounds(c, impl);
+  const double bound = 2 * tol.depth + tol.normal;
+  if (!in_contract) return std::nullopt;
+  if (auto f = same_answer("symmetry-caps-swapped", c, {{c.a.q, c.a.p, c.a.r}, c.b}, impl, bound)) return f;
+  return other_b(bound);
 }
 
 /// The answers of a case and its moved copy, for a rule that judges them.

@@ -106,17 +106,14 @@ CheckResult consistency(const Case& c, const Impl& impl) {
 
 template <class Case, class Impl>
 CheckResult symmetry(const Case& c, const Impl& impl) {
-  if (auto f = argument_order(c, impl)) return f;
   // Same solid, other representation (contact_checks.hpp).
-  const Tolerances tol = bounds(c, impl);
-  const double bound = 2 * tol.depth + tol.normal;
-  if (!valid_case(c)) return std::nullopt;
-  if (auto f = same_answer("symmetry-caps-swapped", c, {{c.a.q, c.a.p, c.a.r}, c.b}, impl, bound)) return f;
-  // The same triangle with its vertices rotated, and reversed (the other
-  // orientation): exactly the same set.
-  const Triangle& t = c.b;
-  if (auto f = same_answer("symmetry-triangle-rotated", c, {c.a, Triangle{t.b, t.c, t.a}}, impl, bound)) return f;
-  return same_answer("symmetry-triangle-reversed", c, {c.a, Triangle{t.a, t.c, t.b}}, impl, bound);
+  return cylinder_polytope_symmetry(c, impl, valid_case(c), [&](double bound) {
+    // The same triangle with its vertices rotated, and reversed (the other
+    // orientation): exactly the same set.
+    const Triangle& t = c.b;
+    if (auto f = same_answer("symmetry-triangle-rotated", c, {c.a, Triangle{t.b, t.c, t.a}}, impl, bound)) return f;
+    return same_answer("symmetry-triangle-reversed", c, {c.a, Triangle{t.a, t.c, t.b}}, impl, bound);
+  });
 }
 
 template <class Case, class Impl>
@@ -163,13 +160,8 @@ CheckResult monotone(const Case& c, const Impl& impl) {
       return Failure{"monotone-triangle-scaled",
                      "overlap lost when the triangle is scaled by 2 about its vertex " + vec(r.a), Case{c.a, g}};
   }
-  // A longer cylinder: q moved outwards by q - p, only where that is exact
-  // (else the axis direction rounds and the result is no superset).
-  const Vec3 d = c.a.q - c.a.p, q2 = c.a.q + d;
-  const Case longer{Cylinder{c.a.p, q2, c.a.r}, c.b};
-  if (is_finite(q2) && d + c.a.p == c.a.q && q2 - c.a.q == d && lost(longer))
-    return Failure{"monotone-cylinder-length", "overlap lost when the cylinder is extended beyond q", longer};
-  return std::nullopt;
+  // A longer cylinder (contact_checks.hpp).
+  return cylinder_a_length_kept(c, impl);
 }
 
 }  // namespace geomcheck::triangle_checks
