@@ -476,17 +476,7 @@ class Circle {
       low = lt ? g : low;
       low_q = lt ? (sg > 0 ? 4 : 5) : low_q;
     };
-    if (split) {
-      const int qm = (mk > 0) == (ml > 0) ? (mk > 0 ? 0 : 2) : (mk > 0 ? 3 : 1);
-      across(1.0);
-      axis((qm + 1) & 3);
-      axis((qm + 2) & 3);
-      across(-1.0);
-      axis((qm + 3) & 3);
-      axis(qm);
-    } else {
-      for (int q = 0; q < 4; ++q) axis(q);
-    }
+    detail::starting_directions(split, mk, ml, axis, across);
     if (low < best.o) {
       const double sg = low_q == 4 ? 1.0 : -1.0;
       offer(best, low_q < 4 ? kN[low_q][0] : sg * mk, low_q < 4 ? kN[low_q][1] : sg * ml, low);

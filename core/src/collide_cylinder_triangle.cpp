@@ -784,17 +784,7 @@ class EdgeCircle {
                                 vk * X_[2].x + vl * X_[2].y);
       if (g < low) low = g, low_n = {vk, vl};
     };
-    if (split) {
-      const int qm = (mk > 0) == (ml > 0) ? (mk > 0 ? 0 : 2) : (mk > 0 ? 3 : 1);
-      across(1.0);
-      axis((qm + 1) & 3);
-      axis((qm + 2) & 3);
-      across(-1.0);
-      axis((qm + 3) & 3);
-      axis(qm);
-    } else {
-      for (int q = 0; q < 4; ++q) axis(q);
-    }
+    detail::starting_directions(split, mk, ml, axis, across);
     if (low < best.o) offer(best, low_n.x, low_n.y, low);
     epa_.close();
   }

@@ -40,6 +40,26 @@ struct RimShare {
   }
 };
 
+/// The starting points of a circle's polygon in counter-clockwise order:
+/// axis(q) for the four axis directions q = 0..3 ((1, 0), (0, 1), (-1, 0),
+/// (0, -1)) and, when `split`, across(1) and across(-1) for the direction
+/// m = (mk, ml) across u (strictly inside a quadrant) and -m, each between
+/// the axes that bound its quadrant.
+template <class Axis, class Across>
+void starting_directions(bool split, double mk, double ml, Axis&& axis, Across&& across) {
+  if (split) {
+    const int qm = (mk > 0) == (ml > 0) ? (mk > 0 ? 0 : 2) : (mk > 0 ? 3 : 1);
+    across(1.0);
+    axis((qm + 1) & 3);
+    axis((qm + 2) & 3);
+    across(-1.0);
+    axis((qm + 3) & 3);
+    axis(qm);
+  } else {
+    for (int q = 0; q < 4; ++q) axis(q);
+  }
+}
+
 /// The polygon of one circle and its EPA steps. A step refines the nearest
 /// edge; the refinement stops when (1 + kEps) times the nearest edge's
 /// distance reaches the least overlap known (its own or the caller's
