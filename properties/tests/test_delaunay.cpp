@@ -24,6 +24,7 @@
 
 #include "geomcheck/delaunay_2d.hpp"
 #include "geomcheck/detail/delaunay_build.hpp"
+#include "geomcheck/detail/delaunay_links.hpp"
 #include "geomcheck/oracles/delaunay_2d.hpp"
 #include "geomcheck/pointset_file.hpp"
 #include "geomcheck/properties/generators.hpp"
@@ -350,18 +351,7 @@ TEST(Delaunay2d, SeedsAndRegressionsReplay) {
 // ---- the checker can fail ---------------------------------------------------
 
 // Neighbours recomputed from the triangles (after a test has edited them).
-void relink(DelaunayTriangulation& t) {
-  std::map<std::pair<std::uint32_t, std::uint32_t>, std::uint32_t> owner;
-  for (std::uint32_t i = 0; i < t.triangles.size(); ++i)
-    for (int k = 0; k < 3; ++k) owner[{t.triangles[i][(k + 1) % 3], t.triangles[i][(k + 2) % 3]}] = i;
-  t.neighbors.assign(t.triangles.size(), {DelaunayTriangulation::kNone, DelaunayTriangulation::kNone,
-                                          DelaunayTriangulation::kNone});
-  for (std::uint32_t i = 0; i < t.triangles.size(); ++i)
-    for (int k = 0; k < 3; ++k) {
-      const auto it = owner.find({t.triangles[i][(k + 2) % 3], t.triangles[i][(k + 1) % 3]});
-      if (it != owner.end()) t.neighbors[i][k] = it->second;
-    }
-}
+void relink(DelaunayTriangulation& t) { geomcheck::detail::link_neighbors(t); }
 
 // Flips the first interior edge whose quadrilateral is strictly convex (the
 // flipped pair stays counter-clockwise), then relinks; false when none is.

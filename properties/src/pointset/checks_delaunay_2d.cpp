@@ -1,10 +1,10 @@
 // geomcheck — the point-set family's checks (pointset_checks.hpp).
 #include <algorithm>
 #include <chrono>
-#include <map>
 #include <numeric>
 #include <utility>
 
+#include "geomcheck/detail/delaunay_links.hpp"
 #include "geomcheck/oracles/delaunay_2d.hpp"
 #include "geomcheck/predicates2d.hpp"
 #include "geomcheck/properties/pointset_checks.hpp"
@@ -69,17 +69,7 @@ DelaunayTriangulation triangulation_of(const std::vector<Vec2>& points, const In
     t.triangles.push_back(x);
   }
   // Neighbours: the triangle holding each edge in the other direction.
-  std::map<std::pair<std::uint32_t, std::uint32_t>, std::uint32_t> owner;
-  for (std::uint32_t i = 0; i < t.triangles.size(); ++i)
-    for (int k = 0; k < 3; ++k) owner.emplace(std::make_pair(t.triangles[i][(k + 1) % 3], t.triangles[i][(k + 2) % 3]), i);
-  t.neighbors.assign(t.triangles.size(), {DelaunayTriangulation::kNone, DelaunayTriangulation::kNone,
-                                          DelaunayTriangulation::kNone});
-  for (std::uint32_t i = 0; i < t.triangles.size(); ++i)
-    for (int k = 0; k < 3; ++k) {
-      const auto it = owner.find({t.triangles[i][(k + 2) % 3], t.triangles[i][(k + 1) % 3]});
-      if (it != owner.end()) t.neighbors[i][k] = it->second;
-      else ++t.hull_edges;
-    }
+  t.hull_edges = detail::link_neighbors(t);
   // The dimension: plane with triangles; else what the distinct points span.
   if (!t.triangles.empty()) t.dimension = DelaunayDimension::plane;
   else if (distinct.empty()) t.dimension = DelaunayDimension::empty;
