@@ -499,8 +499,9 @@ Json mesh_json(const MeshReport& r) {
 void write_mesh_section(std::ostream& h, const MeshReport& r) {
   const bool clean = r.failures == 0;
   h << "<h2 id='" << r.name << "'>" << r.name << "</h2><p>" << html(r.summary) << "</p><p class='"
-    << (clean ? "ok'>verified: every mesh's answer is the brute force's bit for bit, the deepest face's own, and held "
-                "to the certified engine face by face"
+    << (clean ? "ok'>verified: every mesh's answer held to the certified engine face by face and to the deepest "
+                "face (production: its brute force's and its triangle query's answers, bit for bit; a subject of its own: "
+                "its claims)"
               : "bad'>FAILURES found")
     << " (" << html(r.under_test) << ")</p><table><tr><th class='l'>measure</th><th>value</th></tr>"
     << "<tr><td class='l'>meshes run of requested (faces)</td><td>" << r.meshes << " of " << r.requested << " ("
@@ -520,7 +521,7 @@ void write_mesh_section(std::ostream& h, const MeshReport& r) {
   if (!r.failures_by_property.empty()) {
     table("failed property", r.failures_by_property);
     h << "<p>counterexamples (replay with <code>" << html(mesh_replay_prefix(r))
-      << "FILE</code>; each drawn in FILE.html):</p><ul>";
+      << "FILE</code>; each drawn in a page beside it, FILE with .html for .case):</p><ul>";
     for (std::size_t k = 0; k < r.counterexamples.size() && k < 50; ++k)
       h << "<li><code>" << html(r.counterexamples[k]) << "</code></li>";
     h << "</ul>";

@@ -48,7 +48,7 @@ python3 -c "import json,sys; q=json.load(open(sys.argv[1]))['mesh_queries']; sys
 # Its known-wrong variant is caught: saved as a mesh file, drawn beside it, and replayed as failing.
 expect_rc 1 "campaign of the mesh variant" "$tool" campaign --variant mesh_first_face --cases 300 --no-progress --out "$tmp/meshv"
 cx=$(ls "$tmp"/meshv/counterexamples/collide_cylinder_mesh/*.case 2>/dev/null | head -1)
-[ -n "$cx" ] && [ -s "$cx.html" ] && grep -q "<svg" "$cx.html" && ok || bad "the variant's counterexample is saved with its drawing"
+[ -n "$cx" ] && [ -s "${cx%.case}.html" ] && grep -q "<svg" "${cx%.case}.html" && ok || bad "the variant's counterexample is saved with its drawing"
 expect_rc 1 "replay of the variant's counterexample" "$tool" replay --subject mesh_first_face "$cx"
 expect_rc 0 "replay of the variant's counterexample with production" "$tool" replay "$cx"
 # A mesh seed replays; with a wrong filed verdict it fails.

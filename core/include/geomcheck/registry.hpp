@@ -126,26 +126,38 @@ constexpr const QueryInfo& info(QueryId id) { return kQueries[static_cast<std::s
 /// than collide(a, b): its registry line's entry point.
 constexpr bool answers_penetration(QueryId id) { return info(id).entry == EntryPoint::Penetration; }
 
-/// Every registered point-set query.
-enum class PointSetQueryId {
-#define GEOMCHECK_X(id, summary) id,
-  GEOMCHECK_POINTSET_QUERY_LIST(GEOMCHECK_X)
-#undef GEOMCHECK_X
-};
-
-/// A point-set query's id and summary.
-struct PointSetQueryInfo {
-  PointSetQueryId id;
+/// A query of a family other than the pairs: its id, name and summary.
+template <class Id>
+struct FamilyQueryInfo {
+  Id id;
   const char* name;
   const char* summary;
 };
-inline constexpr PointSetQueryInfo kPointSetQueries[] = {
-#define GEOMCHECK_X(id, summary) {PointSetQueryId::id, #id, summary},
-    GEOMCHECK_POINTSET_QUERY_LIST(GEOMCHECK_X)
-#undef GEOMCHECK_X
-};
+
+// The families' ids, from their lists: X(id, summary) -> id, and the info
+// rows in the same order.
+#define GEOMCHECK_FAMILY_ID(id, summary) id,
+#define GEOMCHECK_POINTSET_ROW(id, summary) {PointSetQueryId::id, #id, summary},
+#define GEOMCHECK_MESH_ROW(id, summary) {MeshQueryId::id, #id, summary},
+
+/// Every registered point-set query.
+enum class PointSetQueryId { GEOMCHECK_POINTSET_QUERY_LIST(GEOMCHECK_FAMILY_ID) };
+/// Every registered mesh query.
+enum class MeshQueryId { GEOMCHECK_MESH_QUERY_LIST(GEOMCHECK_FAMILY_ID) };
+/// A point-set query's id and summary.
+using PointSetQueryInfo = FamilyQueryInfo<PointSetQueryId>;
+/// A mesh query's id and summary.
+using MeshQueryInfo = FamilyQueryInfo<MeshQueryId>;
+inline constexpr PointSetQueryInfo kPointSetQueries[] = {GEOMCHECK_POINTSET_QUERY_LIST(GEOMCHECK_POINTSET_ROW)};
+inline constexpr MeshQueryInfo kMeshQueries[] = {GEOMCHECK_MESH_QUERY_LIST(GEOMCHECK_MESH_ROW)};
+#undef GEOMCHECK_FAMILY_ID
+#undef GEOMCHECK_POINTSET_ROW
+#undef GEOMCHECK_MESH_ROW
+
 /// The info row of a point-set query.
 constexpr const PointSetQueryInfo& info(PointSetQueryId id) { return kPointSetQueries[static_cast<std::size_t>(id)]; }
+/// The info row of a mesh query.
+constexpr const MeshQueryInfo& info(MeshQueryId id) { return kMeshQueries[static_cast<std::size_t>(id)]; }
 
 /// The three families of queries.
 enum class QueryFamily {

@@ -113,4 +113,17 @@ rc::Gen<MeshCase> meshes(bool grid) {
   });
 }
 
+std::vector<Tagged<MeshCase>> draw_meshes(std::uint64_t seed, int n) {
+  const auto gen = meshes(true);
+  rc::Random random(seed ^ 0x6d657368c0ffee00ull);
+  std::vector<Tagged<MeshCase>> out;
+  out.reserve(n > 0 ? n : 0);
+  for (int i = 0; i < n; ++i) {
+    MeshCase c = gen(random.split(), rc::kNominalSize).value();
+    std::string mode = c.mode;
+    out.emplace_back(std::move(c), std::move(mode));
+  }
+  return out;
+}
+
 }  // namespace geomcheck::gen

@@ -83,6 +83,7 @@
 
 #include "geomcheck/casefile.hpp"
 #include "geomcheck/properties/checks.hpp"
+#include "geomcheck/properties/mesh_checks.hpp"
 #include "geomcheck/properties/pointset_checks.hpp"
 #include "geomcheck/properties/spec.hpp"
 #include "geomcheck/reports/report.hpp"
@@ -171,6 +172,7 @@ struct VerifyResult {
   report::QueryReport figures;                   ///< what the report shows: counts, error tails, time per call
   std::vector<std::string> failed_cases;         ///< the failing cases' tags (generator mode, or file name), in order
   report::PointSetReport point_set_figures;      ///< a point-set subject's report: sets by mode and kind, times against CGAL
+  report::MeshReport mesh_figures;               ///< a mesh subject's report: meshes by mode and verdict, faces decided
 };
 
 /// The subject as a RapidCheck property: targeted cases of Q drawn by
@@ -318,5 +320,82 @@ VerifyResult verify(const PointSetImpl& subject, const std::vector<std::pair<std
 VerifyResult verify(const PointSetImpl& subject, const std::vector<std::filesystem::path>& files, const VerifyOptions& opt);
 int replay(const PointSetImpl& subject, const std::vector<std::filesystem::path>& files);
 int verify(const PointSetImpl& subject, int argc, char** argv);
+
+// --- The mesh family --------------------------------------------------------
+//
+//   int main(int argc, char** argv) {
+//     auto mine = geomcheck::subject<geomcheck::MeshQueryId::collide_cylinder_mesh>(
+//         "my-mesh", [](const geomcheck::Cylinder& c, const geomcheck::TriangleMesh& m, std::uint32_t* face) {
+//           return my_collide(c, m, face);  // a geomcheck::Contact, *face the reported face's index
+//         });
+//     return geomcheck::verify(mine, argc, argv);
+//   }
+//
+// A mesh subject answers collide(cylinder, mesh) with the index of the face
+// its contact is on (m.vertices(), m.faces() and m.triangle(f) give the
+// mesh); overlap(cylinder, mesh) where it has one (else collide's hit is its
+// verdict) and collide(mesh, cylinder) where it has that order (else the
+// argument order is not checked). It is held to its MeshClaims
+// (mesh_checks.hpp), never to production's bits: collide and overlap agree;
+// a hit's contact is finite; no face that the certified engine finds
+// overlapping beyond the subject's verdict band is missed; the reported
+// face's contact meets the subject's claims as an answer of
+// collide_cylinder_triangle for the cylinder and that face (verdict, depth,
+// normal, point, within the bounds of its precision); and, where claimed,
+// the reported face is the deepest: its certified penetration depth, times
+// the claimed ratio, is not exceeded by another face's beyond twice the
+// depth bound. verify() draws meshes from the campaign's generators (grids
+// of heights, fans, soups, degenerate and sliver faces, faces on the caps
+// and the side), in a child process as for a pair; a failing mesh is saved
+// as a mesh file (corpora/README.md) with a page drawing the cylinder, the
+// mesh and the subject's contact, and replays with `--replay FILE`. The
+// command line, the exit status and the report are those of a pair's
+// verify().
+
+/// A subject of mesh query Q: its entry points and its own claims (held
+/// by the subject, shared by its copies).
+template <MeshQueryId Q>
+struct MeshSubject : MeshImpl {
+  std::shared_ptr<const MeshClaims> own;
+};
+
+/// A subject of mesh query Q from collide(cylinder, mesh, face*) ->
+/// Contact; `claims` what it claims (collide_cylinder_triangle's production
+/// claims for the face's contact, the deepest face, valid input only, by
+/// default); the callables copied (std::ref to share one).
+template <MeshQueryId Q, class Collide>
+MeshSubject<Q> subject(const char* name, Collide collide, MeshClaims claims = {}) {
+  MeshSubject<Q> s;
+  s.name = name;
+  s.collide = std::move(collide);
+  s.own = std::make_shared<const MeshClaims>(claims);
+  s.claims = s.own.get();
+  return s;
+}
+/// The same with overlap(cylinder, mesh) -> bool and, optionally,
+/// collide(mesh, cylinder, face*) -> Contact (the flipped order: the normal
+/// from the mesh towards the cylinder).
+template <MeshQueryId Q, class Overlap, class Collide, class Flipped = std::nullptr_t>
+MeshSubject<Q> subject(const char* name, Overlap overlap, Collide collide, Flipped flipped = nullptr,
+                       MeshClaims claims = {}) {
+  MeshSubject<Q> s = subject<Q>(name, std::move(collide), claims);
+  s.overlap = std::move(overlap);
+  if constexpr (!std::is_same_v<Flipped, std::nullptr_t>) s.collide_flipped = std::move(flipped);
+  return s;
+}
+
+/// verify(), replay() and the whole program for a mesh subject, as for a
+/// pair's (above); case files are mesh files. A subject without claims
+/// (production, its known-wrong variants) is held to production's
+/// yardsticks.
+VerifyResult verify(const MeshImpl& subject, const VerifyOptions& opt);
+/// verify() of a mesh subject on these meshes (each tagged by its
+/// generator mode), mesh k saved under the number index[k] (its place in
+/// the seed's sequence): what the campaign runs for the mesh family.
+VerifyResult verify(const MeshImpl& subject, const std::vector<std::pair<MeshCase, std::string>>& meshes,
+                    const std::vector<int>& index, const VerifyOptions& opt);
+VerifyResult verify(const MeshImpl& subject, const std::vector<std::filesystem::path>& files, const VerifyOptions& opt);
+int replay(const MeshImpl& subject, const std::vector<std::filesystem::path>& files);
+int verify(const MeshImpl& subject, int argc, char** argv);
 
 }  // namespace geomcheck

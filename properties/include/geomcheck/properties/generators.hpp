@@ -92,6 +92,10 @@ std::vector<Tagged<std::vector<Vec2>>> draw_point_sets(std::uint64_t seed, int n
 /// gen::targeted (properties/src/generators/collide_cylinder_mesh.cpp);
 /// `grid`: a third of them also get a heightfield of up to 1152 faces.
 rc::Gen<MeshCase> meshes(bool grid = true);
+/// The first n meshes of a run with this seed (meshes(true), each tagged
+/// by its mode): what the campaign and verify() of a mesh subject draw, so
+/// that one seed gives both the same meshes.
+std::vector<Tagged<MeshCase>> draw_meshes(std::uint64_t seed, int n);
 
 /// A raw double: NaN, inf, subnormal, zero of either sign, huge, tiny, max, or plain.
 rc::Gen<double> wild_double();
