@@ -492,14 +492,14 @@ int run_campaign(const CampaignOptions& opt) {
     return opt.queries.empty() || std::find(opt.queries.begin(), opt.queries.end(), name) != opt.queries.end();
   };
 #define GEOMCHECK_X(id, summary) \
-  if (opt.variant.empty() && wanted(#id)) point_sets.push_back(run_##id(opt, out_dir, threads));
+  if (opt.variant.empty() && wanted(#id)) point_sets.push_back(run_##id(opt, out_dir));
   GEOMCHECK_POINTSET_QUERY_LIST(GEOMCHECK_X)
 #undef GEOMCHECK_X
   // The mesh family: production, or its own known-wrong variants.
   std::vector<report::MeshReport> meshes;
 #define GEOMCHECK_X(id, summary)                                                \
   if (wanted(#id) && (opt.variant.empty() || mesh_subject(opt.variant)))        \
-    meshes.push_back(run_##id(opt, out_dir, threads));
+    meshes.push_back(run_##id(opt, out_dir));
   GEOMCHECK_MESH_QUERY_LIST(GEOMCHECK_X)
 #undef GEOMCHECK_X
 

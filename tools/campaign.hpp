@@ -13,6 +13,7 @@
 
 #include "geomcheck/registry.hpp"
 #include "geomcheck/reports/report.hpp"
+#include "geomcheck/verify.hpp"
 
 namespace geomcheck {
 
@@ -54,20 +55,48 @@ int campaign_cases(const CampaignOptions& opt, QueryId id);
 /// Point sets of a default campaign of delaunay_2d.
 inline constexpr int kDelaunayDefaultSets = 10000;
 /// delaunay_2d's part of a campaign (tools/campaign_pointset.cpp).
-report::PointSetReport run_delaunay_2d(const CampaignOptions& opt, const std::filesystem::path& out_dir, int threads);
+report::PointSetReport run_delaunay_2d(const CampaignOptions& opt, const std::filesystem::path& out_dir);
 
 /// Meshes of a default campaign of collide_cylinder_mesh.
 inline constexpr int kMeshDefaultCases = 2000;
 /// collide_cylinder_mesh's part of a campaign (tools/campaign_mesh.cpp): the
 /// production subject, or the known-wrong variant opt.variant when it is one
 /// of the mesh query's (mesh_variants()).
-report::MeshReport run_collide_cylinder_mesh(const CampaignOptions& opt, const std::filesystem::path& out_dir,
-                                             int threads);
+report::MeshReport run_collide_cylinder_mesh(const CampaignOptions& opt, const std::filesystem::path& out_dir);
 
-/// Microseconds from a to b (the per-case timings of the point-set and mesh
-/// families).
-inline double micros(std::chrono::steady_clock::time_point a, std::chrono::steady_clock::time_point b) {
-  return std::chrono::duration<double, std::micro>(b - a).count();
+/// The seed's cases of a family (all of them, tagged), cut to this shard's,
+/// each numbered in `index` by its place in the seed's sequence.
+template <class Case>
+void keep_this_shard(std::vector<std::pair<Case, std::string>>& all, const CampaignOptions& opt, std::vector<int>& index) {
+  std::vector<std::pair<Case, std::string>> mine;
+  for (std::size_t i = 0; i < all.size(); ++i) {
+    if (static_cast<int>(i) % opt.shards != opt.shard) continue;
+    mine.push_back(std::move(all[i]));
+    index.push_back(static_cast<int>(i));
+  }
+  all = std::move(mine);
+}
+
+/// verify()'s options for a family's part of a campaign: `cases` cases, in
+/// this process, quiet, no report of its own (the campaign's has the
+/// section), failures under OUT/counterexamples with the campaign's caps,
+/// `replay` the command that replays one, less its path.
+inline VerifyOptions family_run_options(const CampaignOptions& opt, const std::filesystem::path& out_dir, int cases,
+                                        const std::string& replay) {
+  VerifyOptions v;
+  v.cases = cases;
+  v.seed = opt.seed;
+  v.out = out_dir / "counterexamples";
+  v.max_saved = report::kMaxSavedPerKind;
+  v.quiet = true;
+  v.summary = false;
+  v.report = false;
+  v.isolate = false;
+  v.program = "geomcheck";
+  v.replay = replay;
+  v.found_by = "campaign";
+  v.seconds = opt.seconds;
+  return v;
 }
 
 /// Runs the campaign; returns the number of disagreements beyond the band

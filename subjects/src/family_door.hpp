@@ -7,9 +7,10 @@
 //
 // A Family has:
 //   using Case, Report (report::PointSetReport, report::MeshReport);
-//   const char* query() const, subject_name() const;
-//   const char* unit() const ("point sets"), one() const ("set"), files()
-//     const ("point-set files");
+//   static std::vector<std::pair<Case, std::string>> draw(seed, n): the
+//     seed's first n cases, tagged (the campaign's);
+//   FamilyWords words: its query and what its cases are called;
+//   const char* subject_name() const;
 //   std::string in_all(const Report&) const: what the cases held, for the
 //     summary (" (N points)");
 //   bool asked(const Case&) const: the subject states the case (else not
@@ -53,6 +54,14 @@
 
 namespace geomcheck::detail {
 
+/// A family's query and what its cases are called in messages.
+struct FamilyWords {
+  const char* query;  ///< "delaunay_2d"
+  const char* unit;   ///< "point sets"
+  const char* one;    ///< "set"
+  const char* files;  ///< "point-set files"
+};
+
 /// What a family's check of one case gives.
 struct Checked {
   CheckResult failure;  ///< the first failing property, none when it passes
@@ -93,7 +102,7 @@ class FamilyRun {
                    const std::string& what) {
     if (!index.empty() && index.size() != all.size())
       throw std::invalid_argument("verify: " + std::to_string(index.size()) + " numbers for " +
-                                  std::to_string(all.size()) + " " + fam_.unit());
+                                  std::to_string(all.size()) + " " + fam_.words.unit);
     const auto start = std::chrono::steady_clock::now();
     int not_asked = 0;
     for (std::size_t k = 0; k < all.size(); ++k) {
@@ -105,7 +114,7 @@ class FamilyRun {
       }
     }
     if (opt_.summary) {
-      std::fprintf(stderr, "verify %s against %s: %s, seed %llu%s\n", fam_.subject_name(), fam_.query(), what.c_str(),
+      std::fprintf(stderr, "verify %s against %s: %s, seed %llu%s\n", fam_.subject_name(), fam_.words.query, what.c_str(),
                    static_cast<unsigned long long>(opt_.seed), opt_.isolate ? "" : ", in process");
       fam_.print_claims();
       std::fflush(stdout);
@@ -143,16 +152,16 @@ class FamilyRun {
     fam_.keep(res_, rep_);
     if (opt_.summary) {
       const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-      std::printf("verify %s (%s): %d %s%s, seed %llu, %.1f s: %s\n", fam_.subject_name(), fam_.query(), res_.cases,
-                  fam_.unit(), fam_.in_all(rep_).c_str(), static_cast<unsigned long long>(opt_.seed), seconds,
+      std::printf("verify %s (%s): %d %s%s, seed %llu, %.1f s: %s\n", fam_.subject_name(), fam_.words.query, res_.cases,
+                  fam_.words.unit, fam_.in_all(rep_).c_str(), static_cast<unsigned long long>(opt_.seed), seconds,
                   res_.failures == 0 ? "every property held" : "FAILED");
-      if (res_.not_expressed) std::printf("  %d %s not asked: %s\n", res_.not_expressed, fam_.unit(), fam_.not_asked_why());
-      if (res_.failures) std::printf("  %d failing %s; by property:\n", res_.failures, fam_.unit());
+      if (res_.not_expressed) std::printf("  %d %s not asked: %s\n", res_.not_expressed, fam_.words.unit, fam_.not_asked_why());
+      if (res_.failures) std::printf("  %d failing %s; by property:\n", res_.failures, fam_.words.unit);
       for (const auto& [property, n] : res_.by_property) std::printf("  %6d %s\n", n, property.c_str());
-      if (shrunk) std::printf("  %d saved %s shrunk\n", shrunk, fam_.unit());
+      if (shrunk) std::printf("  %d saved %s shrunk\n", shrunk, fam_.words.unit);
       if (!res_.saved.empty())
         std::printf("  %zu saved (at most %d per property) under %s\n", res_.saved.size(), opt_.max_saved,
-                    (opt_.out / fam_.query()).string().c_str());
+                    (opt_.out / fam_.words.query).string().c_str());
       fam_.print_figures(rep_);
       if (!res_.report.empty()) std::printf("  report: %s (and report.json)\n", res_.report.string().c_str());
     }
@@ -261,7 +270,7 @@ VerifyResult verify_family_files(const Family& fam, const std::vector<std::files
   }
   VerifyOptions o = opt;
   o.cases = static_cast<int>(cases.size());
-  return FamilyRun<Family>(fam, o).run(cases, {}, std::to_string(cases.size()) + " " + fam.files());
+  return FamilyRun<Family>(fam, o).run(cases, {}, std::to_string(cases.size()) + " " + fam.words.files);
 }
 
 /// replay() of a family's subject: each file's checks printed; the number
@@ -289,17 +298,17 @@ int family_program(const Family& fam, int argc, char** argv, Verify&& verify_gen
   std::vector<std::filesystem::path> replays;
   const int rc = parse_verify_command(argc, argv,
                                       std::string("Holds subject '") + fam.subject_name() + "' to every property of " +
-                                          fam.query() + " on generated " + fam.unit() + "; saves and draws each failing " +
-                                          fam.one() + ".",
-                                      fam.unit(), std::string(fam.files()) + " saved per failing property", opt,
+                                          fam.words.query + " on generated " + fam.words.unit + "; saves and draws each failing " +
+                                          fam.words.one + ".",
+                                      fam.words.unit, std::string(fam.words.files) + " saved per failing property", opt,
                                       replays);
   if (rc >= 0) return rc;
   if (!replays.empty()) {
     for (const auto& path : replays) {
       const std::string q = declared_query(path);
-      if (!q.empty() && q != fam.query()) {
+      if (!q.empty() && q != fam.words.query) {
         std::fprintf(stderr, "%s: %s is a case of %s; %s verifies %s\n", opt.program.c_str(), path.string().c_str(),
-                     q.c_str(), fam.subject_name(), fam.query());
+                     q.c_str(), fam.subject_name(), fam.words.query);
         return 2;
       }
     }
@@ -308,4 +317,59 @@ int family_program(const Family& fam, int argc, char** argv, Verify&& verify_gen
   return verify_generated(opt).failures == 0 ? 0 : 1;
 }
 
+/// Where a family's failing case `number` of `property` is saved:
+/// OUT/QUERY/NNNNN-PROPERTY.case (the folder made), its file name in `name`.
+inline std::filesystem::path failure_path(const VerifyOptions& opt, const char* query, int number,
+                                          const std::string& property, std::string& name) {
+  const std::filesystem::path dir = opt.out / query;
+  std::error_code ec;
+  std::filesystem::create_directories(dir, ec);
+  char buf[96];
+  std::snprintf(buf, sizeof buf, "%05d-%s.case", number, property.c_str());
+  name = buf;
+  return dir / name;
+}
+
+/// Says a saved failure on stdout (not with opt.quiet): what failed, where
+/// it is drawn, the command that replays it.
+inline void announce_failure(const VerifyOptions& opt, const char* subject, const char* one, const std::string& property,
+                             int number, const std::string& tag, const std::string& detail,
+                             const std::filesystem::path& path) {
+  if (!opt.quiet)
+    std::printf("FAIL %s %s (%s %d, %s): %s\n  drawn: %s\n  replay: %s\n", subject, property.c_str(), one, number,
+                tag.c_str(), detail.c_str(), std::filesystem::path(path).replace_extension(".html").string().c_str(),
+                replay_command(opt, path).c_str());
+  std::fflush(stdout);
+}
+
 }  // namespace geomcheck::detail
+
+/// The public entry points of a family's door (verify.hpp) for subjects of
+/// type SUBJECT, run by FAMILY (whose static draw(seed, n) gives the seed's
+/// cases, as the campaign draws them): verify() on generated cases, on given
+/// cases, on files; replay(); the program.
+#define GEOMCHECK_FAMILY_DOOR(SUBJECT, FAMILY)                                                                  \
+  VerifyResult verify(const SUBJECT& subject, const VerifyOptions& opt) {                                      \
+    const FAMILY family{subject, opt};                                                                          \
+    return detail::FamilyRun<FAMILY>(family, opt).run(FAMILY::draw(opt.seed, opt.cases), {},                    \
+                                                      std::to_string(opt.cases) + " " + family.words.unit);         \
+  }                                                                                                            \
+  VerifyResult verify(const SUBJECT& subject, const std::vector<std::pair<FAMILY::Case, std::string>>& cases,  \
+                      const std::vector<int>& index, const VerifyOptions& opt) {                               \
+    const FAMILY family{subject, opt};                                                                          \
+    return detail::FamilyRun<FAMILY>(family, opt).run(cases, index,                                             \
+                                                      std::to_string(cases.size()) + " " + family.words.unit);      \
+  }                                                                                                            \
+  VerifyResult verify(const SUBJECT& subject, const std::vector<std::filesystem::path>& files,                 \
+                      const VerifyOptions& opt) {                                                               \
+    return detail::verify_family_files(FAMILY{subject, opt}, files, opt);                                      \
+  }                                                                                                            \
+  int replay(const SUBJECT& subject, const std::vector<std::filesystem::path>& files) {                       \
+    const VerifyOptions opt;                                                                                    \
+    return detail::replay_family(FAMILY{subject, opt}, files);                                                  \
+  }                                                                                                            \
+  int verify(const SUBJECT& subject, int argc, char** argv) {                                                  \
+    const VerifyOptions unused;                                                                                 \
+    return detail::family_program(FAMILY{subject, unused}, argc, argv,                                         \
+                                  [&](const VerifyOptions& opt) { return verify(subject, opt); });            \
+  }

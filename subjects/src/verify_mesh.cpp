@@ -39,11 +39,9 @@ struct MeshFamily {
   const MeshImpl& subject;
   const VerifyOptions& opt;
 
-  const char* query() const { return kMeshQuery; }
+  static std::vector<std::pair<Case, std::string>> draw(std::uint64_t seed, int n) { return gen::draw_meshes(seed, n); }
+  static constexpr detail::FamilyWords words{kMeshQuery, "meshes", "mesh", "mesh files"};
   const char* subject_name() const { return subject.name; }
-  const char* unit() const { return "meshes"; }
-  const char* one() const { return "mesh"; }
-  const char* files() const { return "mesh files"; }
   std::string in_all(const Report& r) const { return " (" + std::to_string(r.faces) + " faces)"; }
   bool asked(const MeshCase& c) const {
     if (!subject.claims || subject.claims->any_input) return true;
@@ -185,12 +183,8 @@ struct MeshFamily {
         shown.detail += " (shrunk: " + std::to_string(dropped) + " faces dropped)";
       }
     }
-    const std::filesystem::path dir = opt.out / kMeshQuery;
-    std::error_code ec;
-    std::filesystem::create_directories(dir, ec);
-    char name[96];
-    std::snprintf(name, sizeof name, "%05d-%s.case", number, f.property.c_str());
-    const std::filesystem::path path = dir / name;
+    std::string name;
+    const std::filesystem::path path = detail::failure_path(opt, kMeshQuery, number, f.property, name);
     const TriangleMesh mesh(c.vertices, c.faces);
     const MeshTruth truth = mesh_truth(c.cyl, mesh);
     MeshFile file;
@@ -216,13 +210,9 @@ struct MeshFamily {
     report::write_counterexample_page(
         std::filesystem::path(path).replace_extension(".html"), name,
         draw::mesh_views(c.cyl, mesh, k, face, ask_subject ? subject.name : std::string(subject.name) + " (not asked again)",
-                         report::html(std::string(name) + ": " + shown.property + ": " + shown.detail)),
+                         report::html(name + ": " + shown.property + ": " + shown.detail)),
         subject.name, detail::replay_command(opt, path));
-    if (!opt.quiet)
-      std::printf("FAIL %s %s (mesh %d, %s): %s\n  drawn: %s\n  replay: %s\n", subject.name, f.property.c_str(), number,
-                  tag.c_str(), shown.detail.c_str(), std::filesystem::path(path).replace_extension(".html").string().c_str(),
-                  detail::replay_command(opt, path).c_str());
-    std::fflush(stdout);
+    detail::announce_failure(opt, subject.name, "mesh", f.property, number, tag, shown.detail, path);
     return path.string();
   }
 
@@ -265,32 +255,6 @@ struct MeshFamily {
 
 }  // namespace
 
-VerifyResult verify(const MeshImpl& subject, const VerifyOptions& opt) {
-  // The campaign's derivation: the same seed draws the same meshes there.
-  const MeshFamily family{subject, opt};
-  return detail::FamilyRun<MeshFamily>(family, opt).run(gen::draw_meshes(opt.seed, opt.cases), {},
-                                                        std::to_string(opt.cases) + " meshes");
-}
-
-VerifyResult verify(const MeshImpl& subject, const std::vector<std::pair<MeshCase, std::string>>& meshes,
-                    const std::vector<int>& index, const VerifyOptions& opt) {
-  const MeshFamily family{subject, opt};
-  return detail::FamilyRun<MeshFamily>(family, opt).run(meshes, index, std::to_string(meshes.size()) + " meshes");
-}
-
-VerifyResult verify(const MeshImpl& subject, const std::vector<std::filesystem::path>& files, const VerifyOptions& opt) {
-  return detail::verify_family_files(MeshFamily{subject, opt}, files, opt);
-}
-
-int replay(const MeshImpl& subject, const std::vector<std::filesystem::path>& files) {
-  const VerifyOptions opt;
-  return detail::replay_family(MeshFamily{subject, opt}, files);
-}
-
-int verify(const MeshImpl& subject, int argc, char** argv) {
-  const VerifyOptions unused;
-  return detail::family_program(MeshFamily{subject, unused}, argc, argv,
-                                [&](const VerifyOptions& opt) { return verify(subject, opt); });
-}
+GEOMCHECK_FAMILY_DOOR(MeshImpl, MeshFamily)
 
 }  // namespace geomcheck

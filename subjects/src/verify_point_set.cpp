@@ -80,11 +80,9 @@ struct PointSetFamily {
   const PointSetImpl& subject;
   const VerifyOptions& opt;
 
-  const char* query() const { return kDelaunayQueryName; }
+  static std::vector<std::pair<Case, std::string>> draw(std::uint64_t seed, int n) { return gen::draw_point_sets(seed, n); }
+  static constexpr detail::FamilyWords words{kDelaunayQueryName, "point sets", "set", "point-set files"};
   const char* subject_name() const { return subject.name; }
-  const char* unit() const { return "point sets"; }
-  const char* one() const { return "set"; }
-  const char* files() const { return "point-set files"; }
   std::string in_all(const Report& r) const { return " (" + std::to_string(r.points) + " points)"; }
   bool asked(const Points& p) const { return subject.any_input || all_finite(p); }
   const char* not_asked_why() const { return "a non-finite coordinate, and the subject claims finite input only"; }
@@ -138,12 +136,8 @@ struct PointSetFamily {
         drawn = check_point_set(p, subject, static_cast<std::size_t>(-1), false).triangles;
       }
     }
-    const std::filesystem::path dir = opt.out / kDelaunayQueryName;
-    std::error_code ec;
-    std::filesystem::create_directories(dir, ec);
-    char name[96];
-    std::snprintf(name, sizeof name, "%05d-%s.case", number, f.property.c_str());
-    const std::filesystem::path path = dir / name;
+    std::string name;
+    const std::filesystem::path path = detail::failure_path(opt, kDelaunayQueryName, number, f.property, name);
     PointSetFile file;
     file.points = p;
     file.oracle_verdict = std::string(classify_point_set(p));
@@ -154,15 +148,11 @@ struct PointSetFamily {
       std::fprintf(stderr, "verify: cannot save %s: %s\n", path.string().c_str(), err.c_str());
       return "";
     }
-    const std::string title = report::html(std::string(name) + ": " + shown.property + ": " + shown.detail);
+    const std::string title = report::html(name + ": " + shown.property + ": " + shown.detail);
     report::write_counterexample_page(std::filesystem::path(path).replace_extension(".html"), name,
                                       draw::point_set_view(p, drawn, title), subject.name,
                                       detail::replay_command(opt, path));
-    if (!opt.quiet)
-      std::printf("FAIL %s %s (set %d, %s): %s\n  drawn: %s\n  replay: %s\n", subject.name, f.property.c_str(), number,
-                  tag.c_str(), shown.detail.c_str(), std::filesystem::path(path).replace_extension(".html").string().c_str(),
-                  detail::replay_command(opt, path).c_str());
-    std::fflush(stdout);
+    detail::announce_failure(opt, subject.name, "set", f.property, number, tag, shown.detail, path);
     return path.string();
   }
 
@@ -203,33 +193,6 @@ std::optional<std::string> PointSetFamily::load_set(const std::filesystem::path&
 
 }  // namespace
 
-VerifyResult verify(const PointSetImpl& subject, const VerifyOptions& opt) {
-  // The campaign's derivation: the same seed draws the same sets there.
-  const auto sets = gen::draw_point_sets(opt.seed, opt.cases);
-  const PointSetFamily family{subject, opt};
-  return detail::FamilyRun<PointSetFamily>(family, opt).run(sets, {}, std::to_string(opt.cases) + " point sets");
-}
-
-VerifyResult verify(const PointSetImpl& subject, const std::vector<std::pair<Points, std::string>>& sets,
-                    const std::vector<int>& index, const VerifyOptions& opt) {
-  const PointSetFamily family{subject, opt};
-  return detail::FamilyRun<PointSetFamily>(family, opt).run(sets, index, std::to_string(sets.size()) + " point sets");
-}
-
-VerifyResult verify(const PointSetImpl& subject, const std::vector<std::filesystem::path>& files,
-                    const VerifyOptions& opt) {
-  return detail::verify_family_files(PointSetFamily{subject, opt}, files, opt);
-}
-
-int replay(const PointSetImpl& subject, const std::vector<std::filesystem::path>& files) {
-  const VerifyOptions opt;
-  return detail::replay_family(PointSetFamily{subject, opt}, files);
-}
-
-int verify(const PointSetImpl& subject, int argc, char** argv) {
-  const VerifyOptions unused;
-  return detail::family_program(PointSetFamily{subject, unused}, argc, argv,
-                                [&](const VerifyOptions& opt) { return verify(subject, opt); });
-}
+GEOMCHECK_FAMILY_DOOR(PointSetImpl, PointSetFamily)
 
 }  // namespace geomcheck
