@@ -55,7 +55,7 @@ std::map<std::string, Figures>& figures() {
 template <QueryId Q>
 std::vector<typename Spec<Q>::Case> campaign_cases(int n) {
   const auto gen = Spec<Q>::targeted();
-  rc::Random random(kSeed ^ (0x9e3779b97f4a7c15ull * (static_cast<std::uint64_t>(Q) + 1)));
+  rc::Random random = geomcheck::gen::sequence<Q>(kSeed);
   std::vector<typename Spec<Q>::Case> out;
   for (int i = 0; i < n; ++i) out.push_back(gen(random.split(), 50).value().first);
   return out;

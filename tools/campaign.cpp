@@ -52,15 +52,18 @@ struct SaveCaps {
   }
 };
 
-// Everything kept per case.
+// What the campaign keeps of each case beside the subject's checks (which
+// verify()'s runner keeps): FCL's answer, the deepest stage the truth
+// needed, a sweep's exact first touch, the evaluation FCL is scored on.
+template <class Case>
 struct Row {
+  Case c{};
   Evaluation e;
   peers::FclAnswer fcl;
   std::string tag;
-  CheckResult failure;
-  oracle::Stage stage = oracle::Stage::None;  // the deepest stage of the engine the truth needed
+  oracle::Stage stage = oracle::Stage::None;
+  double t_true = NAN;
   int index = 0;
-  bool run = false;
 };
 
 // An implementation's answer, drawn in red.
@@ -90,9 +93,12 @@ draw::Mark fcl_mark(const Case& c, const peers::FclAnswer& p) {
   }
 }
 
-// One query's part of a campaign: cases generated in order from the seed
-// (deterministic), production timed on them, every case evaluated in
-// parallel (truth, FCL, every check), then gathered into its report.
+// One query's part of a campaign: cases drawn in order from the seed
+// (deterministic), production timed on them, then verify()'s run of the
+// subject on this shard's cases (in process, on `threads` threads: every
+// check, the failures shrunk, saved and drawn, the figures), with FCL asked
+// on every case beside it (RunHooks) and its disagreements kept, shrunk and
+// saved here.
 // Sweeps: FCL's |t - t_exact| needs the exact first touch, the engine's
 // time of impact (milliseconds a case, most of a sweep campaign's time when
 // asked on every case): asked on the first cases only, by index, so that
@@ -108,135 +114,92 @@ class QueryRun {
   QueryRun(const CampaignOptions& opt, const std::filesystem::path& out_dir) : opt_(opt), out_dir_(out_dir) {
     impl_ = Spec<Q>::subject(opt.variant);
     if (!impl_) impl_ = &production_of<Q>();
-    rep_.name = info(Q).name;
-    rep_.summary = info(Q).summary;
-    rep_.subject = impl_->name;
-    rep_.claims = impl_->claims ? *impl_->claims : Spec<Q>::claims();
-    rep_.own_claims = impl_->claims != nullptr;
-    rep_.tol = bounds_of(Q, impl_->claims);
-    rep_.depth_is_bound = Spec<Q>::claims().depth == Claims::Depth::UpperBound;
+    extra_.name = info(Q).name;
+    extra_.subject = impl_->name;
   }
 
   /// Runs every case; production and FCL are also reported apart on the
   /// first `first_cases` (the cases the other engines answer; 0: none).
   QueryReport run(int threads, int first_cases = 0) {
-    generate();
-    for (std::size_t i = 0; i < cases_.size(); ++i) rep_.requested += mine(static_cast<int>(i));
-    time_production();
-    const double elapsed = evaluate(threads);
-    first_cases_ = std::min(first_cases, static_cast<int>(cases_.size()));
+    auto cases = gen::draw<Q>(opt_.seed, campaign_cases(opt_, Q));
+    const double prod_ns = time_production(cases);
+    rows_.assign(cases.size(), Row<Case>{});
+    for (std::size_t i = 0; i < cases.size(); ++i) rows_[i].tag = cases[i].second, rows_[i].index = static_cast<int>(i);
+    first_cases_ = std::min(first_cases, static_cast<int>(cases.size()));
+    std::vector<int> index;
+    keep_this_shard(cases, opt_, index);
     if (first_cases_ > 0) {
       QueryReport f;
-      f.name = rep_.name;
-      f.subject = rep_.subject;
-      f.claims = rep_.claims;
-      f.tol = rep_.tol;
-      for (int i = 0; i < first_cases_; ++i) f.requested += mine(i);
-      f.prod_ns = rep_.prod_ns;
-      rep_.first.push_back(std::move(f));
+      f.name = extra_.name;
+      f.subject = extra_.subject;
+      f.claims = impl_->claims ? *impl_->claims : Spec<Q>::claims();
+      f.tol = bounds_of(Q, impl_->claims);
+      for (int k : index) f.requested += k < first_cases_;
+      f.prod_ns = prod_ns;
+      extra_.first.push_back(std::move(f));
     }
-    for (const Row& r : rows_)
-      if (r.run) gather(r);  // not run: the time budget ran out first
+    const std::string replay = impl_ == &production_of<Q>()
+                                   ? "geomcheck replay "
+                                   : std::string("geomcheck replay --subject ") + impl_->name + " ";
+    VerifyOptions v = family_run_options(opt_, out_dir_, static_cast<int>(cases.size()), replay);
+    v.threads = threads;
+    if (opt_.progress) {
+      char label[64];
+      std::snprintf(label, sizeof label, "[campaign] %-24s", info(Q).name);
+      v.progress = label;
+    }
+    RunHooks<Q> hooks;
+    hooks.evaluate = [this](int k, const Case& c) {
+      Row<Case>& r = rows_[k];
+      r.c = c;
+      r.fcl = peers::fcl_answer(c);
+      oracle::reset_deepest_stage();
+      Evaluation e = peers::evaluate_with_fcl(c, r.fcl, *impl_);
+      r.stage = oracle::deepest_stage();
+      if constexpr (std::is_same_v<Case, SweepCylinderCase>)
+        if (k < kExactTouchCases && r.fcl.supported && r.fcl.ok && r.fcl.hit && e.truth_hit && r.fcl.t >= 0 &&
+            r.fcl.t <= 1)
+          r.t_true = exact_first_touch(c);
+      return e;
+    };
+    hooks.counted = [this](int k, const Evaluation& e, const std::vector<std::string>& failed) { gather(k, e, failed); };
+    QueryReport rep = verify<Q>(*impl_, cases, index, v, hooks).figures;
     save_fcl_cases(threads);
-    rep_.oracle_us = rep_.cases ? elapsed * 1e6 * threads / rep_.cases : NAN;
-    rep_.stopped_by_time = rep_.cases < rep_.requested;
-    return rep_;
+    report::merge_into(rep, extra_);  // FCL's part, the truth's stages, the first cases
+    rep.prod_ns = prod_ns;
+    return rep;
   }
 
  private:
-  const Case& case_of(const Row& r) const { return cases_[r.index].first; }
-  /// Case i is this shard's.
-  bool mine(int i) const { return i % opt_.shards == opt_.shard; }
-  std::string origin(const Row& r) const {
+  std::string origin(const Row<Case>& r) const {
     return "campaign seed=" + std::to_string(opt_.seed) + " case=" + std::to_string(r.index);
   }
 
-  void generate() {
-    const auto gen = Spec<Q>::targeted();
-    rc::Random random(opt_.seed ^ (0x9e3779b97f4a7c15ull * (static_cast<std::uint64_t>(Q) + 1)));
-    for (int i = 0, n = campaign_cases(opt_, Q); i < n; ++i) cases_.push_back(gen(random.split(), 50).value());
-  }
-
   // Production's time per query on these cases.
-  void time_production() {
+  double time_production(const std::vector<std::pair<Case, std::string>>& cases) const {
     const auto t0 = Clock::now();
     int sink = 0;
     const int reps = 5;
     for (int r = 0; r < reps; ++r)
-      for (const auto& c : cases_) sink += Spec<Q>::hit(c.first, *impl_);
+      for (const auto& c : cases) sink += Spec<Q>::hit(c.first, *impl_);
     const double ns = std::chrono::duration<double, std::nano>(Clock::now() - t0).count();
-    rep_.prod_ns = ns / (reps * std::max<std::size_t>(1, cases_.size()));
     if (sink == -1) std::puts("");
+    return ns / (reps * std::max<std::size_t>(1, cases.size()));
   }
 
-  // Every case on `threads` threads, with a progress line; returns the seconds taken.
-  double evaluate(int threads) {
-    rows_.assign(cases_.size(), Row{});
-    std::atomic<int> next{0}, done{0};
-    const auto start = Clock::now();
-    std::atomic<bool> out_of_time{false};
-    auto worker = [&] {
-      for (;;) {
-        const int i = next++;
-        if (i >= static_cast<int>(cases_.size())) return;
-        if (!mine(i)) continue;
-        if (opt_.seconds > 0 && std::chrono::duration<double>(Clock::now() - start).count() > opt_.seconds) {
-          out_of_time = true;
-          return;
-        }
-        Row& r = rows_[i];
-        r.index = i;
-        r.tag = cases_[i].second;
-        r.fcl = peers::fcl_answer(cases_[i].first);
-        oracle::reset_deepest_stage();
-        r.e = peers::evaluate_with_fcl(cases_[i].first, r.fcl, *impl_);
-        r.stage = oracle::deepest_stage();
-        r.failure = check_all(cases_[i].first, r.e, *impl_);  // the truth asked once
-        if constexpr (std::is_same_v<Case, SweepCylinderCase>)
-          if (i < kExactTouchCases && r.fcl.supported && r.fcl.ok && r.fcl.hit && r.e.truth_hit && r.fcl.t >= 0 &&
-              r.fcl.t <= 1)
-            r.e.t_true = exact_first_touch(cases_[i].first);
-        r.run = true;
-        ++done;
-      }
-    };
-    std::vector<std::thread> pool;
-    for (int k = 0; k < threads; ++k) pool.emplace_back(worker);
-    progress(start, done, out_of_time);
-    for (auto& th : pool) th.join();
-    return std::chrono::duration<double>(Clock::now() - start).count();
-  }
-
-  // On a terminal the progress line is redrawn every 0.5 s; into a log file
-  // (CI) a plain line every 10 s, so that the log stays readable.
-  void progress(Clock::time_point start, const std::atomic<int>& done, const std::atomic<bool>& out_of_time) const {
-    const bool tty = isatty(fileno(stderr));
-    const int every = tty ? 1 : 20;
-    for (int tick = 1; opt_.progress; ++tick) {
-      std::this_thread::sleep_for(std::chrono::milliseconds(500));
-      const int d = done;
-      const bool last = d >= rep_.requested || out_of_time;
-      if (tick % every == 0 || last) {
-        const double el = std::chrono::duration<double>(Clock::now() - start).count();
-        std::fprintf(stderr, "%s[campaign] %-24s %7d / %d cases  %6.0f cases/s  %5.1fs%s", tty ? "\r" : "",
-                     rep_.name.c_str(), d, rep_.requested, d / std::max(el, 1e-9), el, tty ? "" : "\n");
-      }
-      if (last) break;
-    }
-    if (opt_.progress && tty) std::fprintf(stderr, "\n");
-  }
-
-  // One evaluated case into the report.
-  void gather(const Row& r) {
-    if (r.index < first_cases_) gather_first(r);
-    report::add_evaluation(rep_, Q, r.e);
-    if (!r.e.valid) return;
-    ++rep_.truth_stages[oracle::to_string(r.stage)];
+  // Case k counted (in case order): the truth's stage, FCL's answer held
+  // to the same truth, the first cases' row.
+  void gather(int k, const Evaluation& e, const std::vector<std::string>& failed) {
+    Row<Case>& r = rows_[k];
+    r.e = e;
+    if (std::isfinite(r.t_true)) r.e.t_true = r.t_true;  // a sweep's exact first touch (a cast's is the truth's)
+    if (k < first_cases_) gather_first(r, failed);
+    if (!e.valid) return;
+    ++extra_.truth_stages[oracle::to_string(r.stage)];
     if (r.fcl.supported) {
-      ++rep_.fcl_supported;
+      ++extra_.fcl_supported;
       if (r.fcl.ok) gather_fcl(r);
     }
-    if (r.failure) save_counterexample(r);
   }
 
   // The kinds of FCL's disagreement beyond the band on one case: its
@@ -253,13 +216,13 @@ class QueryRun {
 
   // FCL's answer to one case, held to the same truth; its disagreements
   // kept to be saved.
-  void gather_fcl(const Row& r) {
-    score_fcl(rep_, r);
+  void gather_fcl(const Row<Case>& r) {
+    score_fcl(extra_, r);
     for (const char* kind : fcl_kinds(r.fcl, r.e)) note_fcl(r, kind);
   }
 
   // FCL's answer to one case counted into `into`.
-  static void score_fcl(QueryReport& into, const Row& r) {
+  static void score_fcl(QueryReport& into, const Row<Case>& r) {
     const Evaluation& e = r.e;
     ++into.fcl_ok;
     if (r.fcl.hit != e.truth_hit) {
@@ -282,14 +245,12 @@ class QueryRun {
 
   // Production and FCL on the first `first_cases` cases, the ones the other
   // engines answer: the precision table's rows on the same cases.
-  void gather_first(const Row& r) {
-    QueryReport& f = rep_.first.front();
+  void gather_first(const Row<Case>& r, const std::vector<std::string>& failed) {
+    QueryReport& f = extra_.first.front();
     report::add_evaluation(f, Q, r.e);
     if (!r.e.valid) return;
-    if (r.failure) {
-      ++f.check_failures;
-      ++f.failures_by_property[r.failure->property];
-    }
+    if (!failed.empty()) ++f.check_failures;
+    for (const std::string& property : failed) ++f.failures_by_property[property];
     if (r.fcl.supported) {
       ++f.fcl_supported;
       if (r.fcl.ok) score_fcl(f, r);
@@ -308,9 +269,9 @@ class QueryRun {
     Evaluation e;
     Shrunk how;
   };
-  void note_fcl(const Row& r, const char* kind) {
+  void note_fcl(const Row<Case>& r, const char* kind) {
     const std::string signature = std::string(kind) + " @ " + r.tag;
-    ++rep_.fcl_by_signature[signature];
+    ++extra_.fcl_by_signature[signature];
     if (!fcl_caps_.take(kind, signature)) return;
     FclSave s;
     s.row = r.index;
@@ -330,7 +291,7 @@ class QueryRun {
         FclSave& s = fcl_saves_[k];
         const std::string kind = s.kind;
         s.small = shrink(
-            cases_[s.row].first,
+            rows_[s.row].c,
             [&](const Case& c) {
               const peers::FclAnswer p = peers::fcl_answer(c);
               for (const char* k2 : fcl_kinds(p, peers::evaluate_with_fcl(c, p, *impl_)))
@@ -347,8 +308,8 @@ class QueryRun {
     for (auto& th : pool) th.join();
     std::map<std::string, int> drawn;
     for (const FclSave& s : fcl_saves_) {
-      rep_.fcl_shrunk += s.how.simplified > 0;
-      const std::filesystem::path dir = out_dir_ / "fcl-disagreements" / rep_.name;
+      extra_.fcl_shrunk += s.how.simplified > 0;
+      const std::filesystem::path dir = out_dir_ / "fcl-disagreements" / extra_.name;
       std::filesystem::create_directories(dir);
       char name[80];
       std::snprintf(name, sizeof name, "%05d-fcl-%s.case", s.row, s.kind);
@@ -357,11 +318,11 @@ class QueryRun {
           (s.how.simplified ? " (shrunk: " + std::to_string(s.how.simplified) + " numbers simplified)" : std::string());
       CaseFile f = from_case<Q>(s.small, found_by, verdict_word(Q, s.e), "FCL: " + s.fcl.text + "; oracle: " + s.e.truth_text);
       std::string err;
-      if (save_case(dir / name, f, err)) rep_.fcl_cases.push_back((dir / name).string());
+      if (save_case(dir / name, f, err)) extra_.fcl_cases.push_back((dir / name).string());
       else std::fprintf(stderr, "[campaign] cannot save %s: %s\n", (dir / name).string().c_str(), err.c_str());
       if (drawn[s.kind]++ < 3) {
         const draw::Answer ans = answer_of(s.small, *impl_);
-        rep_.fcl_drawings.push_back(draw::views(
+        extra_.fcl_drawings.push_back(draw::views(
             s.small,
             html(std::string("case ") + name + ": FCL's " + s.kind + " (" + s.fcl.text + "); oracle: " + s.e.truth_text),
             {fcl_mark(s.small, s.fcl)}, &ans));
@@ -369,71 +330,14 @@ class QueryRun {
     }
   }
 
-  // Counterexamples: every one counted by property and by signature
-  // (property @ generator mode); the first kMaxSavedPerSignature of a
-  // signature, at most kMaxSavedPerKind of a property, shrunk while they
-  // fail the same property, then saved and drawn (a page beside the case
-  // file); the report shows the first 12 drawings inline.
-  void save_counterexample(const Row& r) {
-    ++rep_.check_failures;
-    const std::string& property = r.failure->property;
-    const std::string signature = property + " @ " + r.tag;
-    ++rep_.failures_by_signature[signature];
-    ++rep_.failures_by_property[property];
-    if (!caps_.take(property, signature)) return;
-    Shrunk how;
-    const Case small = shrink(
-        case_of(r),
-        [&](const Case& k) {
-          const CheckResult f = check_all(k, *impl_);
-          return f && f->property == property;
-        },
-        report::kShrinkBudget, &how);
-    const CheckResult failure = how.simplified ? check_all(small, *impl_) : r.failure;
-    const Evaluation e = how.simplified ? geomcheck::evaluate(small, *impl_) : r.e;
-    rep_.shrunk += how.simplified > 0;
-    const std::filesystem::path cx_dir = out_dir_ / "counterexamples" / rep_.name;
-    std::filesystem::create_directories(cx_dir);
-    char name[64];
-    std::snprintf(name, sizeof name, "%05d-%s.case", r.index, property.c_str());
-    const auto path = cx_dir / name;
-    const std::string found_by =
-        origin(r) + " mode=" + r.tag +
-        (how.simplified ? " (shrunk: " + std::to_string(how.simplified) + " numbers simplified)" : std::string());
-    CaseFile f = from_case<Q>(small, found_by, "", failure->property + ": " + failure->detail);
-    f.oracle_verdict = e.valid ? verdict_word(Q, e) : std::string();
-    std::string err;
-    if (save_case(path, f, err)) rep_.counterexamples.push_back(path.string());
-    else std::fprintf(stderr, "[campaign] cannot save %s: %s\n", path.string().c_str(), err.c_str());
-    const draw::Answer ans = answer_of(small, *impl_);
-    std::string drawing =
-        draw::views(small,
-                    html(std::string("case ") + name + ": " + failure->property + ": " + failure->detail +
-                         "; oracle: " + e.truth_text),
-                    {}, &ans);
-    // A relation's failure: the case it was compared with, beside it.
-    if (const auto* t = std::any_cast<typename QueryTraits<Q>::Case>(&failure->related)) {
-      const draw::Answer other = answer_of(*t, *impl_);
-      drawing += draw::views(*t, html("the case " + failure->property + " compared it with"), {}, &other);
-    }
-    const std::string subject = impl_->name;
-    const std::string replay = subject == "production"
-                                   ? "geomcheck replay " + path.string()
-                                   : "geomcheck replay --subject " + subject + " " + path.string();
-    report::write_counterexample_page(std::filesystem::path(path).replace_extension(".html"), name, drawing, subject,
-                                      replay);
-    if (rep_.drawings.size() < 12) rep_.drawings.push_back(drawing);
-  }
-
   const CampaignOptions& opt_;
   std::filesystem::path out_dir_;
-  SaveCaps caps_, fcl_caps_;  // counterexamples saved, FCL's disagreements kept
+  SaveCaps fcl_caps_;  // FCL's disagreements kept
   std::vector<FclSave> fcl_saves_;
   const Impl* impl_ = nullptr;
   int first_cases_ = 0;
-  std::vector<std::pair<Case, std::string>> cases_;
-  std::vector<Row> rows_;
-  QueryReport rep_;
+  std::vector<Row<Case>> rows_;  // by the case's number in the seed's sequence
+  QueryReport extra_;      // what the campaign adds to the subject's figures
 };
 
 }  // namespace

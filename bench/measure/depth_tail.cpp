@@ -25,7 +25,7 @@ int main(int argc, char** argv) {
   const std::string out = argc > 2 ? argv[2] : "";
   const std::uint64_t seed = 20261121;
   const auto gen = gen::targeted<Q>();
-  rc::Random random(seed ^ (0x9e3779b97f4a7c15ull * (static_cast<std::uint64_t>(Q) + 1)));
+  rc::Random random = geomcheck::gen::sequence<Q>(seed);
   struct Row {
     double ratio;
     int index;

@@ -37,7 +37,7 @@ struct Row {
 template <QueryId Q>
 void run(int n) {
   const auto gen = gen::targeted<Q>();
-  rc::Random random(20261121 ^ (0x9e3779b97f4a7c15ull * (static_cast<std::uint64_t>(Q) + 1)));
+  rc::Random random = geomcheck::gen::sequence<Q>(20261121);
   std::map<std::string, Row> rows;
   for (int i = 0; i < n; ++i) {
     const auto c = gen(random.split(), 50).value().first;

@@ -24,7 +24,7 @@ template <QueryId Q>
 void measure(int n, const std::string& out) {
   const std::uint64_t seed = 20261121;
   const auto gen = gen::targeted<Q>();
-  rc::Random random(seed ^ (0x9e3779b97f4a7c15ull * (static_cast<std::uint64_t>(Q) + 1)));
+  rc::Random random = geomcheck::gen::sequence<Q>(seed);
   struct Row {
     double width;  // enclosure width / scale, log2
     int index;

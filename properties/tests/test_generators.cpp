@@ -51,7 +51,7 @@ std::string hex(double v) {
 template <QueryId Q>
 std::uint64_t pair_hash() {
   Fnv f;
-  rc::Random random(kSeed ^ (0x9e3779b97f4a7c15ull * (static_cast<std::uint64_t>(Q) + 1)));
+  rc::Random random = gen::sequence<Q>(kSeed);
   const auto targeted = gen::targeted<Q>();
   for (int i = 0; i < kCases; ++i) {
     const auto tc = targeted(random.split(), 50).value();

@@ -130,7 +130,7 @@ class FamilyRun {
       shrunk += line.shrunk;
     };
     steps.lost = [&](int i, const Failure& f) { lost(i, f); };
-    const int ran = run_guarded(static_cast<int>(cases_.size()), {opt_.isolate, opt_.case_seconds, opt_.seconds}, steps);
+    const int ran = run_guarded(static_cast<int>(cases_.size()), {opt_.isolate, opt_.case_seconds, opt_.seconds, 1, opt_.progress}, steps);
     res_.cases = ran;
     stopped_by_time(rep_, ran < static_cast<int>(cases_.size()));
     res_.not_expressed = not_asked;

@@ -6,10 +6,15 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <atomic>
 #include <chrono>
+#include <condition_variable>
 #include <csignal>
 #include <cstdio>
 #include <cstdlib>
+#include <exception>
+#include <mutex>
+#include <thread>
 
 namespace geomcheck::detail {
 
@@ -34,6 +39,93 @@ std::vector<std::string> split(const std::string& text) {
   out.push_back(text.substr(from));
   return out;
 }
+
+using Clock = std::chrono::steady_clock;
+
+/// The progress line of a run (GuardOptions::progress): on a terminal
+/// redrawn every 0.5 s, into a file a line every 10 s (a log stays
+/// readable), and the last one when the run ends.
+class Progress {
+ public:
+  Progress(const std::string& label, int n, Clock::time_point start)
+      : label_(label), n_(n), start_(start), tty_(::isatty(::fileno(stderr)) != 0) {}
+  /// `done` cases so far; shown when the line is due (always when `last`).
+  void show(int done, bool last = false) {
+    if (label_.empty()) return;
+    const double el = std::chrono::duration<double>(Clock::now() - start_).count();
+    if (!last && el - shown_ < (tty_ ? 0.5 : 10)) return;
+    shown_ = el;
+    std::fprintf(stderr, "%s%s %7d / %d cases  %6.0f cases/s  %5.1fs%s", tty_ ? "\r" : "", label_.c_str(), done, n_,
+                 done / std::max(el, 1e-9), el, tty_ && !last ? "" : "\n");
+  }
+
+ private:
+  std::string label_;
+  int n_;
+  Clock::time_point start_;
+  bool tty_;
+  double shown_ = 0;
+};
+
+/// run_guarded in this process on opt.threads threads, from case `from`:
+/// every check first, then save and absorb in case order (a harness error
+/// in a check: the case lost). Returns the number of cases run.
+int run_in_threads(int from, int n, const GuardOptions& opt, const CaseSteps& steps, Progress& progress,
+                   const std::function<bool()>& expired) {
+  const int m = n - from;
+  std::vector<CaseLine> lines(m);
+  std::vector<std::string> errors(m);
+  std::vector<char> ran(m, 0);
+  std::atomic<int> next{from}, done{0};
+  std::mutex mu;
+  std::condition_variable all_done;
+  int finished = 0;
+  auto worker = [&] {
+    for (;;) {
+      const int i = next++;
+      if (i >= n || expired()) break;
+      try {
+        lines[i - from] = steps.check(i);
+      } catch (const std::exception& e) {
+        errors[i - from] = e.what();
+      } catch (...) {
+        errors[i - from] = "an exception that is not a std::exception";
+      }
+      ran[i - from] = 1;
+      ++done;
+    }
+    std::lock_guard<std::mutex> lock(mu);
+    ++finished;
+    all_done.notify_one();
+  };
+  const int threads = std::max(1, std::min(opt.threads, m));
+  std::vector<std::thread> pool;
+  for (int k = 0; k < threads; ++k) pool.emplace_back(worker);
+  {
+    std::unique_lock<std::mutex> lock(mu);
+    while (!all_done.wait_for(lock, std::chrono::milliseconds(500), [&] { return finished == threads; }))
+      progress.show(done);
+  }
+  for (auto& t : pool) t.join();
+  int count = 0;
+  for (int i = from; i < n; ++i) {
+    if (!ran[i - from]) continue;  // not started: the time ran out
+    ++count;
+    if (!errors[i - from].empty()) {
+      std::fprintf(stderr, "verify: case %d: internal error: %s\n", i, errors[i - from].c_str());
+      steps.lost(i, Failure{"harness-error", "the harness failed on this case (" + errors[i - from] + ")"});
+      continue;
+    }
+    CaseLine& line = lines[i - from];
+    if (!line.properties.empty()) line.files = steps.save(i, line, true);
+    steps.absorb(i, line);
+  }
+  return count;
+}
+
+/// run_guarded's cases, without its last progress line.
+int run_cases_guarded(int n, const GuardOptions& opt, const CaseSteps& steps, Progress& progress,
+                      const std::function<bool()>& expired);
 
 }  // namespace
 
@@ -64,6 +156,7 @@ int parse_verify_command(int argc, char** argv, const std::string& about, const 
     return rc == 0 ? 0 : 2;
   }
   if (no_shrink) opt.shrink_budget = 0;
+  if (!opt.quiet && opt.progress.empty()) opt.progress = "[verify]";
   for (int i = 0; i < argc; ++i) opt.command += (i ? " " : "") + std::string(argv[i]);
   return -1;
 }
@@ -120,10 +213,20 @@ bool case_line_from_text(const std::string& text, int& i, CaseLine& line) {
 }
 
 int run_guarded(int n, const GuardOptions& opt, const CaseSteps& steps) {
-  const auto start = std::chrono::steady_clock::now();
-  const auto expired = [&] {
-    return opt.seconds > 0 && std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() > opt.seconds;
+  const auto start = Clock::now();
+  const std::function<bool()> expired = [&] {
+    return opt.seconds > 0 && std::chrono::duration<double>(Clock::now() - start).count() > opt.seconds;
   };
+  Progress progress(opt.progress, n, start);
+  const int ran = run_cases_guarded(n, opt, steps, progress, expired);
+  progress.show(ran, true);
+  return ran;
+}
+
+namespace {
+
+int run_cases_guarded(int n, const GuardOptions& opt, const CaseSteps& steps, Progress& progress,
+                      const std::function<bool()>& expired) {
   const auto whole = [&](int i) {  // check, save, count
     CaseLine line = steps.check(i);
     line.files = steps.save(i, line, true);
@@ -139,7 +242,11 @@ int run_guarded(int n, const GuardOptions& opt, const CaseSteps& steps) {
       if (pid < 0) ::close(fds[0]), ::close(fds[1]);
     }
     if (pid < 0) {  // no child: in process
-      for (; next < n && !expired(); ++next) steps.absorb(next, whole(next));
+      if (opt.threads > 1) return next + run_in_threads(next, n, opt, steps, progress, expired);
+      for (; next < n && !expired(); ++next) {
+        steps.absorb(next, whole(next));
+        progress.show(next + 1);
+      }
       return next;
     }
     // The child: "C\t<line>" when a case's checks are done, "F\t<line>" when
@@ -195,6 +302,7 @@ int run_guarded(int n, const GuardOptions& opt, const CaseSteps& steps) {
           steps.absorb(i, line);
           pending = false;
           next = i + 1;
+          progress.show(next);
         }
       }
       text.clear();
@@ -227,5 +335,7 @@ int run_guarded(int n, const GuardOptions& opt, const CaseSteps& steps) {
   }
   return next;
 }
+
+}  // namespace
 
 }  // namespace geomcheck::detail

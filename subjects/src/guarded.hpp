@@ -37,6 +37,14 @@ struct GuardOptions {
   bool isolate = true;          ///< a child process (false, or no fork: in process)
   unsigned case_seconds = 60;   ///< a case taking longer: the subject hung
   double seconds = 0;           ///< no case started after this many seconds (0: no limit)
+  /// In process: the checks of the cases on this many threads (check() must
+  /// be safe to call at once on different cases), then each case saved and
+  /// counted in case order. With a child process: one case at a time.
+  int threads = 1;
+  /// Heads a progress line on stderr ("<progress> <done> / <n> cases ..."),
+  /// redrawn every 0.5 s on a terminal, a line every 10 s into a file, and
+  /// a last one when the run ends; empty: none.
+  std::string progress;
 };
 
 /// The steps of one case, as the family runs them.
@@ -67,9 +75,10 @@ struct CaseSteps {
 /// child goes on after a lost case. absorb() runs in the child too (its
 /// caps of what it saves next) and in the parent from the child's lines.
 /// Without isolate (or without fork), in this process: the subject's state
-/// changes stay, and a crash ends the run. With opt.seconds, no case is
-/// started once that many seconds have passed. Returns the number of cases
-/// run (n unless stopped by time).
+/// changes stay, and a crash ends the run; with opt.threads, the checks on
+/// that many threads first, then save() and absorb() in case order. With
+/// opt.seconds, no case is started once that many seconds have passed.
+/// Returns the number of cases run (n unless stopped by time).
 int run_guarded(int n, const GuardOptions& opt, const CaseSteps& steps);
 
 /// Parses verify()'s command line (verify.hpp's options) into `opt` and

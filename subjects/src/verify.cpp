@@ -31,21 +31,6 @@ using detail::shell_quote;
 using detail::replay_command;
 using detail::replay_prefix;
 
-/// check_all, with a subject that throws failing the case instead of
-/// ending the run.
-/// `known`: the subject's evaluation of c, when it answered (judged instead
-/// of asking the truth again).
-template <class Case, class Impl>
-CheckResult guarded_check(const Case& c, const Impl& subject, const Evaluation* known = nullptr) {
-  try {
-    return known ? check_all(c, *known, subject) : check_all(c, subject);
-  } catch (const std::exception& ex) {
-    return Failure{"subject-threw", std::string("the subject threw: ") + ex.what()};
-  } catch (...) {
-    return Failure{"subject-threw", "the subject threw something that is not a std::exception"};
-  }
-}
-
 /// check_every (each failing property of the case, so that one cannot hide
 /// another), with a subject that throws failing the case instead of ending
 /// the run.
@@ -81,11 +66,13 @@ draw::Answer drawn_answer(const Case& c, const Impl& subject) {
 /// the truth alone (evaluated beside production's answer, which is not
 /// shown).
 /// `answered` (when given) tells which.
+/// `how` (when given) evaluates in evaluate()'s place (RunHooks::evaluate).
 template <QueryId Q>
-Evaluation truth_of(const typename QueryTraits<Q>::Case& c, const ImplOf<Q>& subject, bool* answered = nullptr) {
+Evaluation truth_of(const typename QueryTraits<Q>::Case& c, const ImplOf<Q>& subject, bool* answered = nullptr,
+                    const std::function<Evaluation()>& how = {}) {
   if (answered) *answered = true;
   try {
-    return evaluate(c, subject);
+    return how ? how() : evaluate(c, subject);
   } catch (...) {
     if (answered) *answered = false;
     Evaluation e = evaluate(c, production_of<Q>());
@@ -95,10 +82,12 @@ Evaluation truth_of(const typename QueryTraits<Q>::Case& c, const ImplOf<Q>& sub
 }
 
 /// Saves a failing case: its case file (the truth's verdict filed, none on
-/// invalid input, as replay expects) and, beside it, a page drawing it.
+/// invalid input, as replay expects) and, beside it, a page drawing it
+/// (the drawing also into `drawing`, when given).
 template <QueryId Q>
 bool save_failure(const typename QueryTraits<Q>::Case& c, const ImplOf<Q>& subject, const Failure& f,
-                  const VerifyOptions& opt, int index, std::filesystem::path& path, bool with_answer) {
+                  const VerifyOptions& opt, int index, const std::string& mode, std::filesystem::path& path,
+                  bool with_answer, std::string* drawing_out = nullptr) {
   const std::filesystem::path dir = opt.out / info(Q).name;
   std::error_code ec;
   std::filesystem::create_directories(dir, ec);
@@ -107,7 +96,7 @@ bool save_failure(const typename QueryTraits<Q>::Case& c, const ImplOf<Q>& subje
   path = dir / name;
   const Evaluation e = with_answer ? truth_of<Q>(c, subject) : evaluate(c, production_of<Q>());
   CaseFile file = from_case<Q>(c, opt.found_by + " " + subject.name + " seed=" + std::to_string(opt.seed) +
-                                      " case=" + std::to_string(index),
+                                      " case=" + std::to_string(index) + (mode.empty() ? "" : " mode=" + mode),
                                e.valid ? verdict_word(Q, e) : std::string(), f.property + ": " + f.detail);
   std::string err;
   if (!save_case(path, file, err)) {
@@ -128,6 +117,7 @@ bool save_failure(const typename QueryTraits<Q>::Case& c, const ImplOf<Q>& subje
   }
   report::write_counterexample_page(std::filesystem::path(path).replace_extension(".html"), name, drawing, subject.name,
                                     replay_command(opt, path));
+  if (drawing_out) *drawing_out = std::move(drawing);
   return true;
 }
 
@@ -164,11 +154,9 @@ struct Tally {
   std::vector<double> ns;  ///< the subject's time per call, one per case
   std::vector<std::string> modes;  ///< each case's generator mode: a failure's signature is property @ mode
   std::map<std::string, int> saved_of_property, saved_of_signature;  ///< case files saved, for the caps
-  /// Case i's line (detail::run_guarded): its figures, its failures and
-  /// their case files.
-  void add(QueryId id, int i, const detail::CaseLine& line) {
-    Evaluation e;
-    report::from_json(line.figures, e);
+  /// Case i's line (detail::run_guarded): its evaluation (read from its
+  /// figures), its failures and their case files.
+  void add(QueryId id, int i, const detail::CaseLine& line, const Evaluation& e) {
     report::add_evaluation(rep, id, e);
     if (std::isfinite(line.ns)) ns.push_back(line.ns);
     rep.shrunk += line.shrunk;
@@ -227,7 +215,8 @@ void complete_figures(const ImplOf<Q>& subject, const VerifyOptions& opt, Tally&
     std::nth_element(t.ns.begin(), t.ns.begin() + t.ns.size() / 2, t.ns.end());
     rep.prod_ns = t.ns[t.ns.size() / 2];
   }
-  rep.oracle_us = rep.cases ? seconds * 1e6 / rep.cases : NAN;
+  const int threads = opt.isolate ? 1 : std::max(1, opt.threads);  // the time per case on one core
+  rep.oracle_us = rep.cases ? seconds * 1e6 * threads / rep.cases : NAN;
 }
 
 /// report.json and report.html of a verify run (and a JUnit file when asked
@@ -252,37 +241,38 @@ std::filesystem::path write_report(const ImplOf<Q>& subject, const VerifyOptions
 }
 
 template <QueryId Q>
-VerifyResult run_cases(const ImplOf<Q>& subject, const std::vector<Tagged<typename QueryTraits<Q>::Case>>& cases,
-                       const VerifyOptions& opt);
+VerifyResult run_cases(const ImplOf<Q>& subject, const std::vector<Tagged<typename QueryTraits<Q>::Case>>& all,
+                       const std::vector<int>& index, const VerifyOptions& opt, const RunHooks<Q>& hooks = {});
 
 template <QueryId Q>
 VerifyResult verify_cases(const ImplOf<Q>& subject, const VerifyOptions& opt) {
-  using Case = typename QueryTraits<Q>::Case;
-  const auto gen = Spec<Q>::targeted();
-  // The campaign's derivation: the same seed draws the same cases there.
-  rc::Random random(opt.seed ^ (0x9e3779b97f4a7c15ull * (static_cast<std::uint64_t>(Q) + 1)));
-  std::vector<Tagged<Case>> cases;
-  cases.reserve(opt.cases);
-  for (int i = 0; i < opt.cases; ++i) cases.push_back(gen(random.split(), 50).value());
-  return run_cases<Q>(subject, cases, opt);
+  std::vector<int> index(std::max(0, opt.cases));
+  for (int i = 0; i < opt.cases; ++i) index[i] = i;
+  return run_cases<Q>(subject, gen::draw<Q>(opt.seed, opt.cases), index, opt);
 }
 
-/// verify() on the given cases (each tagged: its mode, or its file's name).
+/// verify() on the given cases (each tagged: its mode, or its file's name),
+/// case k numbered index[k].
 template <QueryId Q>
 VerifyResult run_cases(const ImplOf<Q>& subject, const std::vector<Tagged<typename QueryTraits<Q>::Case>>& all,
-                       const VerifyOptions& opt) {
+                       const std::vector<int>& all_index, const VerifyOptions& opt, const RunHooks<Q>& hooks) {
   using Case = typename QueryTraits<Q>::Case;
   const auto start = std::chrono::steady_clock::now();
   // The cases the subject can state (all of them unless it says otherwise).
   std::vector<Tagged<Case>> cases;
+  std::vector<int> index;  // case i's number
   int not_expressed = 0;
-  for (const auto& c : all) {
-    if (subject_states(c.first, subject)) cases.push_back(c);
-    else ++not_expressed;
+  for (std::size_t k = 0; k < all.size(); ++k) {
+    if (!subject_states(all[k].first, subject)) {
+      ++not_expressed;
+      continue;
+    }
+    cases.push_back(all[k]);
+    index.push_back(k < all_index.size() ? all_index[k] : static_cast<int>(k));
   }
   if (opt.summary)
     std::fprintf(stderr, "verify %s against %s: %d targeted cases, seed %llu%s\n", subject.name, info(Q).name,
-                 opt.cases, static_cast<unsigned long long>(opt.seed), opt.isolate ? "" : ", in process");
+                 static_cast<int>(all.size()), static_cast<unsigned long long>(opt.seed), opt.isolate ? "" : ", in process");
   if (opt.summary) std::printf("%s\n", claims_text<Q>(subject).c_str());
   std::fflush(stdout);
 
@@ -300,22 +290,26 @@ VerifyResult run_cases(const ImplOf<Q>& subject, const std::vector<Tagged<typena
     Failure shown = f;
     if (ask_subject && opt.shrink_budget > 0) {
       Shrunk how;
+      // Failing the same property, wherever it comes among the case's
+      // failures (a property that fails after another is shrunk too).
+      const auto same = [&](const Case& k) -> CheckResult {
+        for (Failure& g : guarded_every(k, subject))
+          if (g.property == f.property) return std::move(g);
+        return std::nullopt;
+      };
       c = shrink(
-          c,
-          [&](const Case& k) {
-            const CheckResult g = guarded_check(k, subject);
-            return g && g->property == f.property;
-          },
-          opt.shrink_budget, &how);
+          c, [&](const Case& k) { return same(k).has_value(); }, opt.shrink_budget, &how);
       if (how.simplified > 0) {
         ++shrunk;
-        if (const CheckResult g = guarded_check(c, subject)) shown = *g;
+        if (CheckResult g = same(c)) shown = std::move(*g);
         shown.detail += " (shrunk: " + std::to_string(how.simplified) + " numbers simplified)";
       }
     }
-    if (!save_failure<Q>(c, subject, shown, opt, i, path, ask_subject)) return {};
+    std::string drawing;
+    if (!save_failure<Q>(c, subject, shown, opt, index[i], cases[i].second, path, ask_subject, &drawing)) return {};
+    if (tally.rep.drawings.size() < report::kInlineDrawings) tally.rep.drawings.push_back(std::move(drawing));
     if (!opt.quiet)
-      std::printf("FAIL %s %s (case %d, %s): %s\n  drawn: %s\n  replay: %s\n", subject.name, f.property.c_str(), i,
+      std::printf("FAIL %s %s (case %d, %s): %s\n  drawn: %s\n  replay: %s\n", subject.name, f.property.c_str(), index[i],
                   cases[i].second.c_str(), shown.detail.c_str(),
                   std::filesystem::path(path).replace_extension(".html").string().c_str(),
                   replay_command(opt, path).c_str());
@@ -323,16 +317,19 @@ VerifyResult run_cases(const ImplOf<Q>& subject, const std::vector<Tagged<typena
     return path;
   };
   // Every property, the figures of the report and one call timed; the
-  // failures kept for their pages (the same process saves them next).
-  int checked_case = -1;
-  std::vector<Failure> checked_failures;
+  // evaluation and the failures kept in this process (which saves and, in
+  // process, counts them next; a child's line carries the figures).
+  std::vector<std::vector<Failure>> found(cases.size());
+  std::vector<Evaluation> evaluations(opt.isolate ? 0 : cases.size());
   auto check = [&](int i) {
     detail::CaseLine line;
     const Case& c = cases[i].first;
     bool answered = false;
-    const Evaluation e = truth_of<Q>(c, subject, &answered);
-    checked_failures = guarded_every(c, subject, answered ? &e : nullptr);
-    checked_case = i;
+    const Evaluation e =
+        hooks.evaluate ? truth_of<Q>(c, subject, &answered, [&] { return hooks.evaluate(index[i], c); })
+                       : truth_of<Q>(c, subject, &answered);
+    std::vector<Failure>& failures = found[i];
+    failures = guarded_every(c, subject, answered ? &e : nullptr);
     try {
       const auto t0 = std::chrono::steady_clock::now();
       const bool hit = Spec<Q>::hit(c, subject);
@@ -340,29 +337,40 @@ VerifyResult run_cases(const ImplOf<Q>& subject, const std::vector<Tagged<typena
       if (hit && line.ns < 0) std::puts("");  // keeps the call
     } catch (...) {
     }
-    line.figures = report::to_json(e);
-    for (const Failure& f : checked_failures) line.properties.push_back(f.property);
+    if (opt.isolate) line.figures = report::to_json(e);
+    else evaluations[i] = e;
+    for (const Failure& f : failures) line.properties.push_back(f.property);
     return line;
   };
   auto save_all = [&](int i, detail::CaseLine& line, bool ask_subject) {
     std::vector<std::string> files;
     shrunk = 0;
     for (std::size_t k = 0; k < line.properties.size(); ++k) {
-      const Failure f = checked_case == i && k < checked_failures.size()
-                            ? checked_failures[k]
+      const Failure f = k < found[i].size()
+                            ? found[i][k]
                             : Failure{line.properties[k], "(the subject ended the process while this failure was being shrunk)"};
       files.push_back(save(i, f, ask_subject).string());
     }
     line.shrunk += shrunk;
     return files;
   };
-  auto absorb = [&](int i, const detail::CaseLine& line) { tally.add(Q, i, line); };
+  auto absorb = [&](int i, const detail::CaseLine& line) {
+    Evaluation read;
+    if (!line.figures.empty()) report::from_json(line.figures, read);
+    const Evaluation& e = line.figures.empty() && i < static_cast<int>(evaluations.size()) ? evaluations[i] : read;
+    tally.add(Q, i, line, e);
+    if (hooks.counted) hooks.counted(index[i], e, line.properties);
+    found[i].clear();
+    if (i < static_cast<int>(evaluations.size())) evaluations[i] = Evaluation{};
+  };
   auto lost = [&](int i, const Failure& f) {
     ++tally.rep.cases;  // run, and failed without an answer to count
     tally.fail(i, {f.property}, {save(i, f, false).string()});
   };
-  const int ran = detail::run_guarded(static_cast<int>(cases.size()), {opt.isolate, opt.case_seconds, opt.seconds},
-                                      {check, save_all, absorb, lost});
+  const int ran =
+      detail::run_guarded(static_cast<int>(cases.size()),
+                          {opt.isolate, opt.case_seconds, opt.seconds, opt.isolate ? 1 : opt.threads, opt.progress},
+                          {check, save_all, absorb, lost});
   VerifyResult& res = tally.res;
   res.cases = ran;
   tally.rep.stopped_by_time = ran < static_cast<int>(cases.size());
@@ -430,7 +438,9 @@ VerifyResult verify_file_cases(const ImplOf<Q>& subject, const std::vector<std::
   }
   VerifyOptions o = opt;
   o.cases = static_cast<int>(cases.size());
-  return run_cases<Q>(subject, cases, o);
+  std::vector<int> index(cases.size());
+  for (std::size_t k = 0; k < cases.size(); ++k) index[k] = static_cast<int>(k);
+  return run_cases<Q>(subject, cases, index, o);
 }
 
 template <QueryId Q>
@@ -462,6 +472,11 @@ int verify_program(const ImplOf<Q>& subject, int argc, char** argv) {
 
 }  // namespace
 
+template <QueryId Q>
+VerifyResult verify(const ImplOf<Q>& subject, const std::vector<std::pair<typename QueryTraits<Q>::Case, std::string>>& cases,
+                    const std::vector<int>& index, const VerifyOptions& opt, const RunHooks<Q>& hooks) {
+  return run_cases<Q>(subject, cases, index, opt, hooks);
+}
 template <QueryId Q>
 VerifyResult verify(const ImplOf<Q>& subject, const VerifyOptions& opt) {
   return verify_cases<Q>(subject, opt);
@@ -495,6 +510,9 @@ const ImplOf<Q>& unwrap(const NamedOnly<Q>& s) {
                                             const VerifyOptions&);                                             \
   template int replay<QueryId::id>(const ImplOf<QueryId::id>&, const std::vector<std::filesystem::path>&);    \
   template int verify<QueryId::id>(const ImplOf<QueryId::id>&, int, char**);                                 \
+  template VerifyResult verify<QueryId::id>(const ImplOf<QueryId::id>&,                                       \
+                                            const std::vector<std::pair<QueryTraits<QueryId::id>::Case, std::string>>&, \
+                                            const std::vector<int>&, const VerifyOptions&, const RunHooks<QueryId::id>&); \
   VerifyResult verify(const PlainSubject<QueryId::id>& subject, const VerifyOptions& opt) {                   \
     return verify_cases<QueryId::id>(unwrap(subject), opt);                                                           \
   }                                                                                                           \

@@ -72,6 +72,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <iterator>
 #include <map>
 #include <memory>
@@ -159,6 +160,15 @@ struct VerifyOptions {
   std::string found_by = "verify";           ///< a saved case file's found-by line starts with it (then the subject, seed and case)
   std::string command;                       ///< for the report: the command line (default: program)
   std::string started;                       ///< for the report: the UTC start time (default: now)
+  /// In process (isolate false): the cases' checks on this many threads
+  /// (the subject must be safe to call from several at once), then each
+  /// case saved and counted in case order, so that the run's figures and
+  /// files do not depend on it.
+  int threads = 1;
+  /// Heads a progress line on stderr (redrawn every 0.5 s on a terminal, a
+  /// line every 10 s into a file); empty: none. verify(subject, argc, argv)
+  /// shows one unless --quiet.
+  std::string progress;
 };
 
 /// What verify() found.
@@ -217,6 +227,30 @@ template <QueryId Q>
 int replay(const ImplOf<Q>& subject, const std::vector<std::filesystem::path>& files);
 template <QueryId Q>
 int verify(const ImplOf<Q>& subject, int argc, char** argv);
+
+/// What a run of verify() on given cases may add beside the subject's
+/// checks: a campaign's engine asked on every case, and its own count of
+/// each one (tools/campaign.cpp).
+template <QueryId Q>
+struct RunHooks {
+  using Case = typename QueryTraits<Q>::Case;
+  /// The subject's answer to case k held to the truth (Evaluation), in
+  /// place of evaluate(c, subject): it may score another engine beside it
+  /// (Evaluation::peer). Called on the checking threads (opt.threads), once
+  /// per case; the checks judge what it returns.
+  std::function<Evaluation(int k, const Case& c)> evaluate;
+  /// Case k counted, in case order, after its failures were saved: its
+  /// evaluation and the properties it failed (none: it passed).
+  std::function<void(int k, const Evaluation& e, const std::vector<std::string>& failed)> counted;
+};
+
+/// verify() of a subject on these cases (each tagged by its generator
+/// mode), case k saved and named by the number index[k] (its place in the
+/// seed's sequence: a campaign's shard runs some of them); `hooks` as
+/// above. opt.cases is not read (the cases are given).
+template <QueryId Q>
+VerifyResult verify(const ImplOf<Q>& subject, const std::vector<std::pair<typename QueryTraits<Q>::Case, std::string>>& cases,
+                    const std::vector<int>& index, const VerifyOptions& opt, const RunHooks<Q>& hooks = {});
 
 /// The subject type the plain overloads of query Q take: ImplOf<Q>, or, for
 /// a query answered by penetration() (whose subject type is its pair's

@@ -39,6 +39,24 @@ rc::Gen<typename QueryTraits<Q>::Case> wild();
 GEOMCHECK_QUERY_LIST(GEOMCHECK_X)
 #undef GEOMCHECK_X
 
+/// The random source of the seed's sequence of Q's cases: one sequence per
+/// query, so that the same seed draws the same cases of Q in verify(), in a
+/// campaign of every query and in the benchmarks.
+template <QueryId Q>
+rc::Random sequence(std::uint64_t seed) {
+  return rc::Random(seed ^ (0x9e3779b97f4a7c15ull * (static_cast<std::uint64_t>(Q) + 1)));
+}
+/// The seed's first n targeted cases of Q (size 50), each tagged by its mode.
+template <QueryId Q>
+std::vector<Tagged<typename QueryTraits<Q>::Case>> draw(std::uint64_t seed, int n) {
+  const auto gen = targeted<Q>();
+  rc::Random random = sequence<Q>(seed);
+  std::vector<Tagged<typename QueryTraits<Q>::Case>> cases;
+  cases.reserve(n > 0 ? n : 0);
+  for (int i = 0; i < n; ++i) cases.push_back(gen(random.split(), 50).value());
+  return cases;
+}
+
 /// Query `From`'s targeted cases as cases of query `To` over the same two
 /// shapes (the same modes and shrinking): for a second query of a pair.
 template <QueryId To, QueryId From>

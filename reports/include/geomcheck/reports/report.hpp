@@ -75,7 +75,7 @@ struct QueryReport {
   /// needed (oracle::to_string(Stage)).
   std::map<std::string, int> truth_stages;
   std::vector<std::string> counterexamples;
-  std::vector<std::string> drawings;      // production's counterexamples, drawn (first 12)
+  std::vector<std::string> drawings;      // the subject's counterexamples, drawn (the first kInlineDrawings)
   std::vector<std::string> fcl_drawings;  // FCL's disagreements beyond the band, drawn (the first 3 saved of each kind)
   std::map<std::string, int> failures_by_property;
   /// Failing cases by signature, "property @ generator mode": the kinds of
@@ -164,6 +164,9 @@ struct RunInfo {
 inline constexpr int kMaxSavedPerKind = 25;
 /// Case files saved per failure signature (property and generator mode).
 inline constexpr int kMaxSavedPerSignature = 5;
+/// Saved failures of a query drawn inline in its report section (the first
+/// ones; every saved one has its page beside its case file).
+inline constexpr std::size_t kInlineDrawings = 12;
 
 // ---- Serialising -------------------------------------------------------------
 //
