@@ -144,7 +144,7 @@ int parse_verify_command(int argc, char** argv, const std::string& about, const 
   bool no_shrink = false;
   app.add_flag("--no-shrink", no_shrink, "save failing " + unit + " as found, not shrunk");
   app.add_option("--replay", replays, "replay these case files instead")->check(CLI::ExistingFile);
-  app.add_flag("--quiet", opt.quiet, "no line per saved failure");
+  app.add_flag("--quiet", opt.quiet, "no line per saved failure, no progress line (stderr)");
   app.add_flag("!--in-process", opt.isolate,
                "run the subject in this process (its state changes stay; a crash ends the run)");
   app.add_flag("!--no-report", opt.report, "write no report.json and report.html");

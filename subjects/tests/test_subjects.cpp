@@ -5,12 +5,14 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <mutex>
 #include <sstream>
 #include <stdexcept>
 #include <thread>
@@ -192,6 +194,61 @@ TEST(Subjects, EveryFailingPropertyOfACaseIsReported) {
   const std::string json = read_text(r.report.parent_path() / "report.json");
   EXPECT_NE(json.find("\"oracle-verdict\""), std::string::npos);
   EXPECT_NE(json.find("\"robust-unit-normal\""), std::string::npos);
+}
+
+// In process on two threads, a wrong subject gives what it gives on one:
+// the same failing cases, counts, saved files (same names, same bytes) and
+// figures, as the checks run at once but the cases are saved and counted in
+// case order. Every failure is shrunk, secondary properties included. The
+// hooks see every case once: evaluate() on the checking threads, counted()
+// in case order, under the numbers given.
+TEST(Subjects, ThreadsChangeNothingButTheTime) {
+  const auto mine = subject<kSphere>(
+      "capsule-ends", [](const Cylinder& c, const Sphere& s) { return teeth::kCapsuleForCylinder.collide(c, s).hit; },
+      [](const Cylinder& c, const Sphere& s) { return teeth::kCapsuleForCylinder.collide(c, s); });
+  const auto cases = gen::draw<kSphere>(VerifyOptions{}.seed, 400);
+  std::vector<int> index(cases.size());
+  for (std::size_t k = 0; k < index.size(); ++k) index[k] = static_cast<int>(1000 + 2 * k);  // a shard's numbers
+  auto run = [&](const std::string& name, int threads, std::vector<int>* evaluated, std::vector<int>* counted) {
+    VerifyOptions opt = options(name, 0);
+    opt.isolate = false;
+    opt.threads = threads;
+    RunHooks<kSphere> hooks;
+    std::mutex mu;
+    hooks.evaluate = [&](int k, const QueryTraits<kSphere>::Case& c) {
+      std::lock_guard<std::mutex> lock(mu);
+      evaluated->push_back(k);
+      return evaluate(c, static_cast<const ImplOf<kSphere>&>(mine));
+    };
+    hooks.counted = [&](int k, const Evaluation&, const std::vector<std::string>&) { counted->push_back(k); };
+    return verify<kSphere>(mine, cases, index, opt, hooks);
+  };
+  std::vector<int> e1, c1, e2, c2;
+  const VerifyResult one = run("threads-1", 1, &e1, &c1), two = run("threads-2", 2, &e2, &c2);
+  ASSERT_GT(one.failures, 0);
+  EXPECT_EQ(one.cases, 400);
+  EXPECT_EQ(two.cases, one.cases);
+  EXPECT_EQ(two.failures, one.failures);
+  EXPECT_EQ(two.by_property, one.by_property);
+  EXPECT_EQ(two.failed_cases, one.failed_cases);
+  EXPECT_EQ(two.figures.failures_by_signature, one.figures.failures_by_signature);
+  EXPECT_EQ(two.figures.shrunk, one.figures.shrunk);
+  EXPECT_EQ(one.figures.shrunk, static_cast<int>(one.saved.size())) << "every saved failure shrunk";
+  EXPECT_EQ(two.figures.depth.v, one.figures.depth.v);
+  EXPECT_FALSE(two.figures.drawings.empty());
+  ASSERT_EQ(two.saved.size(), one.saved.size());
+  for (std::size_t k = 0; k < one.saved.size(); ++k) {
+    EXPECT_EQ(two.saved[k].filename(), one.saved[k].filename());
+    std::string a = read_text(one.saved[k]), b = read_text(two.saved[k]);
+    EXPECT_EQ(b, a);
+    const int number = std::atoi(one.saved[k].filename().string().c_str());
+    EXPECT_TRUE(number >= 1000 && number % 2 == 0) << "saved under the number given: " << one.saved[k];
+  }
+  std::sort(e2.begin(), e2.end());
+  EXPECT_EQ(e1, index);
+  EXPECT_EQ(e2, index);
+  EXPECT_EQ(c1, index);
+  EXPECT_EQ(c2, index) << "counted in case order";
 }
 
 // A relation's failure is drawn with the case it compared: a subject that

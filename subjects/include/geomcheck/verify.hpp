@@ -62,7 +62,7 @@
 //   --max-saved N   case files saved per failing property (default 10)
 //   --no-shrink     save failing cases as found
 //   --replay FILE   replay saved case files instead (repeatable)
-//   --quiet         no line per saved failure
+//   --quiet         no line per saved failure, no progress line (stderr)
 //   --in-process    no child process (see above)
 //   --no-report     no report.json / report.html
 //   --junit FILE    also a JUnit XML file (a test case per property family)
