@@ -76,18 +76,13 @@ bool applicable(const Case& c, int move) {
   return !((move == 2 && !scalable_case(c, 8)) || (move == 3 && !scalable_case(c, -8)));
 }
 
-inline Sphere apply(const Move& m, const Sphere& s) { return {m.pt(s.c), m.len(s.r)}; }
-inline Cylinder apply(const Move& m, const Cylinder& c) { return {m.pt(c.p), m.pt(c.q), m.len(c.r)}; }
-inline Segment apply(const Move& m, const Segment& s) { return {m.pt(s.a), m.pt(s.b)}; }
-inline Capsule apply(const Move& m, const Capsule& c) { return {m.pt(c.p), m.pt(c.q), m.len(c.r)}; }
-/// A box: the centre moves as a point, the axes as directions (never
-/// scaled), the extents as lengths. The reflection (move 0) makes a
-/// right-handed frame left-handed: the same set.
-inline Obb apply(const Move& m, const Obb& b) {
-  return {m.pt(b.c), {{m.vec(b.axes[0]), m.vec(b.axes[1]), m.vec(b.axes[2])}}, {m.len(b.e.x), m.len(b.e.y), m.len(b.e.z)}};
+/// A shape moved (shapes.hpp's mapped: points by pt, a box's axes as
+/// directions (never scaled), radii and extents as lengths). The reflection
+/// (move 0) makes a box's right-handed frame left-handed: the same set.
+template <class Shape>
+Shape apply(const Move& m, const Shape& s) {
+  return mapped(s, m);
 }
-/// A triangle: its vertices move as points.
-inline Triangle apply(const Move& m, const Triangle& t) { return {m.pt(t.a), m.pt(t.b), m.pt(t.c)}; }
 /// A displacement scales with the scene (unlike a normal).
 inline Vec3 displacement(const Move& m, Vec3 d) { return m.id == 5 ? m.pt(d) - m.pt(Vec3{0, 0, 0}) : m.pt(d); }
 inline MovingSphere apply(const Move& m, const MovingSphere& s) { return {m.pt(s.c), m.len(s.r), displacement(m, s.delta)}; }

@@ -92,6 +92,21 @@ inline bool is_valid(const Obb& s) {
 }
 /// Valid: finite vertices.
 inline bool is_valid(const Triangle& s) { return all_finite(s.a) && all_finite(s.b) && all_finite(s.c); }
+
+/// A shape under a map of space `m` (any object with Vec3 pt(Vec3) for
+/// points, Vec3 vec(Vec3) for directions and double len(double) for
+/// lengths): points move by pt, a box's axes by vec, radii and a box's
+/// extents (in the box's own frame) by len. Written once per shape, for
+/// every map: the checks' metamorphic moves and FCL's exact re-expressions
+/// of a scene.
+template <class M> Segment mapped(const Segment& s, const M& m) { return {m.pt(s.a), m.pt(s.b)}; }
+template <class M> Sphere mapped(const Sphere& s, const M& m) { return {m.pt(s.c), m.len(s.r)}; }
+template <class M> Capsule mapped(const Capsule& c, const M& m) { return {m.pt(c.p), m.pt(c.q), m.len(c.r)}; }
+template <class M> Cylinder mapped(const Cylinder& c, const M& m) { return {m.pt(c.p), m.pt(c.q), m.len(c.r)}; }
+template <class M> Obb mapped(const Obb& b, const M& m) {
+  return {m.pt(b.c), {{m.vec(b.axes[0]), m.vec(b.axes[1]), m.vec(b.axes[2])}}, {m.len(b.e.x), m.len(b.e.y), m.len(b.e.z)}};
+}
+template <class M> Triangle mapped(const Triangle& t, const M& m) { return {m.pt(t.a), m.pt(t.b), m.pt(t.c)}; }
 /// Valid: finite centre, radius >= 0 and displacement, and a finite end
 /// position c + delta (so that every position of the sweep is finite).
 inline bool is_valid(const MovingSphere& s) {

@@ -56,11 +56,17 @@ Vec3 in_frame(const Vec3& v, int k) {
   return (k & 2) ? Vec3{w.y, w.z, w.x} : w;
 }
 Motion in_frame(const Motion& m, int k) { return {in_frame(m.from, k), in_frame(m.to, k), m.r}; }
-Cylinder in_frame(const Cylinder& c, int k) { return {in_frame(c.p, k), in_frame(c.q, k), c.r}; }
-Capsule in_frame(const Capsule& c, int k) { return {in_frame(c.p, k), in_frame(c.q, k), c.r}; }
-Sphere in_frame(const Sphere& s, int k) { return {in_frame(s.c, k), s.r}; }
-Obb in_frame(const Obb& b, int k) {  // a cyclic permutation of e's components is not needed: e is in the box's frame
-  return {in_frame(b.c, k), {in_frame(b.axes[0], k), in_frame(b.axes[1], k), in_frame(b.axes[2], k)}, b.e};
+/// Frame k as a map of space (shapes.hpp's mapped): points and directions
+/// re-expressed alike, lengths kept (a box's extents are in its own frame).
+struct InFrame {
+  int k;
+  Vec3 pt(Vec3 v) const { return in_frame(v, k); }
+  Vec3 vec(Vec3 v) const { return in_frame(v, k); }
+  double len(double r) const { return r; }
+};
+template <class Shape>
+Shape in_frame(const Shape& s, int k) {
+  return mapped(s, InFrame{k});
 }
 
 /// Largest size FCL's continuous collision is given: its bounding-volume

@@ -14,6 +14,7 @@
 #include <fcl/narrowphase/collision_result.h>
 
 #include "geomcheck/peers/fcl_adapter.hpp"
+#include "geomcheck/peers/fcl_convert.hpp"
 #include "geomcheck/shapes.hpp"
 
 namespace geomcheck::peers::fcl_detail {
@@ -188,18 +189,6 @@ inline PeerDistance distance_from(double dist, const fcl::Vector3d& p1, const fc
 }
 
 
-/// The points a shape is placed by and its size (a radius, a box's largest
-/// extent): what FCL's range limits are measured on.
-struct Reach {
-  Vec3 points[3];
-  int n = 0;
-  double size = 0;
-};
-inline Reach reach(const Cylinder& c) { return {{c.p, c.q, {}}, 2, c.r}; }
-inline Reach reach(const Capsule& c) { return {{c.p, c.q, {}}, 2, c.r}; }
-inline Reach reach(const Sphere& s) { return {{s.c, {}, {}}, 1, s.r}; }
-inline Reach reach(const Obb& b) { return {{b.c, {}, {}}, 1, max_abs(b.e)}; }
-inline Reach reach(const Triangle& t) { return {{t.a, t.b, t.c}, 3, 0.0}; }
 
 /// The largest of two shapes' sizes and of their points' offsets from a's
 /// first point (NaN is ignored, as the inputs are checked valid first).
@@ -214,10 +203,3 @@ double extent(const A& a, const B& b) {
 
 }  // namespace geomcheck::peers::fcl_detail
 
-/// Every pair the adapter asks FCL about (kFclAsks), for explicit
-/// instantiation: X(A, B), A each of GEOMCHECK_FCL_SOLIDS (fcl_adapter.hpp;
-/// fcl_pairs.cpp checks every pair is kFclAsks).
-#define GEOMCHECK_FCL_PAIRS_WITH(X, A) X(A, Sphere) X(A, Capsule) X(A, Obb) X(A, Cylinder) X(A, Triangle)
-#define GEOMCHECK_FCL_PAIRS(X)                                                                  \
-  GEOMCHECK_FCL_PAIRS_WITH(X, Sphere) GEOMCHECK_FCL_PAIRS_WITH(X, Capsule) GEOMCHECK_FCL_PAIRS_WITH(X, Obb) \
-  GEOMCHECK_FCL_PAIRS_WITH(X, Cylinder)

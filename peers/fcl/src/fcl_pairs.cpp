@@ -132,7 +132,7 @@ PeerDistance fcl_distance(const A& a, const B& b) {
   });
 }
 
-#define GEOMCHECK_X(A, B)                                                           \
+#define GEOMCHECK_FCL_PAIR(A, B)                                                    \
   static_assert(kFclAsks<A, B>);                                                    \
   template bool fcl_overlap_prepared(const FclPair<A, B>&);                        \
   template PeerContact fcl_collide_prepared(const FclPair<A, B>&);                 \
@@ -140,7 +140,7 @@ PeerDistance fcl_distance(const A& a, const B& b) {
   template PeerContact fcl_collide(const A&, const B&);                            \
   template bool fcl_overlap(const A&, const B&, std::string*);                     \
   template PeerDistance fcl_distance(const A&, const B&);
-GEOMCHECK_FCL_PAIRS(GEOMCHECK_X)
-#undef GEOMCHECK_X
+GEOMCHECK_FCL_PAIRS
+#undef GEOMCHECK_FCL_PAIR
 
 }  // namespace geomcheck::peers

@@ -465,6 +465,16 @@ inline bool obb_axes_orthonormal(const Obb& b) {
 /// The list: X(S) for each solid (the adapter's explicit instantiations and
 /// kFclSolid follow from it).
 #define GEOMCHECK_FCL_SOLIDS(X) X(Sphere) X(Capsule) X(Obb) X(Cylinder)
+/// The shapes a solid A is asked against (the solids again, and the
+/// triangle), and from the two lists every pair the adapter asks FCL about
+/// (kFclAsks): GEOMCHECK_FCL_PAIRS expands to GEOMCHECK_FCL_PAIR(A, B) for
+/// each, a macro its user defines first (the explicit instantiations;
+/// fcl_pairs.cpp checks each pair is kFclAsks). A new solid is its name in
+/// both lists.
+#define GEOMCHECK_FCL_SECONDS(A)                                                                       \
+  GEOMCHECK_FCL_PAIR(A, Sphere) GEOMCHECK_FCL_PAIR(A, Capsule) GEOMCHECK_FCL_PAIR(A, Obb)                \
+  GEOMCHECK_FCL_PAIR(A, Cylinder) GEOMCHECK_FCL_PAIR(A, Triangle)
+#define GEOMCHECK_FCL_PAIRS GEOMCHECK_FCL_SOLIDS(GEOMCHECK_FCL_SECONDS)
 #define GEOMCHECK_FCL_IS(T) || std::is_same_v<S, T>
 template <class S>
 inline constexpr bool kFclSolid = false GEOMCHECK_FCL_SOLIDS(GEOMCHECK_FCL_IS);

@@ -79,6 +79,22 @@ template <> struct FclShapeOf<Triangle> { using type = FclTriangle; };
 template <class S>
 using FclOf = typename FclShapeOf<S>::type;
 
+namespace fcl_detail {
+/// The points a shape is placed by and its size (a radius, a box's largest
+/// extent): what FCL's range limits are measured on (fcl_guards.hpp's
+/// extent).
+struct Reach {
+  Vec3 points[3];
+  int n = 0;
+  double size = 0;
+};
+inline Reach reach(const Cylinder& c) { return {{c.p, c.q, {}}, 2, c.r}; }
+inline Reach reach(const Capsule& c) { return {{c.p, c.q, {}}, 2, c.r}; }
+inline Reach reach(const Sphere& s) { return {{s.c, {}, {}}, 1, s.r}; }
+inline Reach reach(const Obb& b) { return {{b.c, {}, {}}, 1, max_abs(b.e)}; }
+inline Reach reach(const Triangle& t) { return {{t.a, t.b, t.c}, 3, 0.0}; }
+}  // namespace fcl_detail
+
 /// A pair of shapes converted once (`A`, `B`: geomcheck shapes with
 /// kFclAsks<A, B>); the `*_prepared` calls run only FCL's query and the
 /// conversion of its result. PeerContact's normal is from a towards b.
