@@ -227,15 +227,16 @@ TEST(Subjects, ThreadsChangeNothingButTheTime) {
   const VerifyResult one = run("threads-1", 1, &e1, &c1), two = run("threads-2", 2, &e2, &c2);
   ASSERT_GT(one.failures, 0);
   EXPECT_EQ(one.cases, 400);
-  EXPECT_EQ(two.cases, one.cases);
-  EXPECT_EQ(two.failures, one.failures);
-  EXPECT_EQ(two.by_property, one.by_property);
   EXPECT_EQ(two.failed_cases, one.failed_cases);
-  EXPECT_EQ(two.figures.failures_by_signature, one.figures.failures_by_signature);
-  EXPECT_EQ(two.figures.shrunk, one.figures.shrunk);
   EXPECT_EQ(one.figures.shrunk, static_cast<int>(one.saved.size())) << "every saved failure shrunk";
-  EXPECT_EQ(two.figures.depth.v, one.figures.depth.v);
   EXPECT_FALSE(two.figures.drawings.empty());
+  // Every figure of the report the same, but the times and the folders.
+  auto figures = [](report::QueryReport r) {
+    r.prod_ns = r.oracle_us = NAN;
+    r.counterexamples.clear();
+    return report::to_json(r);
+  };
+  EXPECT_EQ(figures(two.figures), figures(one.figures));
   ASSERT_EQ(two.saved.size(), one.saved.size());
   for (std::size_t k = 0; k < one.saved.size(); ++k) {
     EXPECT_EQ(two.saved[k].filename(), one.saved[k].filename());
