@@ -236,8 +236,10 @@ struct RunHooks {
   using Case = typename QueryTraits<Q>::Case;
   /// The subject's answer to case k held to the truth (Evaluation), in
   /// place of evaluate(c, subject): it may score another engine beside it
-  /// (Evaluation::peer). Called on the checking threads (opt.threads), once
-  /// per case; the checks judge what it returns.
+  /// (Evaluation::peer). Called where the checks run, once per case: on the
+  /// checking threads (opt.threads) in process; with opt.isolate in the
+  /// child process, so that what it keeps aside stays there (a campaign runs
+  /// in process). The checks judge what it returns.
   std::function<Evaluation(int k, const Case& c)> evaluate;
   /// Case k counted, in case order, after its failures were saved: its
   /// evaluation and the properties it failed (none: it passed).
