@@ -1,7 +1,7 @@
-// geomcheck benchmarks — a cylinder against another convex shape,
-// production against FCL on the same inputs, in one run (the capsule, box,
-// triangle and cylinder pairs; the sphere's program takes its batch and
-// benchmarks from here).
+// geomcheck benchmarks — a convex shape against another, production against
+// FCL on the same inputs, in one run (the cylinder's capsule, box, triangle
+// and cylinder pairs, the sphere and capsule pairs; the cylinder/sphere
+// program takes its batch and benchmarks from here).
 //
 // Two batches of kPairBatch pairs from a fixed seed (printed), each
 // shuffled so that branches are not predictable:
@@ -39,12 +39,12 @@ namespace geomcheck::bench {
 
 inline constexpr std::size_t kPairBatch = 4096;
 
-/// The benchmark of collide(Cylinder, B) against FCL; `Prepared` is the
-/// pair converted once for FCL (fcl_convert.hpp).
-template <class B, class Prepared>
+/// The benchmark of collide(A, B) against FCL (A a cylinder unless given);
+/// `Prepared` is the pair converted once for FCL (fcl_convert.hpp).
+template <class B, class Prepared, class A = Cylinder>
 struct PairBench {
   struct Pair {
-    Cylinder a;
+    A a;
     B b;
   };
   struct Batch {
@@ -59,7 +59,7 @@ struct PairBench {
   };
 
   const char* name;                         ///< e.g. "cylinder/capsule"
-  B (*random_b)(Rng&, const Cylinder& a);  ///< B in a random pose near `a` (a random cylinder, drawn first)
+  B (*random_b)(Rng&, const A& a);  ///< B in a random pose near `a` (a random A, Rng::first, drawn first)
   const char* depth_note;                   ///< what the two depths are, printed with their differences
   /// The selecting verdict: 1 overlapping (or touching), 0 apart, -1
   /// undecided (the pose is skipped); null: production's overlap.
@@ -67,16 +67,16 @@ struct PairBench {
   const char* selected_by = "production";  ///< whose verdict `verdict` is
   /// An earlier version of production's collide, timed in the same run
   /// (BM_prod_collide_before_<set>, and its ratio to FCL); null: none.
-  Contact (*collide_before)(const Cylinder& a, const B& b) = nullptr;
+  Contact (*collide_before)(const A& a, const B& b) = nullptr;
   /// The pair's second query, production's exact penetration depth
   /// (penetration_cylinder_<B>), timed in the same run
   /// (BM_prod_penetration_<set>, and its ratio to FCL's collide); null: none.
-  Contact (*penetration)(const Cylinder& a, const B& b) = nullptr;
+  Contact (*penetration)(const A& a, const B& b) = nullptr;
 
-  /// One random pose: a random cylinder, then B near it.
+  /// One random pose: a random A, then B near it.
   Pair random_pair(Rng& rng) const {
     Pair pr;
-    pr.a = rng.cylinder();
+    pr.a = rng.first<A>();
     pr.b = random_b(rng, pr.a);
     return pr;
   }

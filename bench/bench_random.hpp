@@ -53,6 +53,28 @@ class Rng {
     const double reach = 0.5 * length(c.q - c.p) + c.r;
     return mid + in_box(reach + margin);
   }
+  /// The same around a capsule (its segment's middle; half its length plus
+  /// its radius) and a sphere (its centre and radius).
+  Vec3 around(const Capsule& c, double margin) { return around(Cylinder{c.p, c.q, c.r}, margin); }
+  Vec3 around(const Sphere& s, double margin) { return s.c + in_box(s.r + margin); }
+  /// A random sphere: centre in [-10, 10]^3, radius in [0.1, 1.5].
+  Sphere sphere() {
+    Sphere s;
+    s.c = in_box(10.0);
+    s.r = uniform(0.1, 1.5);
+    return s;
+  }
+  /// A random capsule: first end in [-10, 10]^3, length in [0, 4], radius in [0.1, 1.5].
+  Capsule capsule() {
+    Capsule c;
+    c.p = in_box(10.0);
+    c.q = c.p + uniform(0.0, 4.0) * direction();
+    c.r = uniform(0.1, 1.5);
+    return c;
+  }
+  /// A random first shape of a pair benchmark.
+  template <class A>
+  A first();
   /// A uniform unit quaternion {w, x, y, z}: rejection in the 4-ball,
   /// keeping squared norms in [min_norm2, 1], then normalised.
   std::array<double, 4> unit_quaternion(double min_norm2) {
@@ -71,6 +93,13 @@ class Rng {
 
 /// The columns of the rotation matrix of a unit quaternion {w, x, y, z}
 /// (orthonormal to rounding).
+template <>
+inline Cylinder Rng::first<Cylinder>() { return cylinder(); }
+template <>
+inline Sphere Rng::first<Sphere>() { return sphere(); }
+template <>
+inline Capsule Rng::first<Capsule>() { return capsule(); }
+
 inline std::array<Vec3, 3> rotation_columns(const std::array<double, 4>& q) {
   const auto [w, x, y, z] = q;
   return {Vec3{1 - 2 * (y * y + z * z), 2 * (x * y + w * z), 2 * (x * z - w * y)},
@@ -120,21 +149,23 @@ auto all_hitting(std::size_t n, Draw&& draw, Verdict&& verdict, std::size_t& dra
   return out;
 }
 
-// ---- the shapes B of the cylinder benchmarks, in random poses near a
-// cylinder (the query programs and bench_collide_many draw the same way) ----
+// ---- the shapes B of the pair benchmarks, in random poses near a first
+// shape A (the query programs and bench_collide_many draw the same way) ----
 
-/// A random pose: the sphere's centre within reach + 1.5 of the cylinder's
-/// middle, radius in [0.05, 1.5].
-inline Sphere random_sphere(Rng& rng, const Cylinder& a) {
+/// A random pose: the sphere's centre within reach + 1.5 of A's middle,
+/// radius in [0.05, 1.5].
+template <class A>
+Sphere random_sphere(Rng& rng, const A& a) {
   Sphere b;
   b.c = rng.around(a, 1.5);
   b.r = rng.uniform(0.05, 1.5);
   return b;
 }
 
-/// A random pose: the capsule's first end within reach + 1.5 of the
-/// cylinder's middle, its segment up to 3 long, radius in [0.05, 1.5].
-inline Capsule random_capsule(Rng& rng, const Cylinder& a) {
+/// A random pose: the capsule's first end within reach + 1.5 of A's
+/// middle, its segment up to 3 long, radius in [0.05, 1.5].
+template <class A>
+Capsule random_capsule(Rng& rng, const A& a) {
   Capsule b;
   b.p = rng.around(a, 1.5);
   b.q = b.p + rng.uniform(0.0, 3.0) * rng.direction();

@@ -1,8 +1,10 @@
 // geomcheck — the argument-order wrappers of the pair queries.
 //
-// Every pair query is written with the cylinder first: overlap(Cylinder, B)
-// and collide(Cylinder, B[, extra]). The templates below answer the other
-// order for every B that has them, once for all pairs:
+// The cylinder's pair queries are written with the cylinder first:
+// overlap(Cylinder, B) and collide(Cylinder, B[, extra]). The templates
+// below answer the other order for every B that has them, once for all of
+// them (a pair without the cylinder declares its other order in its own
+// header, e.g. collide_sphere_capsule.hpp; a pair of one shape has none):
 //   overlap(B, Cylinder)   the same verdict;
 //   collide(B, Cylinder)   the same contact with its normal flipped (from B
 //                          towards the cylinder); depth and point unchanged;

@@ -40,7 +40,13 @@
   X(penetration_cylinder_obb, Penetration, Cylinder, Obb,                                    \
     "overlap/penetration(Cylinder, Obb): exact verdict; the penetration depth over the Minkowski patches") \
   X(penetration_cylinder_triangle, Penetration, Cylinder, Triangle,                          \
-    "overlap/penetration(Cylinder, Triangle): exact verdict; the penetration depth over the Minkowski patches")
+    "overlap/penetration(Cylinder, Triangle): exact verdict; the penetration depth over the Minkowski patches") \
+  X(collide_sphere_sphere, Collide, Sphere, Sphere,                                      \
+    "overlap/collide(Sphere, Sphere): true penetration depth, minimal translation")     \
+  X(collide_sphere_capsule, Collide, Sphere, Capsule,                                    \
+    "overlap/collide(Sphere, Capsule): true penetration depth, minimal translation")    \
+  X(collide_capsule_capsule, Collide, Capsule, Capsule,                                  \
+    "overlap/collide(Capsule, Capsule): true penetration depth (parallel and crossing segments included)")
 
 // Queries over a set of points, a family of their own: their case files hold
 // points (corpora/include/geomcheck/pointset_file.hpp), not two shapes.
@@ -62,11 +68,14 @@
 // Production's entry points of every registered query, so that generic code
 // can call them by the shapes' types (production_of<Q>, checks.hpp).
 #include "geomcheck/cast_segment_cylinder.hpp"
+#include "geomcheck/collide_capsule_capsule.hpp"
 #include "geomcheck/collide_cylinder_capsule.hpp"
 #include "geomcheck/collide_cylinder_cylinder.hpp"
 #include "geomcheck/collide_cylinder_obb.hpp"
 #include "geomcheck/collide_cylinder_sphere.hpp"
 #include "geomcheck/collide_cylinder_triangle.hpp"
+#include "geomcheck/collide_sphere_capsule.hpp"
+#include "geomcheck/collide_sphere_sphere.hpp"
 #include "geomcheck/penetration_cylinder_obb.hpp"
 #include "geomcheck/penetration_cylinder_triangle.hpp"
 #include "geomcheck/sweep_sphere_cylinder.hpp"

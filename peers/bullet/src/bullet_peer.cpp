@@ -255,18 +255,18 @@ Contact contact_of(const DeepestPoint& d) {
   return c;
 }
 
-/// collide(Cylinder, B): contactPairTest's deepest point as a contact; no hit where not expressible.
-template <class B>
-Contact bullet_collide(const Cylinder& a, const B& b) {
+/// collide(A, B): contactPairTest's deepest point as a contact; no hit where not expressible.
+template <class A, class B>
+Contact bullet_collide(const A& a, const B& b) {
   if (!expressible(a) || !expressible(b)) return {};
-  BtCylinder ca(a);
+  typename BtOf<A>::type ca(a);
   typename BtOf<B>::type cb(b);
   return contact_of(pair_test(ca.object, cb.object));
 }
 
-/// overlap(Cylinder, B): collide's hit (the same call).
-template <class B>
-bool bullet_overlap(const Cylinder& a, const B& b) {
+/// overlap(A, B): collide's hit (the same call).
+template <class A, class B>
+bool bullet_overlap(const A& a, const B& b) {
   return bullet_collide(a, b).hit;
 }
 
@@ -326,7 +326,7 @@ CastHit bullet_sweep(const MovingSphere& m, const Cylinder& c) {
 // --- claims ----------------------------------------------------------------------
 
 const char* const kCollideNormal =
-    "-m_normalWorldOnB of contactPairTest's deepest point: from the cylinder (A) towards B; depth -getDistance() "
+    "-m_normalWorldOnB of contactPairTest's deepest point: from A towards B; depth -getDistance() "
     "(GJK minus the sphere's / capsule's radius, EPA when the cores meet); point the midpoint of "
     "getPositionWorldOnA and OnB";
 
@@ -398,9 +398,9 @@ template <class S>
 struct HasBt<S, std::void_t<typename BtOf<S>::type>> : std::true_type {};
 
 /// Bullet's subject of query Q, found from the query's entry point and
-/// shapes alone: a collide or penetration query of the cylinder against a
-/// shape Bullet has (btCylinderShapeZ, btSphereShape, btCapsuleShapeZ,
-/// btBoxShape, btTriangleShape; held to the query's claims), the segment
+/// shapes alone: a collide or penetration query of two shapes Bullet has
+/// (btCylinderShapeZ, btSphereShape, btCapsuleShapeZ, btBoxShape,
+/// btTriangleShape; held to the query's claims), the segment
 /// cast (start test, then rayTest) and the sphere sweep (start test, then
 /// convexSweepTest) against the cylinder; a null subject for any other
 /// query, so that a query Bullet cannot express needs no code here.
@@ -409,7 +409,7 @@ PeerSubject<Q> peer_bullet() {
   using A = typename QueryTraits<Q>::ShapeA;
   using B = typename QueryTraits<Q>::ShapeB;
   constexpr QueryKind kind = QueryTraits<Q>::kind;
-  if constexpr (kind == QueryKind::Collide && std::is_same_v<A, Cylinder> && HasBt<B>::value) {
+  if constexpr (kind == QueryKind::Collide && HasBt<A>::value && HasBt<B>::value) {
     return collide_peer<Q>();
   } else if constexpr (kind == QueryKind::Cast && std::is_same_v<B, Cylinder>) {
     return moving_peer<Q, &bullet_cast>(

@@ -20,7 +20,7 @@ namespace {
 
 /// The geoms of the peer's model, by index (each in a mocap body of its
 /// own; nothing but their sizes and poses is ever changed).
-enum GeomIndex { kCylinderA = 0, kSphere = 1, kCapsule = 2, kBox = 3, kCylinderB = 4 };
+enum GeomIndex { kCylinderA = 0, kSphere = 1, kCapsule = 2, kBox = 3, kCylinderB = 4, kSphereA = 5, kCapsuleA = 6 };
 
 /// The peer's model: one geom of every type asked, margins and gaps zero
 /// (MuJoCo's defaults too, written out), default options (mpr_tolerance
@@ -34,6 +34,8 @@ constexpr const char kModelXml[] = R"(<mujoco model="geomcheck-peer">
     <body name="capsule" mocap="true"><geom name="capsule" type="capsule" size="1 1"/></body>
     <body name="box" mocap="true"><geom name="box" type="box" size="1 1 1"/></body>
     <body name="b" mocap="true"><geom name="cylinder_b" type="cylinder" size="1 1"/></body>
+    <body name="sphere_a" mocap="true"><geom name="sphere_a" type="sphere" size="1"/></body>
+    <body name="capsule_a" mocap="true"><geom name="capsule_a" type="capsule" size="1 1"/></body>
   </worldbody>
 </mujoco>
 )";
@@ -184,6 +186,10 @@ int geom_of(const Sphere&) { return kSphere; }
 int geom_of(const Capsule& c) { return c.p == c.q ? kSphere : kCapsule; }
 int geom_of(const Obb&) { return kBox; }
 int geom_of(const Cylinder&) { return kCylinderB; }
+/// The geom that holds A (a geom of its own, so that A and B may be of one type).
+int geom_of_a(const Cylinder&) { return kCylinderA; }
+int geom_of_a(const Sphere&) { return kSphereA; }
+int geom_of_a(const Capsule& c) { return c.p == c.q ? kSphereA : kCapsuleA; }
 
 // --- what MuJoCo can represent ------------------------------------------------
 
@@ -217,25 +223,26 @@ bool expresses_pair(const PairCase<A, B, Q>& c) {
 
 // --- the engine's answers -----------------------------------------------------
 
-/// mjCOLLISIONFUNC on the cylinder (geom kCylinderA) and B: the table is
-/// upper triangular in the geom types, so B before the cylinder in
-/// MuJoCo's type order (sphere, capsule) is geom 1 and the normal, from
-/// geom 1 to geom 2, is negated; margin 0.
-template <class B>
-Contact collide_mj(const Cylinder& a, const B& b) {
+/// mjCOLLISIONFUNC on A (its geom_of_a) and B: the table is upper
+/// triangular in the geom types, so a B before A in MuJoCo's type order
+/// (sphere, capsule before a cylinder) is geom 1 and the normal, from geom
+/// 1 to geom 2, is negated; margin 0.
+template <class A, class B>
+Contact collide_mj(const A& a, const B& b) {
   Contact out;
   if (!is_valid(a) || !is_valid(b)) return out;
   Engine& e = engine();
-  place(e, kCylinderA, pose_of(a));
+  const int ga = geom_of_a(a);
+  place(e, ga, pose_of(a));
   const int gb = geom_of(b);
   place(e, gb, pose_of(b));
-  const int ta = e.m->geom_type[kCylinderA], tb = e.m->geom_type[gb];
-  int g1 = kCylinderA, g2 = gb;
+  const int ta = e.m->geom_type[ga], tb = e.m->geom_type[gb];
+  int g1 = ga, g2 = gb;
   bool flip = false;
   mjfCollision f = mjCOLLISIONFUNC[ta][tb];
   if (!f) {
     f = mjCOLLISIONFUNC[tb][ta];
-    g1 = gb, g2 = kCylinderA, flip = true;
+    g1 = gb, g2 = ga, flip = true;
   }
   if (!f) throw std::logic_error("MuJoCo has no collision function for this pair");
   mjContact con[mjMAXCONPAIR];
@@ -253,8 +260,8 @@ Contact collide_mj(const Cylinder& a, const B& b) {
   return out;
 }
 
-template <class B>
-bool overlap_mj(const Cylinder& a, const B& b) {
+template <class A, class B>
+bool overlap_mj(const A& a, const B& b) {
   return collide_mj(a, b).hit;
 }
 
@@ -335,7 +342,8 @@ const Claims* collide_claims() {
   static const Claims claims = mujoco_claims(
       spec_of<Q>().claims, Claims::Depth::Penetration,
       "MuJoCo's contact normal (libccd MPR's direction, then mjc_fixNormal's analytic normal for a sphere, a "
-      "capsule and a cylinder's curved side), negated when B is MuJoCo's geom 1: from the cylinder towards B");
+      "capsule and a cylinder's curved side; for the sphere and capsule pairs, the function MuJoCo's collision table "
+      "holds for those geom types), negated when B is MuJoCo's geom 1: from A towards B");
   return &claims;
 }
 
@@ -348,9 +356,14 @@ const Claims* cast_claims() {
   return &claims;
 }
 
-template <class B>
+/// The pairs MuJoCo is asked about: the cylinder against a sphere, capsule,
+/// box or cylinder, and the sphere and capsule pairs.
+template <class A, class B>
 inline constexpr bool kCollidable =
-    std::is_same_v<B, Sphere> || std::is_same_v<B, Capsule> || std::is_same_v<B, Obb> || std::is_same_v<B, Cylinder>;
+    (std::is_same_v<A, Cylinder> && (std::is_same_v<B, Sphere> || std::is_same_v<B, Capsule> ||
+                                     std::is_same_v<B, Obb> || std::is_same_v<B, Cylinder>)) ||
+    ((std::is_same_v<A, Sphere> || std::is_same_v<A, Capsule>) &&
+     (std::is_same_v<B, Sphere> || std::is_same_v<B, Capsule>));
 
 /// The subject of query Q, or a null one where MuJoCo cannot express Q.
 template <QueryId Q>
@@ -358,8 +371,8 @@ PeerSubject<Q> make_peer() {
   using A = typename QueryTraits<Q>::ShapeA;
   using B = typename QueryTraits<Q>::ShapeB;
   constexpr QueryKind kind = QueryTraits<Q>::kind;
-  if constexpr (kind == QueryKind::Collide && std::is_same_v<A, Cylinder> && kCollidable<B>) {
-    static const ImplOf<Q> subject{"MuJoCo", &overlap_mj<B>, &collide_mj<B>, collide_claims<Q>()};
+  if constexpr (kind == QueryKind::Collide && kCollidable<A, B>) {
+    static const ImplOf<Q> subject{"MuJoCo", &overlap_mj<A, B>, &collide_mj<A, B>, collide_claims<Q>()};
     return {&subject, &expresses_pair<A, B>, engine_name()};
   } else if constexpr (kind == QueryKind::Cast && std::is_same_v<A, Segment> && std::is_same_v<B, Cylinder>) {
     static const ImplOf<Q> subject{"MuJoCo", &cast_mj, cast_claims()};

@@ -220,13 +220,13 @@ bool expressible(const Segment& s) {
 bool libccd_takes(const Cylinder& c) { return 0.5 * direction_of(c.q - c.p).length >= DBL_EPSILON; }
 
 /// Whether ODE can be asked about the pair: both shapes expressible and,
-/// for the pairs ODE answers with libccd (capsule, cylinder), every
-/// cylinder long enough for it.
-template <class B>
-bool expressible_pair(const Cylinder& a, const B& b) {
+/// for the cylinder's pairs ODE answers with libccd (capsule, cylinder),
+/// every cylinder long enough for it.
+template <class A, class B>
+bool expressible_pair(const A& a, const B& b) {
   if (!expressible(a) || !expressible(b)) return false;
-  if constexpr (std::is_same_v<B, Capsule>) return libccd_takes(a);
-  if constexpr (std::is_same_v<B, Cylinder>) return libccd_takes(a) && libccd_takes(b);
+  if constexpr (std::is_same_v<A, Cylinder> && std::is_same_v<B, Capsule>) return libccd_takes(a);
+  if constexpr (std::is_same_v<A, Cylinder> && std::is_same_v<B, Cylinder>) return libccd_takes(a) && libccd_takes(b);
   return true;
 }
 /// The cast's pair: both shapes expressible.
@@ -242,12 +242,12 @@ bool expresses(const Case& c) {
 
 constexpr int kMaxContacts = 32;
 
-/// The deepest of ODE's contacts between the cylinder (g1) and b (g2),
-/// converted: normal negated (ODE's points into g1), depth and position as
-/// ODE gives them.
-Contact deepest_contact(dGeomID cylinder, dGeomID b) {
+/// The deepest of ODE's contacts between a (g1) and b (g2), converted:
+/// normal negated (ODE's points into g1), depth and position as ODE gives
+/// them.
+Contact deepest_contact(dGeomID a, dGeomID b) {
   dContactGeom contacts[kMaxContacts];
-  const int n = dCollide(cylinder, b, kMaxContacts, contacts, sizeof(dContactGeom));
+  const int n = dCollide(a, b, kMaxContacts, contacts, sizeof(dContactGeom));
   if (n <= 0) return {};
   int best = 0;
   for (int i = 1; i < n; ++i)
@@ -262,15 +262,15 @@ Contact deepest_contact(dGeomID cylinder, dGeomID b) {
 }
 
 /// dCollide asked for one contact: does ODE see them meet?
-bool any_contact(dGeomID cylinder, dGeomID b) {
+bool any_contact(dGeomID a, dGeomID b) {
   dContactGeom contact;
-  return dCollide(cylinder, b, 1, &contact, sizeof(dContactGeom)) > 0;
+  return dCollide(a, b, 1, &contact, sizeof(dContactGeom)) > 0;
 }
 
 /// overlap(): ODE's verdict with one contact asked for; "no" for a pair
 /// ODE cannot express.
-template <class B>
-bool ode_overlap(const Cylinder& a, const B& b) {
+template <class A, class B>
+bool ode_overlap(const A& a, const B& b) {
   if (!expressible_pair(a, b)) return false;
   ensure_ode();
   const Geom ga = make_geom(a);
@@ -285,8 +285,8 @@ bool ode_overlap(const Cylinder& a, const B& b) {
 
 /// collide(): ODE's deepest contact, converted; no hit for a pair ODE
 /// cannot express.
-template <class B>
-Contact ode_collide(const Cylinder& a, const B& b) {
+template <class A, class B>
+Contact ode_collide(const A& a, const B& b) {
   if (!expressible_pair(a, b)) return {};
   ensure_ode();
   const Geom ga = make_geom(a);
@@ -365,57 +365,78 @@ const char* ode_configuration() {
   return dGetConfiguration();
 }
 
-/// What ODE says of its contact between a cylinder and shape B: its
-/// normal's convention in words, and whether exactly touching shapes make a
-/// contact. A shape without an entry is one ODE is not asked about (its
-/// queries get a null subject).
-template <class B>
+/// What ODE says of its contact between shapes A and B: its normal's
+/// convention in words, and whether exactly touching shapes make a contact.
+/// A pair without an entry is one ODE is not asked about (its queries get
+/// a null subject).
+template <class A, class B>
 struct OdeContact;
 template <>
-struct OdeContact<Sphere> {
+struct OdeContact<Cylinder, Sphere> {
   static constexpr const char* normal =
       "unit, from the cylinder towards the sphere: ODE's contact normal negated (dCollideCylinderSphere, closed "
       "form); a consistent contact (depth along it), not documented as the minimal translation";
   static constexpr bool touching_is_contact = true;
 };
 template <>
-struct OdeContact<Capsule> {
+struct OdeContact<Cylinder, Capsule> {
   static constexpr const char* normal =
       "unit, from the cylinder towards the capsule: ODE's contact normal negated (dCollideCapsuleCylinder: libccd's "
       "MPR); a consistent contact by ODE's convention, MPR's portal direction in fact";
   static constexpr bool touching_is_contact = false;
 };
 template <>
-struct OdeContact<Obb> {
+struct OdeContact<Cylinder, Obb> {
   static constexpr const char* normal =
       "unit, from the cylinder towards the box: ODE's contact normal negated (dCollideCylinderBox: separating "
       "axes); the deepest contact of ODE's clipped manifold";
   static constexpr bool touching_is_contact = false;
 };
 template <>
-struct OdeContact<Triangle> {
+struct OdeContact<Cylinder, Triangle> {
   static constexpr const char* normal =
       "unit, from the cylinder towards the triangle: ODE's contact normal negated (dCollideCylinderTrimesh on a "
       "two-faced trimesh, both windings); the deepest contact";
   static constexpr bool touching_is_contact = false;
 };
 template <>
-struct OdeContact<Cylinder> {
+struct OdeContact<Cylinder, Cylinder> {
   static constexpr const char* normal =
       "unit, from the first cylinder towards the second: ODE's contact normal negated (dCollideCylinderCylinder: "
       "libccd's MPR, a rim ring for parallel axes); the deepest contact";
   static constexpr bool touching_is_contact = false;
 };
+template <>
+struct OdeContact<Sphere, Sphere> {
+  static constexpr const char* normal =
+      "unit, from the first sphere towards the second: ODE's contact normal negated (dCollideSphereSphere, closed "
+      "form); a consistent contact, not documented as the minimal translation";
+  static constexpr bool touching_is_contact = false;
+};
+template <>
+struct OdeContact<Sphere, Capsule> {
+  static constexpr const char* normal =
+      "unit, from the sphere towards the capsule: ODE's contact normal negated (dCollideCapsuleSphere, closed form, "
+      "the arguments swapped by dCollide); a consistent contact, not documented as the minimal translation";
+  static constexpr bool touching_is_contact = false;
+};
+template <>
+struct OdeContact<Capsule, Capsule> {
+  static constexpr const char* normal =
+      "unit, from the first capsule towards the second: ODE's contact normal negated (dCollideCapsuleCapsule, closed "
+      "form, two contacts for parallel segments); the deepest contact";
+  static constexpr bool touching_is_contact = false;
+};
 
-/// Whether OdeContact<B> has an entry.
-template <class B, class = void>
+/// Whether OdeContact<A, B> has an entry.
+template <class A, class B, class = void>
 struct HasOdeContact : std::false_type {};
-template <class B>
-struct HasOdeContact<B, std::void_t<decltype(OdeContact<B>::normal)>> : std::true_type {};
+template <class A, class B>
+struct HasOdeContact<A, B, std::void_t<decltype(OdeContact<A, B>::normal)>> : std::true_type {};
 
 /// ODE's subject of query Q (ode.hpp), found from the query's entry point
-/// and shapes alone: a collide or penetration query of the cylinder against
-/// a shape with an OdeContact entry (held to the query's claims), and the
+/// and shapes alone: a collide or penetration query of a pair with an
+/// OdeContact entry (held to the query's claims), and the
 /// segment cast (dCollideRayCylinder); a null subject for any other query
 /// (ODE has no sweep, no continuous collision), so that a query ODE cannot
 /// express needs no code here.
@@ -424,8 +445,8 @@ PeerSubject<Q> peer_ode() {
   using A = typename QueryTraits<Q>::ShapeA;
   using B = typename QueryTraits<Q>::ShapeB;
   constexpr QueryKind kind = QueryTraits<Q>::kind;
-  if constexpr (kind == QueryKind::Collide && std::is_same_v<A, Cylinder> && HasOdeContact<B>::value) {
-    return collide_subject<Q>(OdeContact<B>::normal, OdeContact<B>::touching_is_contact);
+  if constexpr (kind == QueryKind::Collide && HasOdeContact<A, B>::value) {
+    return collide_subject<Q>(OdeContact<A, B>::normal, OdeContact<A, B>::touching_is_contact);
   } else if constexpr (kind == QueryKind::Cast && std::is_same_v<B, Cylinder>) {
     static const Claims claims = ode_claims<Q>(
         "ODE's ray contact normal (dCollideRayCylinder, the ray as g1): the cylinder's outward surface normal at the "

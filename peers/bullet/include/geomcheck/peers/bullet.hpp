@@ -7,15 +7,18 @@
 //
 // ---------------------------------------------------------------------------
 // What Bullet is asked
-//   Collide queries (cylinder/sphere, /capsule, /box, /triangle, /cylinder):
-//   btCollisionWorld::contactPairTest(A, B, callback) on two
-//   btCollisionObjects that are not in the world, in a per-thread
+//   Collide queries (cylinder/sphere, /capsule, /box, /triangle, /cylinder;
+//   sphere/sphere, sphere/capsule, capsule/capsule: every registered pair of
+//   shapes Bullet has): btCollisionWorld::contactPairTest(A, B, callback) on
+//   two btCollisionObjects that are not in the world, in a per-thread
 //   btCollisionWorld built from btDefaultCollisionConfiguration,
-//   btCollisionDispatcher and btDbvtBroadphase. For every one of these pairs
-//   the dispatcher picks btConvexConvexAlgorithm (no special case applies to
-//   a cylinder): GJK (btGjkPairDetector) on the shapes' cores (without their
-//   margins) and, when the cores meet, EPA (btGjkEpaPenetrationDepthSolver);
-//   the margins are then subtracted. The callback keeps the deepest manifold
+//   btCollisionDispatcher and btDbvtBroadphase. For the cylinder's pairs and
+//   sphere/capsule the dispatcher picks btConvexConvexAlgorithm: GJK
+//   (btGjkPairDetector) on the shapes' cores (without their margins) and,
+//   when the cores meet, EPA (btGjkEpaPenetrationDepthSolver); the margins
+//   are then subtracted. Two spheres go to btSphereSphereCollisionAlgorithm
+//   and two capsules (both btCapsuleShapeZ) to btConvexConvexAlgorithm's
+//   capsule/capsule special case: closed forms of Bullet's own. The callback keeps the deepest manifold
 //   point it is given (always one in the hand cases). overlap(A, B) is
 //   collide(A, B).hit (the same call), so the two always agree.
 //   Cast: is the segment's start in the cylinder? (contactPairTest of a
@@ -43,7 +46,7 @@
 //   getPositionWorldOnA lies on A's surface, getPositionWorldOnB on B's,
 //   OnA = OnB + normal * distance. geomcheck's contact: hit when
 //   getDistance() <= 0, depth = -getDistance() (>= 0), normal =
-//   -m_normalWorldOnB (from the cylinder A towards B, as geomcheck's), point
+//   -m_normalWorldOnB (from A towards B, as geomcheck's), point
 //   = the midpoint of the two witness points (Bullet promises no point in
 //   both shapes).
 //   Ray: m_closestHitFraction is t along a -> b; m_hitPointWorld is a + t (b

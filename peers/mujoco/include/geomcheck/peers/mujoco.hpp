@@ -81,7 +81,10 @@
 //     < mesh), so for a sphere or a capsule B is geom 1 and the adapter
 //     negates the normal; for a box and for cylinder/cylinder the cylinder
 //     (the first) is geom 1 and the normal is kept. Either way geomcheck's:
-//     from the cylinder (A) towards B.
+//     from the cylinder (A) towards B. The sphere and capsule pairs
+//     (sphere/sphere, sphere/capsule, capsule/capsule) put A in geoms of its
+//     own (sphere_a, capsule_a; a zero-length capsule is a sphere geom) and
+//     follow the same rule: from A towards B.
 //     The direction is MPR's (the direction of the portal point nearest
 //     the origin, MPR's ray starting from the difference of the geoms'
 //     centres), then mjc_fixNormal replaces it by an analytic one where it

@@ -38,6 +38,12 @@
 //                                                  ring for (nearly) parallel
 //                                                  axes (8 rim points, coaxial)
 //   segment cast       dCollideRayCylinder         native (a ray of length |b - a|)
+//   sphere/sphere      dCollideSphereSphere        native closed form
+//   sphere/capsule     dCollideCapsuleSphere       native closed form (dCollide
+//                                                  swaps the arguments)
+//   capsule/capsule    dCollideCapsuleCapsule      native closed form, two
+//                                                  contacts for parallel segments
+//   (these three named from ODE's collider table, not observed bit for bit)
 // ODE has no continuous collision and no sweep: sweep_sphere_cylinder is
 // not expressed (null subject).
 //

@@ -1,0 +1,294 @@
+// geomcheck — internal: the distance of two segments (either may be a single
+// point) and the direction between their closest points, the core of the
+// sphere and capsule pairs. A capsule is its segment swept by a ball (a
+// sphere: a segment of zero length), so two of them meet iff the distance D
+// of their segments is at most r1 + r2, and their penetration depth is
+// exactly r1 + r2 - D: the Minkowski difference is the parallelogram of the
+// segments swept by a ball of radius r1 + r2, and the distance to its
+// boundary is 1-Lipschitz (D = 0, segments that cross or overlap, included:
+// the parallelogram is flat, so leaving it across its plane costs r1 + r2).
+//
+// Precision: the direction between the closest points is what the contact's
+// normal is, and for a capsule its error turns into excess overlap along
+// the normal in proportion to the segment's length. Rounded differences
+// q - p would give it an angle error of eps * scene / D; here every
+// difference of input points is carried exactly (hi + lo), products that
+// cancel are formed with fma, and the residual is projected off the
+// segment's direction a second time, so the angle error is a few eps (plus
+// eps^2 * scene / D), whatever D.
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "geomcheck/detail/frame.hpp"
+#include "geomcheck/results.hpp"
+#include "geomcheck/shapes.hpp"
+#include "geomcheck/vec3.hpp"
+
+namespace geomcheck::detail {
+
+/// x - y exactly, as hi + lo per component (Knuth's two-sum).
+struct ExactDiff {
+  Vec3 hi, lo;
+};
+inline ExactDiff exact_diff(Vec3 x, Vec3 y) {
+  ExactDiff d;
+  for (int i = 0; i < 3; ++i) {
+    const double a = x[i], b = -y[i];
+    const double s = a + b;
+    const double bb = s - a;
+    d.hi[i] = s;
+    d.lo[i] = (a - (s - bb)) + (b - bb);
+  }
+  return d;
+}
+
+/// a * b - c * d to within about 1.5 ulp (Kahan's fma form: no cancellation
+/// of rounded products).
+inline double product_difference(double a, double b, double c, double d) {
+  const double w = c * d;
+  const double e = std::fma(-c, d, w);
+  const double f = std::fma(a, b, -w);
+  return f + e;
+}
+
+/// u x v with every minor formed by product_difference, u and v given
+/// exactly as hi + lo: the first-order terms of the lo parts are added.
+inline Vec3 accurate_cross(const ExactDiff& u, const ExactDiff& v) {
+  const Vec3 &a = u.hi, &b = v.hi;
+  Vec3 c{product_difference(a.y, b.z, a.z, b.y), product_difference(a.z, b.x, a.x, b.z),
+         product_difference(a.x, b.y, a.y, b.x)};
+  return c + (cross(a, v.lo) + cross(u.lo, b));
+}
+
+/// The closest points of two segments and their distance.
+struct SegmentPair {
+  double dist = 0;  ///< D >= 0
+  Vec3 a, b;        ///< the closest points of the first and of the second segment
+  /// Unit, from a towards b; where D == 0, the segments' common
+  /// perpendicular (any perpendicular of a segment when they are parallel;
+  /// (0, 0, 1) when both are points).
+  Vec3 n;
+  /// The normal where the segments touch (D = 0): their common
+  /// perpendicular, or a perpendicular of the longer one when they are
+  /// parallel (of the segment, for a point against a segment; (0, 0, 1)
+  /// for two points).
+  Vec3 across;
+};
+
+/// The residual x - c from the closest point c of segment [p, q] to x, and
+/// c: carried exactly where it cancels (see the file's head).
+inline Vec3 point_segment_residual(Vec3 x, Vec3 p, Vec3 q, Vec3& c) {
+  const ExactDiff d = exact_diff(q, p);
+  const double dd = dot(d.hi, d.hi);
+  const ExactDiff w = exact_diff(x, p);
+  const double wd = dot(w.hi, d.hi);
+  if (!(wd > 0) || !(dd > 0)) {
+    c = p;
+    return w.hi + w.lo;
+  }
+  if (wd >= dd) {
+    c = q;
+    const ExactDiff e = exact_diff(x, q);
+    return e.hi + e.lo;
+  }
+  const double t = wd / dd;
+  Vec3 n;
+  for (int i = 0; i < 3; ++i) {
+    const double prod = t * d.hi[i];
+    const double err = std::fma(t, d.hi[i], -prod);
+    n[i] = (w.hi[i] - prod) + ((w.lo[i] - err) - t * d.lo[i]);
+  }
+  // What is left along the segment (t's rounding): projected off again.
+  n = n - (dot(n, d.hi) / dd) * d.hi;
+  c = p + t * d.hi;
+  return n;
+}
+
+/// A unit perpendicular of u (nonzero), or (0, 0, 1) for u == 0.
+/// v / max |v_i| (v != 0): components in [-1, 1], the largest +-1 (a
+/// division, not a multiplication by 1 / max, which overflows for a
+/// subnormal max).
+inline Vec3 max_scaled(Vec3 v) {
+  const double m = max_abs(v);
+  return {v.x / m, v.y / m, v.z / m};
+}
+
+/// v / |v| for v != 0, scaled first so that its square neither overflows
+/// nor underflows.
+inline Vec3 unit_of(Vec3 v) {
+  const Vec3 s = max_scaled(v);
+  return (1.0 / length(s)) * s;
+}
+
+/// |v|, safe from overflow and underflow of the squares.
+inline double norm_of(Vec3 v) {
+  const double m = max_abs(v);
+  if (!(m > 0)) return 0;
+  if (m > 0x1p-450 && m < 0x1p+450) return length(v);
+  return m * length(max_scaled(v));
+}
+
+/// A unit perpendicular of u (nonzero), or (0, 0, 1) for u == 0.
+inline Vec3 some_perpendicular(Vec3 u) {
+  if (!(max_abs(u) > 0)) return {0, 0, 1};
+  return unit_of(any_perpendicular(max_scaled(u)));
+}
+
+/// x with its component along d (d . d = dd > 0) removed, twice ("twice is
+/// enough": what the first pass leaves is rounding of the result's size).
+inline Vec3 perpendicular_part(Vec3 x, Vec3 d, double dd) {
+  x = x - (dot(x, d) / dd) * d;
+  return x - (dot(x, d) / dd) * d;
+}
+
+/// The closest points of segments [p1, q1] and [p2, q2] (a scene of
+/// magnitude in [1, 2): ball_pair scales it so).
+///
+/// Where the segments are far from parallel (their cross product m large
+/// against eps times the lengths and the offset w = p2 - p1: then the
+/// parameters s, t of the lines' crossing are good to 2^-20), a crossing
+/// inside both is the answer: its distance along m, m's direction the
+/// normal. Elsewhere the answer is the nearest of the four ends against the
+/// other segment (exact for parallel segments) and, for nearly parallel
+/// ones, of B's point nearest A's line (the offset of B(t) across A's
+/// direction is linear in t: a one-dimensional minimum) against A. Any
+/// parameter error there slides along the valley of the distance, which
+/// rises by |v| sin(angle) per unit of t: the distance found is within
+/// about eps * scene of the true one.
+inline SegmentPair closest_segments(Vec3 p1, Vec3 q1, Vec3 p2, Vec3 q2) {
+  SegmentPair out;
+  const ExactDiff u = exact_diff(q1, p1), v = exact_diff(q2, p2), w = exact_diff(p2, p1);
+  const Vec3 m = accurate_cross(u, v);
+  const double mm = dot(m, m);
+  const double uu = dot(u.hi, u.hi), vv = dot(v.hi, v.hi), ww = dot(w.hi, w.hi);
+  out.across = mm > 0 ? unit_of(m) : some_perpendicular(uu >= vv ? u.hi : v.hi);
+  const bool crossing_well_posed = mm > 0 && mm >= 0x1p-62 * std::max(uu, vv) * ww;
+  if (crossing_well_posed) {
+    // w = s u - t v + N with N along m: s = (w x v) . m / |m|^2, t = (w x u) . m / |m|^2.
+    const double s = dot(cross(w.hi, v.hi), m) / mm;
+    const double t = dot(cross(w.hi, u.hi), m) / mm;
+    if (s >= 0 && s <= 1 && t >= 0 && t <= 1) {
+      const Vec3 nm = out.across;
+      const double along = dot(w.hi, nm) + dot(w.lo, nm);
+      out.dist = std::fabs(along);
+      out.n = along < 0 ? -nm : nm;
+      out.a = p1 + s * u.hi;
+      out.b = p2 + t * v.hi;
+      return out;
+    }
+  }
+  // The ends (and B's point nearest A's line) against the other segment;
+  // the smallest residual wins.
+  double best = INFINITY;
+  auto consider = [&](Vec3 x, Vec3 p, Vec3 q, bool x_on_first) {
+    Vec3 c;
+    const Vec3 r = point_segment_residual(x, p, q, c);
+    const double d = norm_of(r);
+    if (!(d < best)) return;
+    best = d;
+    out.dist = d;
+    if (x_on_first) {
+      out.a = x, out.b = c;
+      out.n = d > 0 ? -unit_of(r) : Vec3{};
+    } else {
+      out.a = c, out.b = x;
+      out.n = d > 0 ? unit_of(r) : Vec3{};
+    }
+  };
+  consider(p1, p2, q2, true);
+  consider(q1, p2, q2, true);
+  consider(p2, p1, q1, false);
+  consider(q2, p1, q1, false);
+  if (!crossing_well_posed && mm > 0 && uu > 0) {
+    const Vec3 yw = perpendicular_part(w.hi + w.lo, u.hi, uu), yv = perpendicular_part(v.hi + v.lo, u.hi, uu);
+    const double yy = dot(yv, yv);
+    if (yy > 0) {
+      const double t = std::clamp(-dot(yw, yv) / yy, 0.0, 1.0);
+      if (t > 0 && t < 1) consider(p2 + t * v.hi, p1, q1, false);
+    }
+  }
+  if (out.dist == 0) out.n = out.across;
+  return out;
+}
+
+/// Where along the unit normal n, from the first closest point a, the two
+/// solids overlap: [max(-r1, D - r2), min(r1, D + r2)]; its middle, a point
+/// in both (a + mid * n).
+inline double overlap_middle(double dist, double r1, double r2) {
+  const double lo = std::max(-r1, dist - r2), hi = std::min(r1, dist + r2);
+  return 0.5 * lo + 0.5 * hi;
+}
+
+/// Scaling by 2^e, a map of space for shapes.hpp's mapped: two
+/// multiplications by powers of two (each a normal double), exact but for
+/// values pushed into the subnormals.
+struct PowerOfTwo {
+  double f1, f2;
+  explicit PowerOfTwo(int e) : f1(std::ldexp(1.0, e / 2)), f2(std::ldexp(1.0, e - e / 2)) {}
+  Vec3 pt(Vec3 v) const { return (v * f1) * f2; }
+  Vec3 vec(Vec3 v) const { return v; }
+  double len(double r) const { return (r * f1) * f2; }
+};
+
+inline double radius_of(const Sphere& s) { return s.r; }
+inline double radius_of(const Capsule& c) { return c.r; }
+
+/// The closest points and normal of two balls or capsules (`solve(a, b)`),
+/// in the scene scaled by an exact power of two so that its largest
+/// magnitude lies in [1, 2): every square and product of the solution is
+/// then in range, and a scene scaled or reflected exactly is answered bit
+/// for bit the same (scaled or reflected). `back` is the exponent that
+/// returns to the caller's scale. A distance at the rounding level (D <=
+/// 2^-50 of the scene) is touching segments: D = 0 and the normal the
+/// solver's `across`. The direction between closest points that close is
+/// noise, and for a capsule a normal tilted along a segment costs overlap
+/// in proportion to its length; along `across` the overlap exceeds the true
+/// depth by at most 2 D, and so does the depth ra + rb.
+/// Invalid input: `valid` false.
+struct BallPair {
+  bool valid = false;
+  SegmentPair sp;
+  double ra = 0, rb = 0;
+  int back = 0;
+  bool hit() const { return valid && sp.dist <= ra + rb; }
+};
+template <class A, class B, class Solve>
+BallPair ball_pair(const A& a, const B& b, Solve solve) {
+  BallPair out;
+  if (!is_valid(a) || !is_valid(b)) return out;
+  out.valid = true;
+  const double m = std::max(largest(a), largest(b));
+  out.back = m > 0 ? std::ilogb(m) : 0;
+  const PowerOfTwo to(-out.back);
+  const A sa = mapped(a, to);
+  const B sb = mapped(b, to);
+  out.sp = solve(sa, sb);
+  out.ra = radius_of(sa), out.rb = radius_of(sb);
+  if (out.sp.dist <= 0x1p-50) {
+    out.sp.dist = 0;
+    out.sp.n = out.sp.across;
+  }
+  return out;
+}
+
+/// The contact of a hitting pair: depth r1 + r2 - D (saturating to the
+/// largest double), the normal from the first shape towards the second, the
+/// point in the middle of the solids' overlap along it from the first
+/// segment's closest point.
+inline Contact ball_contact(const BallPair& p) {
+  Contact c;
+  if (!p.hit()) return c;
+  c.hit = true;
+  c.normal = p.sp.n;
+  const double depth = std::max((p.ra + p.rb) - p.sp.dist, 0.0);
+  c.depth = PowerOfTwo(p.back).len(depth);
+  if (std::isinf(c.depth)) c.depth = std::numeric_limits<double>::max();
+  const Vec3 x = p.sp.a + overlap_middle(p.sp.dist, p.ra, p.rb) * p.sp.n;
+  c.point = PowerOfTwo(p.back).pt(x);
+  return c;
+}
+
+}  // namespace geomcheck::detail
