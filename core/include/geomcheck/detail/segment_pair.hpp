@@ -20,6 +20,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <limits>
 
 #include "geomcheck/detail/frame.hpp"
@@ -27,13 +29,31 @@
 #include "geomcheck/shapes.hpp"
 #include "geomcheck/vec3.hpp"
 
+// The solvers form exact products with fma, a libm call unless the compiler
+// may use the processor's FMA instructions. Where it can dispatch at run
+// time (GCC, x86-64 Linux), a solver marked GEOMCHECK_FMA_CLONES is compiled
+// twice, once with them, and the processor picks; fma is correctly rounded
+// either way, so both give the same bits.
+#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && defined(__linux__)
+#define GEOMCHECK_FMA_CLONES __attribute__((target_clones("fma", "default")))
+#else
+#define GEOMCHECK_FMA_CLONES
+#endif
+// The helpers below are inlined into every solver (so into each of its
+// clones, where fma is an instruction), whatever the optimiser's size limits.
+#if defined(__GNUC__)
+#define GEOMCHECK_SOLVER_INLINE inline __attribute__((always_inline))
+#else
+#define GEOMCHECK_SOLVER_INLINE inline
+#endif
+
 namespace geomcheck::detail {
 
 /// x - y exactly, as hi + lo per component (Knuth's two-sum).
 struct ExactDiff {
   Vec3 hi, lo;
 };
-inline ExactDiff exact_diff(Vec3 x, Vec3 y) {
+GEOMCHECK_SOLVER_INLINE ExactDiff exact_diff(Vec3 x, Vec3 y) {
   ExactDiff d;
   for (int i = 0; i < 3; ++i) {
     const double a = x[i], b = -y[i];
@@ -47,7 +67,7 @@ inline ExactDiff exact_diff(Vec3 x, Vec3 y) {
 
 /// a * b - c * d to within about 1.5 ulp (Kahan's fma form: no cancellation
 /// of rounded products).
-inline double product_difference(double a, double b, double c, double d) {
+GEOMCHECK_SOLVER_INLINE double product_difference(double a, double b, double c, double d) {
   const double w = c * d;
   const double e = std::fma(-c, d, w);
   const double f = std::fma(a, b, -w);
@@ -56,31 +76,49 @@ inline double product_difference(double a, double b, double c, double d) {
 
 /// u x v with every minor formed by product_difference, u and v given
 /// exactly as hi + lo: the first-order terms of the lo parts are added.
-inline Vec3 accurate_cross(const ExactDiff& u, const ExactDiff& v) {
+GEOMCHECK_SOLVER_INLINE Vec3 accurate_cross(const ExactDiff& u, const ExactDiff& v) {
   const Vec3 &a = u.hi, &b = v.hi;
   Vec3 c{product_difference(a.y, b.z, a.z, b.y), product_difference(a.z, b.x, a.x, b.z),
          product_difference(a.x, b.y, a.y, b.x)};
   return c + (cross(a, v.lo) + cross(u.lo, b));
 }
 
-/// The closest points of two segments and their distance.
+/// The closest points of two segments and their distance, as a solver
+/// leaves them for a contact (collide); the unit normal is formed once, by
+/// ball_contact.
 struct SegmentPair {
-  double dist = 0;  ///< D >= 0
-  Vec3 a, b;        ///< the closest points of the first and of the second segment
-  /// Unit, from a towards b; where D == 0, the segments' common
-  /// perpendicular (any perpendicular of a segment when they are parallel;
-  /// (0, 0, 1) when both are points).
-  Vec3 n;
-  /// The normal where the segments touch (D = 0): their common
-  /// perpendicular, or a perpendicular of the longer one when they are
-  /// parallel (of the segment, for a point against a segment; (0, 0, 1)
-  /// for two points).
+  double dist2 = 0;  ///< D^2: the verdict compares it with (ra + rb)^2, no square root
+  Vec3 a;            ///< the closest point of the first segment
+  /// The direction from a towards the second segment's closest point where
+  /// D > 0, not normalised (unit already when `dir_is_unit`).
+  Vec3 dir;
+  /// What the normal is where the segments touch (D = 0): `across` itself
+  /// (Across::Unit: the common perpendicular, computed on the way), its
+  /// direction (Across::Normalise: their cross product, nonzero), or a
+  /// perpendicular of it (Across::PerpendicularOf: the longer segment;
+  /// (0, 0, 1) when it is zero), formed only if needed.
+  enum class Across : unsigned char { Unit, Normalise, PerpendicularOf };
   Vec3 across;
+  Across across_is = Across::Unit;
+  bool dir_is_unit = false;
+  void points(Vec3 x, Vec3) { a = x; }
+  void direction(Vec3 d, bool unit) { dir = d, dir_is_unit = unit; }
+  void touching(Vec3 x, Across how) { across = x, across_is = how; }
+};
+
+/// The same solver's report for a verdict (overlap): the squared distance
+/// alone, the rest dropped (the same arithmetic, so the same bits as
+/// collide's).
+struct SegmentDistance {
+  double dist2 = 0;
+  void points(Vec3, Vec3) {}
+  void direction(Vec3, bool) {}
+  void touching(Vec3, SegmentPair::Across) {}
 };
 
 /// The residual x - c from the closest point c of segment [p, q] to x, and
 /// c: carried exactly where it cancels (see the file's head).
-inline Vec3 point_segment_residual(Vec3 x, Vec3 p, Vec3 q, Vec3& c) {
+GEOMCHECK_SOLVER_INLINE Vec3 point_segment_residual(Vec3 x, Vec3 p, Vec3 q, Vec3& c) {
   const ExactDiff d = exact_diff(q, p);
   const double dd = dot(d.hi, d.hi);
   const ExactDiff w = exact_diff(x, p);
@@ -107,24 +145,23 @@ inline Vec3 point_segment_residual(Vec3 x, Vec3 p, Vec3 q, Vec3& c) {
   return n;
 }
 
-/// A unit perpendicular of u (nonzero), or (0, 0, 1) for u == 0.
 /// v / max |v_i| (v != 0): components in [-1, 1], the largest +-1 (a
 /// division, not a multiplication by 1 / max, which overflows for a
 /// subnormal max).
-inline Vec3 max_scaled(Vec3 v) {
+GEOMCHECK_SOLVER_INLINE Vec3 max_scaled(Vec3 v) {
   const double m = max_abs(v);
   return {v.x / m, v.y / m, v.z / m};
 }
 
 /// v / |v| for v != 0, scaled first so that its square neither overflows
 /// nor underflows.
-inline Vec3 unit_of(Vec3 v) {
+GEOMCHECK_SOLVER_INLINE Vec3 unit_of(Vec3 v) {
   const Vec3 s = max_scaled(v);
   return (1.0 / length(s)) * s;
 }
 
 /// |v|, safe from overflow and underflow of the squares.
-inline double norm_of(Vec3 v) {
+GEOMCHECK_SOLVER_INLINE double norm_of(Vec3 v) {
   const double m = max_abs(v);
   if (!(m > 0)) return 0;
   if (m > 0x1p-450 && m < 0x1p+450) return length(v);
@@ -132,16 +169,37 @@ inline double norm_of(Vec3 v) {
 }
 
 /// A unit perpendicular of u (nonzero), or (0, 0, 1) for u == 0.
-inline Vec3 some_perpendicular(Vec3 u) {
+GEOMCHECK_SOLVER_INLINE Vec3 some_perpendicular(Vec3 u) {
   if (!(max_abs(u) > 0)) return {0, 0, 1};
   return unit_of(any_perpendicular(max_scaled(u)));
 }
 
 /// x with its component along d (d . d = dd > 0) removed, twice ("twice is
 /// enough": what the first pass leaves is rounding of the result's size).
-inline Vec3 perpendicular_part(Vec3 x, Vec3 d, double dd) {
+GEOMCHECK_SOLVER_INLINE Vec3 perpendicular_part(Vec3 x, Vec3 d, double dd) {
   x = x - (dot(x, d) / dd) * d;
   return x - (dot(x, d) / dd) * d;
+}
+
+/// The point x of one segment against the other segment [p, q]: taken
+/// into `out` when its squared distance is below `best` (x on the first
+/// segment: the direction points from x away; else towards x). The squares
+/// of a scene in [1, 2) are in range but for distances below 2^-500, which
+/// ball_pair treats as touching anyway.
+template <class Out>
+GEOMCHECK_SOLVER_INLINE void consider_end(Vec3 x, Vec3 p, Vec3 q, bool x_on_first, double& best, Out& out) {
+  Vec3 c;
+  const Vec3 r = point_segment_residual(x, p, q, c);
+  const double d2 = dot(r, r);
+  if (!(d2 < best)) return;
+  best = d2;
+  if (x_on_first) {
+    out.points(x, c);
+    out.direction(-r, false);
+  } else {
+    out.points(c, x);
+    out.direction(r, false);
+  }
 }
 
 /// The closest points of segments [p1, q1] and [p2, q2] (a scene of
@@ -158,60 +216,45 @@ inline Vec3 perpendicular_part(Vec3 x, Vec3 d, double dd) {
 /// parameter error there slides along the valley of the distance, which
 /// rises by |v| sin(angle) per unit of t: the distance found is within
 /// about eps * scene of the true one.
-inline SegmentPair closest_segments(Vec3 p1, Vec3 q1, Vec3 p2, Vec3 q2) {
-  SegmentPair out;
+template <class Out>
+GEOMCHECK_SOLVER_INLINE void closest_segments(Vec3 p1, Vec3 q1, Vec3 p2, Vec3 q2, Out& out) {
   const ExactDiff u = exact_diff(q1, p1), v = exact_diff(q2, p2), w = exact_diff(p2, p1);
   const Vec3 m = accurate_cross(u, v);
   const double mm = dot(m, m);
   const double uu = dot(u.hi, u.hi), vv = dot(v.hi, v.hi), ww = dot(w.hi, w.hi);
-  out.across = mm > 0 ? unit_of(m) : some_perpendicular(uu >= vv ? u.hi : v.hi);
   const bool crossing_well_posed = mm > 0 && mm >= 0x1p-62 * std::max(uu, vv) * ww;
   if (crossing_well_posed) {
     // w = s u - t v + N with N along m: s = (w x v) . m / |m|^2, t = (w x u) . m / |m|^2.
     const double s = dot(cross(w.hi, v.hi), m) / mm;
     const double t = dot(cross(w.hi, u.hi), m) / mm;
     if (s >= 0 && s <= 1 && t >= 0 && t <= 1) {
-      const Vec3 nm = out.across;
+      const Vec3 nm = unit_of(m);
       const double along = dot(w.hi, nm) + dot(w.lo, nm);
-      out.dist = std::fabs(along);
-      out.n = along < 0 ? -nm : nm;
-      out.a = p1 + s * u.hi;
-      out.b = p2 + t * v.hi;
-      return out;
+      out.dist2 = along * along;
+      out.direction(along < 0 ? -nm : nm, true);
+      out.touching(nm, SegmentPair::Across::Unit);
+      out.points(p1 + s * u.hi, p2 + t * v.hi);
+      return;
     }
   }
+  if (mm > 0) out.touching(m, SegmentPair::Across::Normalise);
+  else out.touching(uu >= vv ? u.hi : v.hi, SegmentPair::Across::PerpendicularOf);
   // The ends (and B's point nearest A's line) against the other segment;
   // the smallest residual wins.
   double best = INFINITY;
-  auto consider = [&](Vec3 x, Vec3 p, Vec3 q, bool x_on_first) {
-    Vec3 c;
-    const Vec3 r = point_segment_residual(x, p, q, c);
-    const double d = norm_of(r);
-    if (!(d < best)) return;
-    best = d;
-    out.dist = d;
-    if (x_on_first) {
-      out.a = x, out.b = c;
-      out.n = d > 0 ? -unit_of(r) : Vec3{};
-    } else {
-      out.a = c, out.b = x;
-      out.n = d > 0 ? unit_of(r) : Vec3{};
-    }
-  };
-  consider(p1, p2, q2, true);
-  consider(q1, p2, q2, true);
-  consider(p2, p1, q1, false);
-  consider(q2, p1, q1, false);
+  consider_end(p1, p2, q2, true, best, out);
+  consider_end(q1, p2, q2, true, best, out);
+  consider_end(p2, p1, q1, false, best, out);
+  consider_end(q2, p1, q1, false, best, out);
   if (!crossing_well_posed && mm > 0 && uu > 0) {
     const Vec3 yw = perpendicular_part(w.hi + w.lo, u.hi, uu), yv = perpendicular_part(v.hi + v.lo, u.hi, uu);
     const double yy = dot(yv, yv);
     if (yy > 0) {
       const double t = std::clamp(-dot(yw, yv) / yy, 0.0, 1.0);
-      if (t > 0 && t < 1) consider(p2 + t * v.hi, p1, q1, false);
+      if (t > 0 && t < 1) consider_end(p2 + t * v.hi, p1, q1, false, best, out);
     }
   }
-  if (out.dist == 0) out.n = out.across;
-  return out;
+  out.dist2 = best;
 }
 
 /// Where along the unit normal n, from the first closest point a, the two
@@ -222,12 +265,29 @@ inline double overlap_middle(double dist, double r1, double r2) {
   return 0.5 * lo + 0.5 * hi;
 }
 
-/// Scaling by 2^e, a map of space for shapes.hpp's mapped: two
-/// multiplications by powers of two (each a normal double), exact but for
-/// values pushed into the subnormals.
+/// 2^e for e in [-1022, 1023], from its bits (no libm call).
+inline double pow2(int e) {
+  const std::uint64_t bits = static_cast<std::uint64_t>(e + 1023) << 52;
+  double x;
+  std::memcpy(&x, &bits, sizeof x);
+  return x;
+}
+
+/// ilogb(m) for finite m > 0, from the bits of a normal m (libm's for a
+/// subnormal one).
+inline int exponent_of(double m) {
+  std::uint64_t bits;
+  std::memcpy(&bits, &m, sizeof bits);
+  const int biased = static_cast<int>((bits >> 52) & 0x7ff);
+  return biased > 0 ? biased - 1023 : std::ilogb(m);
+}
+
+/// Scaling by 2^e (|e| <= 2100), a map of space for shapes.hpp's mapped:
+/// two multiplications by powers of two (each a normal double), exact but
+/// for values pushed into the subnormals.
 struct PowerOfTwo {
   double f1, f2;
-  explicit PowerOfTwo(int e) : f1(std::ldexp(1.0, e / 2)), f2(std::ldexp(1.0, e - e / 2)) {}
+  explicit PowerOfTwo(int e) : f1(pow2(e / 2)), f2(pow2(e - e / 2)) {}
   Vec3 pt(Vec3 v) const { return (v * f1) * f2; }
   Vec3 vec(Vec3 v) const { return v; }
   double len(double r) const { return (r * f1) * f2; }
@@ -236,7 +296,8 @@ struct PowerOfTwo {
 inline double radius_of(const Sphere& s) { return s.r; }
 inline double radius_of(const Capsule& c) { return c.r; }
 
-/// The closest points and normal of two balls or capsules (`solve(a, b)`),
+/// The closest points and normal of two balls or capsules (`solve(a, b,
+/// pair)` fills `pair`),
 /// in the scene scaled by an exact power of two so that its largest
 /// magnitude lies in [1, 2): every square and product of the solution is
 /// then in range, and a scene scaled or reflected exactly is answered bit
@@ -248,29 +309,29 @@ inline double radius_of(const Capsule& c) { return c.r; }
 /// in proportion to its length; along `across` the overlap exceeds the true
 /// depth by at most 2 D, and so does the depth ra + rb.
 /// Invalid input: `valid` false.
+template <class Out>
 struct BallPair {
   bool valid = false;
-  SegmentPair sp;
+  Out sp;
   double ra = 0, rb = 0;
   int back = 0;
-  bool hit() const { return valid && sp.dist <= ra + rb; }
+  /// D^2 <= (ra + rb)^2, the scene in [1, 2): no overflow; a distance
+  /// below 2^-50 is zero (touching segments).
+  bool hit() const { return valid && sp.dist2 <= (ra + rb) * (ra + rb); }
 };
-template <class A, class B, class Solve>
-BallPair ball_pair(const A& a, const B& b, Solve solve) {
-  BallPair out;
+template <class Out, class A, class B, class Solve>
+BallPair<Out> ball_pair(const A& a, const B& b, Solve solve) {
+  BallPair<Out> out;
   if (!is_valid(a) || !is_valid(b)) return out;
   out.valid = true;
   const double m = std::max(largest(a), largest(b));
-  out.back = m > 0 ? std::ilogb(m) : 0;
+  out.back = m > 0 ? exponent_of(m) : 0;
   const PowerOfTwo to(-out.back);
   const A sa = mapped(a, to);
   const B sb = mapped(b, to);
-  out.sp = solve(sa, sb);
+  solve(sa, sb, out.sp);
   out.ra = radius_of(sa), out.rb = radius_of(sb);
-  if (out.sp.dist <= 0x1p-50) {
-    out.sp.dist = 0;
-    out.sp.n = out.sp.across;
-  }
+  if (out.sp.dist2 <= 0x1p-100) out.sp.dist2 = 0;
   return out;
 }
 
@@ -278,15 +339,26 @@ BallPair ball_pair(const A& a, const B& b, Solve solve) {
 /// largest double), the normal from the first shape towards the second, the
 /// point in the middle of the solids' overlap along it from the first
 /// segment's closest point.
-inline Contact ball_contact(const BallPair& p) {
+inline Contact ball_contact(const BallPair<SegmentPair>& p) {
   Contact c;
   if (!p.hit()) return c;
   c.hit = true;
-  c.normal = p.sp.n;
-  const double depth = std::max((p.ra + p.rb) - p.sp.dist, 0.0);
+  const SegmentPair& sp = p.sp;
+  const double dist = std::sqrt(sp.dist2);
+  if (dist > 0) {
+    // |dir| is D (in (2^-50, 8) in the scaled scene) or 1: no overflow, no underflow.
+    c.normal = sp.dir_is_unit ? sp.dir : (1.0 / length(sp.dir)) * sp.dir;
+  } else if (sp.across_is == SegmentPair::Across::Unit) {
+    c.normal = sp.across;
+  } else if (sp.across_is == SegmentPair::Across::Normalise) {
+    c.normal = unit_of(sp.across);
+  } else {
+    c.normal = some_perpendicular(sp.across);
+  }
+  const double depth = std::max((p.ra + p.rb) - dist, 0.0);
   c.depth = PowerOfTwo(p.back).len(depth);
   if (std::isinf(c.depth)) c.depth = std::numeric_limits<double>::max();
-  const Vec3 x = p.sp.a + overlap_middle(p.sp.dist, p.ra, p.rb) * p.sp.n;
+  const Vec3 x = sp.a + overlap_middle(dist, p.ra, p.rb) * c.normal;
   c.point = PowerOfTwo(p.back).pt(x);
   return c;
 }
