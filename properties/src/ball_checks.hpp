@@ -14,9 +14,9 @@
 // a capsule, production's (B, A) is the flipped contact, bit for bit); a
 // capsule reversed (q, p) is the same solid: same verdict (band), same depth.
 // check_metamorphic: Sign flips and power-of-two scales bit-identical (but
-// for the sign of the normal where production found the segments touching,
-// D = 0: any perpendicular is minimal there); axis permutations and rigid
-// motions agree outside the band.
+// for the normal and the point where the subject found the segments
+// touching, D = 0: any perpendicular is minimal there); axis permutations
+// and rigid motions agree outside the band.
 // check_monotone: Growing either radius never turns overlap into separation
 // (outside the band).
 #pragma once
@@ -125,13 +125,14 @@ CheckResult symmetry(const Case& c, const Impl& impl) {
 
 template <class Case, class Impl>
 CheckResult metamorphic(const Case& c, int move, const Impl& impl) {
-  // Where production found the segments touching (its depth is ra + rb
-  // exactly: D = 0), any perpendicular is minimal and its sign a free
-  // choice; point and depth stay bit-identical.
+  // Where the subject found the segments touching (its depth is ra + rb
+  // exactly: D = 0), every perpendicular is minimal: the normal is a free
+  // choice, and so is the point, which lies along it; the depth stays
+  // bit-identical.
   auto kept = [&](const Case&, const MovedAnswers& a) -> CheckResult {
     if (a.identical()) return std::nullopt;
     const bool touching_segments = a.ct.depth == c.a.r + c.b.r;
-    if (touching_segments && a.m.pt(a.ct.point) == a.ct2.point && a.m.len(a.ct.depth) == a.ct2.depth) return std::nullopt;
+    if (touching_segments && a.m.len(a.ct.depth) == a.ct2.depth) return std::nullopt;
     return a.not_identical();
   };
   // The rounded rigid motion moves the ends by a few ulps of the scene; a
