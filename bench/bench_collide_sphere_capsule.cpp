@@ -1,7 +1,8 @@
 // Sphere/capsule: production against FCL on the same inputs, in one run
-// (bench_pair.hpp: the batches, the benchmarks and the ratios; FCL answers
-// this pair with a closed form of its own). The target: production at least
-// 5x faster than FCL's collide and overlap.
+// (bench_pair.hpp: the batches, the benchmarks and the ratios), and ODE,
+// Bullet and MuJoCo where built (bench_engines.hpp). FCL answers this pair
+// with a closed form of its own. The target: production at least 5x faster
+// than FCL's collide and overlap, and faster than every other engine.
 //
 //   bench_collide_sphere_capsule [--benchmark_* flags]
 //   GEOMCHECK_BENCH_SEED=<n> bench_collide_sphere_capsule   (other inputs)
@@ -14,10 +15,16 @@ namespace {
 /// What the two depths are, printed with their differences.
 constexpr char kDepthNote[] = "both the true penetration depth ra + rb - D, up to rounding";
 
-/// A random pose: A from Rng::first, B's first end within reach + 1.5 of A's middle, its segment up to 3 long, radius in [0.05, 1.5].
+/// A random pose: A from Rng::first, B's first end within reach + 1.5 of
+/// A's middle, its segment up to 3 long, radius in [0.05, 1.5].
 const PairBench<Capsule, peers::FclPair<Sphere, Capsule>, Sphere> kBench{"sphere/capsule", random_capsule, kDepthNote};
 
 }  // namespace
 }  // namespace geomcheck::bench
 
-int main(int argc, char** argv) { return geomcheck::bench::kBench.run(argc, argv); }
+int main(int argc, char** argv) {
+  using namespace geomcheck;
+  auto bench = bench::kBench;
+  bench.others = bench::other_engines<QueryId::collide_sphere_capsule>();  // ODE, Bullet, MuJoCo in the same run
+  return bench.run(argc, argv);
+}

@@ -1,7 +1,8 @@
 // Sphere/sphere: production against FCL on the same inputs, in one run
-// (bench_pair.hpp: the batches, the benchmarks and the ratios; FCL answers
-// this pair with a closed form of its own). The target: production at least
-// 5x faster than FCL's collide and overlap.
+// (bench_pair.hpp: the batches, the benchmarks and the ratios), and ODE,
+// Bullet and MuJoCo where built (bench_engines.hpp). FCL answers this pair
+// with a closed form of its own. The target: production at least 5x faster
+// than FCL's collide and overlap, and faster than every other engine.
 //
 //   bench_collide_sphere_sphere [--benchmark_* flags]
 //   GEOMCHECK_BENCH_SEED=<n> bench_collide_sphere_sphere   (other inputs)
@@ -20,4 +21,9 @@ const PairBench<Sphere, peers::FclPair<Sphere, Sphere>, Sphere> kBench{"sphere/s
 }  // namespace
 }  // namespace geomcheck::bench
 
-int main(int argc, char** argv) { return geomcheck::bench::kBench.run(argc, argv); }
+int main(int argc, char** argv) {
+  using namespace geomcheck;
+  auto bench = bench::kBench;
+  bench.others = bench::other_engines<QueryId::collide_sphere_sphere>();  // ODE, Bullet, MuJoCo in the same run
+  return bench.run(argc, argv);
+}

@@ -29,6 +29,7 @@
 #include <vector>
 
 #include "bench_common.hpp"
+#include "bench_engines.hpp"
 #include "bench_random.hpp"
 #include "geomcheck/peers/fcl_adapter.hpp"
 #include "geomcheck/results.hpp"
@@ -72,6 +73,10 @@ struct PairBench {
   /// (penetration_cylinder_<B>), timed in the same run
   /// (BM_prod_penetration_<set>, and its ratio to FCL's collide); null: none.
   Contact (*penetration)(const A& a, const B& b) = nullptr;
+  /// The other engines timed in the same run (bench_engines.hpp's
+  /// other_engines<Q>(): BM_<engine>_overlap_<set>, BM_<engine>_collide_<set>
+  /// and their ratios to production); empty: FCL alone.
+  std::vector<OtherEngine<A, B>> others{};
 
   /// One random pose: a random A, then B near it.
   Pair random_pair(Rng& rng) const {
@@ -126,6 +131,10 @@ struct PairBench {
     }
     register_each("BM_fcl_overlap" + s, b.fcl, [](const Prepared& pr) { return peers::fcl_overlap_prepared(pr); });
     register_each("BM_fcl_collide" + s, b.fcl, [](const Prepared& pr) { return peers::fcl_collide_prepared(pr); });
+    for (const OtherEngine<A, B>& e : others) {
+      register_each("BM_" + e.key + "_overlap" + s, b.pairs, [e](const Pair& pr) { return e.overlap(pr.a, pr.b); });
+      register_each("BM_" + e.key + "_collide" + s, b.pairs, [e](const Pair& pr) { return e.collide(pr.a, pr.b); });
+    }
     // Reference only: validation + conversion + guarded fcl::collide, per query.
     register_each("BM_fcl_collide_adapter" + s, b.pairs,
                   [](const Pair& pr) { return peers::fcl_collide(pr.a, pr.b); });
@@ -174,6 +183,11 @@ struct PairBench {
     CaptureReporter reporter(kPairBatch);
     std::vector<Ratio> ratios{fcl_over_prod("overlap", "random"), fcl_over_prod("collide", "random"),
                               fcl_over_prod("overlap", "contact"), fcl_over_prod("collide", "contact")};
+    for (const OtherEngine<A, B>& e : others)
+      for (const char* set : {"random", "contact"})
+        for (const char* q : {"overlap", "collide"})
+          ratios.push_back({std::string(q) + " " + e.key + "/prod (" + set + ")",
+                            {"BM_" + e.key + "_" + q + "_" + set, std::string("BM_prod_") + q + "_" + set}});
     if (collide_before)
       for (const char* set : {"random", "contact"})
         ratios.push_back({std::string("collide fcl/prod-before (") + set + ")",

@@ -86,19 +86,31 @@ GEOMCHECK_SOLVER_INLINE Vec3 accurate_cross(const ExactDiff& u, const ExactDiff&
 /// The closest points of two segments and their distance, as a solver
 /// leaves them for a contact (collide); the unit normal is formed once, by
 /// ball_contact.
+/// A Vec3 slot a solver always writes before it is read: left uninitialised
+/// (Vec3 zero-initialises, and zeroing the report on every call costs as
+/// much as the sphere pair's arithmetic).
+struct Slot3 {
+  double x, y, z;
+  Slot3& operator=(Vec3 v) {
+    x = v.x, y = v.y, z = v.z;
+    return *this;
+  }
+  operator Vec3() const { return {x, y, z}; }
+};
+
 struct SegmentPair {
   double dist2 = 0;  ///< D^2: the verdict compares it with (ra + rb)^2, no square root
-  Vec3 a;            ///< the closest point of the first segment
+  Slot3 a;           ///< the closest point of the first segment
   /// The direction from a towards the second segment's closest point where
   /// D > 0, not normalised (unit already when `dir_is_unit`).
-  Vec3 dir;
+  Slot3 dir;
   /// What the normal is where the segments touch (D = 0): `across` itself
   /// (Across::Unit: the common perpendicular, computed on the way), its
   /// direction (Across::Normalise: their cross product, nonzero), or a
   /// perpendicular of it (Across::PerpendicularOf: the longer segment;
   /// (0, 0, 1) when it is zero), formed only if needed.
   enum class Across : unsigned char { Unit, Normalise, PerpendicularOf };
-  Vec3 across;
+  Slot3 across;
   Across across_is = Across::Unit;
   bool dir_is_unit = false;
   void points(Vec3 x, Vec3) { a = x; }
@@ -346,8 +358,9 @@ inline Contact ball_contact(const BallPair<SegmentPair>& p) {
   const SegmentPair& sp = p.sp;
   const double dist = std::sqrt(sp.dist2);
   if (dist > 0) {
-    // |dir| is D (in (2^-50, 8) in the scaled scene) or 1: no overflow, no underflow.
-    c.normal = sp.dir_is_unit ? sp.dir : (1.0 / length(sp.dir)) * sp.dir;
+    // |dir| is D (in (2^-50, 8) in the scaled scene: dist2 is its square)
+    // or 1.
+    c.normal = sp.dir_is_unit ? Vec3(sp.dir) : (1.0 / dist) * Vec3(sp.dir);
   } else if (sp.across_is == SegmentPair::Across::Unit) {
     c.normal = sp.across;
   } else if (sp.across_is == SegmentPair::Across::Normalise) {
@@ -358,7 +371,7 @@ inline Contact ball_contact(const BallPair<SegmentPair>& p) {
   const double depth = std::max((p.ra + p.rb) - dist, 0.0);
   c.depth = PowerOfTwo(p.back).len(depth);
   if (std::isinf(c.depth)) c.depth = std::numeric_limits<double>::max();
-  const Vec3 x = sp.a + overlap_middle(dist, p.ra, p.rb) * c.normal;
+  const Vec3 x = Vec3(sp.a) + overlap_middle(dist, p.ra, p.rb) * c.normal;
   c.point = PowerOfTwo(p.back).pt(x);
   return c;
 }
