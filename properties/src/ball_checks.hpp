@@ -14,9 +14,9 @@
 // a capsule, production's (B, A) is the flipped contact, bit for bit); a
 // capsule reversed (q, p) is the same solid: same verdict (band), same depth.
 // check_metamorphic: Sign flips and power-of-two scales bit-identical (but
-// for the normal and the point where the subject found the segments
-// touching, D = 0: any perpendicular is minimal there); axis permutations
-// and rigid motions agree outside the band.
+// for the normal and the point where the segments touch to the rounding of
+// the scene, D <= 2^-49 * scale: any perpendicular is minimal there); axis
+// permutations and rigid motions agree outside the band.
 // check_monotone: Growing either radius never turns overlap into separation
 // (outside the band).
 #pragma once
@@ -125,14 +125,18 @@ CheckResult symmetry(const Case& c, const Impl& impl) {
 
 template <class Case, class Impl>
 CheckResult metamorphic(const Case& c, int move, const Impl& impl) {
-  // Where the subject found the segments touching (its depth is ra + rb
-  // exactly: D = 0), every perpendicular is minimal: the normal is a free
-  // choice, and so is the point, which lies along it; the depth stays
+  // Where the segments touch, or come within the rounding of the scene of
+  // it (D <= 2^-49 * scale, exactly: production takes D <= 2^-50 of its
+  // scene for touching), every perpendicular is minimal: the normal is a
+  // free choice, and so is the point, which lies along it; the depth stays
   // bit-identical.
   auto kept = [&](const Case&, const MovedAnswers& a) -> CheckResult {
     if (a.identical()) return std::nullopt;
-    const bool touching_segments = a.ct.depth == c.a.r + c.b.r;
-    if (touching_segments && a.m.len(a.ct.depth) == a.ct2.depth) return std::nullopt;
+    if (a.m.len(a.ct.depth) == a.ct2.depth) {
+      const oracle::QBallSegment qa = oracle::to_ball_segment(c.a), qb = oracle::to_ball_segment(c.b);
+      const Q near = times_scale(0x1p-49, oracle::case_scale(c.a, c.b));
+      if (oracle::segment_distance2(qa.p, qa.q, qb.p, qb.q) <= near * near) return std::nullopt;
+    }
     return a.not_identical();
   };
   // The rounded rigid motion moves the ends by a few ulps of the scene; a

@@ -128,7 +128,8 @@ struct SegmentDistance {
   void touching(Vec3, SegmentPair::Across) {}
 };
 
-/// The residual x - c from the closest point c of segment [p, q] to x, and
+/// The residual x - c from the closest point c of segment [p, q] to x (x +
+/// x_lo, when x is a computed point carried to twice the precision), and
 /// c: carried exactly where it cancels (see the file's head). An end is
 /// the closest point only where the rounded projection says so beyond its
 /// rounding; within it (x beside an end, to a few ulps) the residual is the
@@ -138,10 +139,11 @@ struct SegmentDistance {
 /// projection's distance is short of the true one by at most the same few
 /// ulps of the scene (fuzz_collide_sphere_capsule found the tilt: an end
 /// taken for a centre 2e-23 beside the segment, the normal 0.18 * scale off).
-GEOMCHECK_SOLVER_INLINE Vec3 point_segment_residual(Vec3 x, Vec3 p, Vec3 q, Vec3& c) {
+GEOMCHECK_SOLVER_INLINE Vec3 point_segment_residual(Vec3 x, Vec3 p, Vec3 q, Vec3& c, Vec3 x_lo = Vec3{}) {
   const ExactDiff d = exact_diff(q, p);
   const double dd = dot(d.hi, d.hi);
-  const ExactDiff w = exact_diff(x, p);
+  ExactDiff w = exact_diff(x, p);
+  w.lo = w.lo + x_lo;
   const double wd = dot(w.hi, d.hi);
   // wd's rounding (and w.lo's share) within 2^-50 of the sum of its terms'
   // magnitudes; dd's within 2^-51 of itself.
@@ -154,7 +156,7 @@ GEOMCHECK_SOLVER_INLINE Vec3 point_segment_residual(Vec3 x, Vec3 p, Vec3 q, Vec3
   if (wd - dd >= band) {
     c = q;
     const ExactDiff e = exact_diff(x, q);
-    return e.hi + e.lo;
+    return e.hi + (e.lo + x_lo);
   }
   const double t = std::min(std::max(wd / dd, 0.0), 1.0);
   Vec3 n;
@@ -211,9 +213,10 @@ GEOMCHECK_SOLVER_INLINE Vec3 perpendicular_part(Vec3 x, Vec3 d, double dd) {
 /// of a scene in [1, 2) are in range but for distances below 2^-500, which
 /// ball_pair treats as touching anyway.
 template <class Out>
-GEOMCHECK_SOLVER_INLINE void consider_end(Vec3 x, Vec3 p, Vec3 q, bool x_on_first, double& best, Out& out) {
+GEOMCHECK_SOLVER_INLINE void consider_end(Vec3 x, Vec3 p, Vec3 q, bool x_on_first, double& best, Out& out,
+                                          Vec3 x_lo = Vec3{}) {
   Vec3 c;
-  const Vec3 r = point_segment_residual(x, p, q, c);
+  const Vec3 r = point_segment_residual(x, p, q, c, x_lo);
   const double d2 = dot(r, r);
   if (!(d2 < best)) return;
   best = d2;
@@ -275,7 +278,20 @@ GEOMCHECK_SOLVER_INLINE void closest_segments(Vec3 p1, Vec3 q1, Vec3 p2, Vec3 q2
     const double yy = dot(yv, yv);
     if (yy > 0) {
       const double t = std::clamp(-dot(yw, yv) / yy, 0.0, 1.0);
-      if (t > 0 && t < 1) consider_end(p2 + t * v.hi, p1, q1, false, best, out);
+      if (t > 0 && t < 1) {
+        // B(t) = p2 + t v to twice the precision: rounded to a double, it
+        // leaves B's line by eps * scene, which tilts the direction to A
+        // by eps * scene / D (fuzz_collide_capsule_capsule: 0.028 rad at
+        // D = 1e-15 * scene).
+        Vec3 x, x_lo;
+        for (int i = 0; i < 3; ++i) {
+          const double prod = t * v.hi[i], err = std::fma(t, v.hi[i], -prod);
+          const double sum = p2[i] + prod, bb = sum - p2[i];
+          x[i] = sum;
+          x_lo[i] = ((p2[i] - (sum - bb)) + (prod - bb)) + (err + t * v.lo[i]);
+        }
+        consider_end(x, p1, q1, false, best, out, x_lo);
+      }
     }
   }
   out.dist2 = best;
