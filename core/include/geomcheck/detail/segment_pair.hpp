@@ -99,6 +99,7 @@ struct Slot3 {
 };
 
 struct SegmentPair {
+  static constexpr bool kWantsDirection = true;
   double dist2 = 0;  ///< D^2: the verdict compares it with (ra + rb)^2, no square root
   Slot3 a;           ///< the closest point of the first segment
   /// The direction from a towards the second segment's closest point where
@@ -122,6 +123,7 @@ struct SegmentPair {
 /// alone, the rest dropped (the same arithmetic, so the same bits as
 /// collide's).
 struct SegmentDistance {
+  static constexpr bool kWantsDirection = false;
   double dist2 = 0;
   void points(Vec3, Vec3) {}
   void direction(Vec3, bool) {}
@@ -295,6 +297,39 @@ GEOMCHECK_SOLVER_INLINE void closest_segments(Vec3 p1, Vec3 q1, Vec3 p2, Vec3 q2
     }
   }
   out.dist2 = best;
+  // Near touching (D <= 2^-30 of the scene, the segments' parallelogram
+  // within that of the origin), which end faces which is decided by the
+  // rounding of the projections, and the winner's direction may lie outside
+  // the normal cone of the truly closest feature: tilted by up to eps *
+  // scene / D along a segment, it costs overlap in proportion to the
+  // segment's length (fuzz_collide_capsule_capsule: 0.025 * scale at D =
+  // 1e-15 * scene). Every direction in that cone overlaps the shapes by at
+  // most D more than the depth, and among the candidates (the common
+  // perpendicular, the four ends' residuals) one lies in it: the one along
+  // which the segments overlap least.
+  if constexpr (Out::kWantsDirection) {
+    if (!(best <= 0x1p-60 && best > 0)) return;
+    auto overlap_along = [&](Vec3 n) {
+      return std::max(dot(p1, n), dot(q1, n)) - std::min(dot(p2, n), dot(q2, n));
+    };
+    Vec3 chosen = Vec3(out.dir) * (1.0 / std::sqrt(best));
+    double least = overlap_along(chosen);
+    auto offer = [&](Vec3 n) {
+      const double o = overlap_along(n);
+      if (o < least) least = o, chosen = n;
+    };
+    if (mm > 0) {
+      const Vec3 nm = unit_of(m);
+      offer(dot(nm, chosen) < 0 ? -nm : nm);
+    }
+    const Vec3 ends[4][3] = {{p1, p2, q2}, {q1, p2, q2}, {p2, p1, q1}, {q2, p1, q1}};
+    for (int k = 0; k < 4; ++k) {
+      Vec3 c;
+      const Vec3 r = point_segment_residual(ends[k][0], ends[k][1], ends[k][2], c);
+      if (max_abs(r) > 0) offer(k < 2 ? -unit_of(r) : unit_of(r));
+    }
+    out.direction(chosen, true);
+  }
 }
 
 /// Where along the unit normal n, from the first closest point a, the two
