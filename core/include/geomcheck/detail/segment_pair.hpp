@@ -210,17 +210,22 @@ GEOMCHECK_SOLVER_INLINE Vec3 perpendicular_part(Vec3 x, Vec3 d, double dd) {
 }
 
 /// The point x of one segment against the other segment [p, q]: taken
-/// into `out` when its squared distance is below `best` (x on the first
+/// into `out` when its squared distance is below `best` (`second` keeps the
+/// runner-up's; x on the first
 /// segment: the direction points from x away; else towards x). The squares
 /// of a scene in [1, 2) are in range but for distances below 2^-500, which
 /// ball_pair treats as touching anyway.
 template <class Out>
-GEOMCHECK_SOLVER_INLINE void consider_end(Vec3 x, Vec3 p, Vec3 q, bool x_on_first, double& best, Out& out,
-                                          Vec3 x_lo = Vec3{}) {
+GEOMCHECK_SOLVER_INLINE void consider_end(Vec3 x, Vec3 p, Vec3 q, bool x_on_first, double& best, double& second,
+                                          Out& out, Vec3 x_lo = Vec3{}) {
   Vec3 c;
   const Vec3 r = point_segment_residual(x, p, q, c, x_lo);
   const double d2 = dot(r, r);
-  if (!(d2 < best)) return;
+  if (!(d2 < best)) {
+    second = std::min(second, d2);
+    return;
+  }
+  second = best;
   best = d2;
   if (x_on_first) {
     out.points(x, c);
@@ -270,11 +275,11 @@ GEOMCHECK_SOLVER_INLINE void closest_segments(Vec3 p1, Vec3 q1, Vec3 p2, Vec3 q2
   else out.touching(uu >= vv ? u.hi : v.hi, SegmentPair::Across::PerpendicularOf);
   // The ends (and B's point nearest A's line) against the other segment;
   // the smallest residual wins.
-  double best = INFINITY;
-  consider_end(p1, p2, q2, true, best, out);
-  consider_end(q1, p2, q2, true, best, out);
-  consider_end(p2, p1, q1, false, best, out);
-  consider_end(q2, p1, q1, false, best, out);
+  double best = INFINITY, second = INFINITY;
+  consider_end(p1, p2, q2, true, best, second, out);
+  consider_end(q1, p2, q2, true, best, second, out);
+  consider_end(p2, p1, q1, false, best, second, out);
+  consider_end(q2, p1, q1, false, best, second, out);
   if (!crossing_well_posed && mm > 0 && uu > 0) {
     const Vec3 yw = perpendicular_part(w.hi + w.lo, u.hi, uu), yv = perpendicular_part(v.hi + v.lo, u.hi, uu);
     const double yy = dot(yv, yv);
@@ -292,23 +297,25 @@ GEOMCHECK_SOLVER_INLINE void closest_segments(Vec3 p1, Vec3 q1, Vec3 p2, Vec3 q2
           x[i] = sum;
           x_lo[i] = ((p2[i] - (sum - bb)) + (prod - bb)) + (err + t * v.lo[i]);
         }
-        consider_end(x, p1, q1, false, best, out, x_lo);
+        consider_end(x, p1, q1, false, best, second, out, x_lo);
       }
     }
   }
   out.dist2 = best;
-  // Near touching (D <= 2^-30 of the scene, the segments' parallelogram
-  // within that of the origin), which end faces which is decided by the
-  // rounding of the projections, and the winner's direction may lie outside
-  // the normal cone of the truly closest feature: tilted by up to eps *
-  // scene / D along a segment, it costs overlap in proportion to the
-  // segment's length (fuzz_collide_capsule_capsule: 0.025 * scale at D =
-  // 1e-15 * scene). Every direction in that cone overlaps the shapes by at
-  // most D more than the depth, and among the candidates (the common
-  // perpendicular, the four ends' residuals) one lies in it: the one along
-  // which the segments overlap least.
+  // Two candidates within 2^-20 of each other in squared distance (an end
+  // beside the other segment's end, inside or outside it by less than D /
+  // 2^10), or near touching (D <= 2^-30 of the scene, where rounding decides
+  // which end faces which): the winner's direction may lie outside the
+  // normal cone of the truly closest feature, tilted along a segment, which
+  // costs overlap in proportion to the segment's length
+  // (fuzz_collide_capsule_capsule: an end 2e-23 inside the other segment
+  // at D = 4.7e-10, a vertex-to-vertex direction 4.3e-14 rad off, 4.3e-14 *
+  // scale; and 0.025 * scale at D = 1e-15 * scene). The overlap along any
+  // direction is at least the depth, and equal to it (to D) in that cone:
+  // of the candidates (the winner's, the common perpendicular, the four
+  // ends' residuals) the one along which the segments overlap least serves.
   if constexpr (Out::kWantsDirection) {
-    if (!(best <= 0x1p-60 && best > 0)) return;
+    if (!(best > 0 && (best <= 0x1p-60 || second <= best * (1 + 0x1p-20)))) return;
     auto overlap_along = [&](Vec3 n) {
       return std::max(dot(p1, n), dot(q1, n)) - std::min(dot(p2, n), dot(q2, n));
     };
