@@ -114,6 +114,11 @@ struct SegmentPair {
   Slot3 across;
   Across across_is = Across::Unit;
   bool dir_is_unit = false;
+  /// Where the normal is another candidate's direction than the closest
+  /// points' (closest_segments near a tie): the closest points' own unit
+  /// direction, along which the contact's point is placed (in both solids).
+  Slot3 pair_dir;
+  bool normal_elsewhere = false;
   void points(Vec3 x, Vec3) { a = x; }
   void direction(Vec3 d, bool unit) { dir = d, dir_is_unit = unit; }
   void touching(Vec3 x, Across how) { across = x, across_is = how; }
@@ -319,7 +324,8 @@ GEOMCHECK_SOLVER_INLINE void closest_segments(Vec3 p1, Vec3 q1, Vec3 p2, Vec3 q2
     auto overlap_along = [&](Vec3 n) {
       return std::max(dot(p1, n), dot(q1, n)) - std::min(dot(p2, n), dot(q2, n));
     };
-    Vec3 chosen = Vec3(out.dir) * (1.0 / std::sqrt(best));
+    const Vec3 own = Vec3(out.dir) * (1.0 / std::sqrt(best));
+    Vec3 chosen = own;
     double least = overlap_along(chosen);
     auto offer = [&](Vec3 n) {
       const double o = overlap_along(n);
@@ -336,6 +342,8 @@ GEOMCHECK_SOLVER_INLINE void closest_segments(Vec3 p1, Vec3 q1, Vec3 p2, Vec3 q2
       if (max_abs(r) > 0) offer(k < 2 ? -unit_of(r) : unit_of(r));
     }
     out.direction(chosen, true);
+    out.pair_dir = own;
+    out.normal_elsewhere = true;
   }
 }
 
@@ -441,7 +449,8 @@ inline Contact ball_contact(const BallPair<SegmentPair>& p) {
   const double depth = std::max((p.ra + p.rb) - dist, 0.0);
   c.depth = PowerOfTwo(p.back).len(depth);
   if (std::isinf(c.depth)) c.depth = std::numeric_limits<double>::max();
-  const Vec3 x = Vec3(sp.a) + overlap_middle(dist, p.ra, p.rb) * c.normal;
+  const Vec3 along = dist > 0 && sp.normal_elsewhere ? Vec3(sp.pair_dir) : c.normal;
+  const Vec3 x = Vec3(sp.a) + overlap_middle(dist, p.ra, p.rb) * along;
   c.point = PowerOfTwo(p.back).pt(x);
   return c;
 }
