@@ -25,8 +25,6 @@ const PairBench<Capsule, peers::FclPair<Capsule, Capsule>, Capsule> kBench{"caps
 }  // namespace geomcheck::bench
 
 int main(int argc, char** argv) {
-  using namespace geomcheck;
-  auto bench = bench::kBench;
-  bench.others = bench::other_engines<QueryId::collide_capsule_capsule>();  // ODE, Bullet, MuJoCo in the same run
-  return bench.run(argc, argv);
+  return geomcheck::bench::run_with_other_engines<geomcheck::QueryId::collide_capsule_capsule>(geomcheck::bench::kBench, argc,
+                                                                                      argv);
 }

@@ -23,8 +23,6 @@ const PairBench<Capsule, peers::FclPair<Sphere, Capsule>, Sphere> kBench{"sphere
 }  // namespace geomcheck::bench
 
 int main(int argc, char** argv) {
-  using namespace geomcheck;
-  auto bench = bench::kBench;
-  bench.others = bench::other_engines<QueryId::collide_sphere_capsule>();  // ODE, Bullet, MuJoCo in the same run
-  return bench.run(argc, argv);
+  return geomcheck::bench::run_with_other_engines<geomcheck::QueryId::collide_sphere_capsule>(geomcheck::bench::kBench, argc,
+                                                                                      argv);
 }

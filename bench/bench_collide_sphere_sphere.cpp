@@ -22,8 +22,6 @@ const PairBench<Sphere, peers::FclPair<Sphere, Sphere>, Sphere> kBench{"sphere/s
 }  // namespace geomcheck::bench
 
 int main(int argc, char** argv) {
-  using namespace geomcheck;
-  auto bench = bench::kBench;
-  bench.others = bench::other_engines<QueryId::collide_sphere_sphere>();  // ODE, Bullet, MuJoCo in the same run
-  return bench.run(argc, argv);
+  return geomcheck::bench::run_with_other_engines<geomcheck::QueryId::collide_sphere_sphere>(geomcheck::bench::kBench, argc,
+                                                                                      argv);
 }

@@ -200,4 +200,12 @@ struct PairBench {
   }
 };
 
+/// The main() of a pair program whose query Q the other engines answer
+/// too: `bench` with other_engines<Q>() in the same run.
+template <QueryId Q, class B, class Prepared, class A>
+int run_with_other_engines(PairBench<B, Prepared, A> bench, int argc, char** argv) {
+  bench.others = other_engines<Q>();
+  return bench.run(argc, argv);
+}
+
 }  // namespace geomcheck::bench

@@ -38,13 +38,19 @@ class Rng {
       if (l2 > 1e-4 && l2 <= 1.0) return (1.0 / std::sqrt(l2)) * v;
     }
   }
-  /// A random cylinder: base in [-10, 10]^3, length in [0.5, 4], radius in [0.1, 1.5].
-  Cylinder cylinder() {
-    Cylinder c;
+  /// A random segment and radius: first end in [-10, 10]^3, length in
+  /// [min_length, 4], radius in [0.1, 1.5], drawn in that order.
+  Capsule segment_and_radius(double min_length) {
+    Capsule c;
     c.p = in_box(10.0);
-    c.q = c.p + uniform(0.5, 4.0) * direction();
+    c.q = c.p + uniform(min_length, 4.0) * direction();
     c.r = uniform(0.1, 1.5);
     return c;
+  }
+  /// A random cylinder: base in [-10, 10]^3, length in [0.5, 4], radius in [0.1, 1.5].
+  Cylinder cylinder() {
+    const Capsule s = segment_and_radius(0.5);
+    return {s.p, s.q, s.r};
   }
   /// A point uniform in the cube of half side reach + margin around `c`'s
   /// middle, reach being half its length plus its radius.
@@ -65,13 +71,7 @@ class Rng {
     return s;
   }
   /// A random capsule: first end in [-10, 10]^3, length in [0, 4], radius in [0.1, 1.5].
-  Capsule capsule() {
-    Capsule c;
-    c.p = in_box(10.0);
-    c.q = c.p + uniform(0.0, 4.0) * direction();
-    c.r = uniform(0.1, 1.5);
-    return c;
-  }
+  Capsule capsule() { return segment_and_radius(0.0); }
   /// A random first shape of a pair benchmark.
   template <class A>
   A first();

@@ -39,6 +39,12 @@ Vec3 across_of(Vec3 u) {
   return std::cos(a) * e1 + std::sin(a) * e2;
 }
 
+// A drawn direction reflected into the half-space of unit n (n . w >= 0).
+Vec3 dir_away_from(Vec3 n) {
+  const Vec3 w = pick_dir();
+  return dot(w, n) < 0 ? w - 2 * dot(w, n) * n : w;
+}
+
 CapsulesCase exact_case(std::string& tag) {
   const auto& t = kTriples[pick_int(0, kNumTriples - 1)];
   const int k = pick_int(1, 4), len = pick_int(1, 30), kind = pick_int(0, 2);
@@ -122,19 +128,14 @@ rc::Gen<Tagged<CapsulesCase>> targeted<QueryId::collide_capsule_capsule>() {
       case 4: {
         const Vec3 n = across_of(u);
         p2 = p1 + pick_real(0, 1) * la * u + (R + gap) * n;
-        Vec3 w = pick_dir();
-        if (dot(w, n) < 0) w = w - 2 * dot(w, n) * n;
-        q2 = p2 + lb * w;
+        q2 = p2 + lb * dir_away_from(n);
         tag = "end-side";
         break;
       }
       case 5: {
-        Vec3 out = pick_dir();
-        if (dot(out, u) < 0) out = out - 2 * dot(out, u) * u;
+        const Vec3 out = dir_away_from(u);
         p2 = q1 + (R + gap) * out;
-        Vec3 w = pick_dir();
-        if (dot(w, out) < 0) w = w - 2 * dot(w, out) * out;
-        q2 = p2 + lb * w;
+        q2 = p2 + lb * dir_away_from(out);
         tag = "end-end";
         break;
       }
