@@ -106,10 +106,13 @@ rc::Gen<Tagged<CapsulesCase>> targeted<QueryId::collide_capsule_capsule>() {
       case 2: {
         Vec3 v = pick_int(0, 1) ? u : -u;
         if (mode == 2) {
-          v = v + std::ldexp(1.0, -pick_int(10, 50)) * across_of(u);
+          const double tilt = std::ldexp(1.0, -pick_int(10, 50));  // one draw per statement
+          v = v + tilt * across_of(u);
           v = (1.0 / length(v)) * v;
         }
-        p2 = p1 + (R + gap) * across_of(u) + pick_real(-1.5, 1.5) * (la + lb) * u;
+        const Vec3 n = across_of(u);
+        const double shift = pick_real(-1.5, 1.5);
+        p2 = p1 + (R + gap) * n + shift * (la + lb) * u;
         q2 = p2 + lb * v;
         tag = mode == 1 ? "parallel" : "near-parallel";
         break;
@@ -147,8 +150,14 @@ rc::Gen<Tagged<CapsulesCase>> targeted<QueryId::collide_capsule_capsule>() {
         break;
       }
       case 7: {
-        p2 = p1 + pick_real(0, 1) * la * u + pick_real(0, 1) * ra * across_of(u);
-        q2 = p1 + pick_real(0, 1) * la * u + pick_real(0, 1) * ra * across_of(u);
+        // Points of A's solid, one draw per statement (the order of draws
+        // within an expression is the compiler's).
+        auto inside_a = [&]() {
+          const double along = pick_real(0, 1), out = pick_real(0, 1);
+          return p1 + along * la * u + out * ra * across_of(u);
+        };
+        p2 = inside_a();
+        q2 = inside_a();
         rb = ra * pick_real(0, 1);
         tag = "inside";
         break;

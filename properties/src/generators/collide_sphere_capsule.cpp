@@ -85,7 +85,8 @@ rc::Gen<Tagged<SphereCapsuleCase>> targeted<QueryId::collide_sphere_capsule>() {
         break;
       case 5:
         if (pick_int(0, 1)) {
-          x = p + pick_real(0, 1) * len * u + pick_real(0, 1) * rc_ * n;
+          const double along = pick_real(0, 1), out = pick_real(0, 1);  // one draw per statement
+          x = p + along * len * u + out * rc_ * n;
           rs = rc_ * pick_real(0, 1);
           tag = "inside-capsule";
         } else {

@@ -54,7 +54,13 @@ rc::Gen<Tagged<SpheresCase>> targeted<QueryId::collide_sphere_sphere>() {
         const double d = gap == 0 ? ra - rb : (ra - rb) * pick_real(0, 1);
         return {{{c, ra}, {c + d * pick_dir(), rb}}, gap == 0 ? "inside-touch" : "inside"};
       }
-      default: return {{{c, 0.0}, {c + (pick_int(0, 1) ? gap : 0.0) * pick_dir(), pick_int(0, 1) ? 0.0 : rb}}, "degenerate"};
+      default: {
+        // One draw per statement: the order of draws within an expression is the compiler's.
+        const double off = pick_int(0, 1) ? gap : 0.0;
+        const Vec3 dir = pick_dir();
+        const double r = pick_int(0, 1) ? 0.0 : rb;
+        return {{{c, 0.0}, {c + off * dir, r}}, "degenerate"};
+      }
     }
   }));
 }
