@@ -8,6 +8,9 @@
 //                   (the polytope grown towards its face nearest the
 //                   origin); a contact's depth is the overlap along the
 //                   normal, its point the mid point of the witnesses.
+//                   Spheres and capsules against each other: the closest
+//                   points of their cores (point, segment), the radii
+//                   added.
 //   sweep(ball, C)  a moving ball against a cylinder by conservative
 //                   advancement: step by the gap over the speed until the
 //                   gap is within the tolerance.
@@ -55,6 +58,7 @@ template <class T> V<T> support(const Cyl<T>& s, V<T> d) {
   if (max_abs(radial) > 0) x = x + s.r * unit(radial);
   return x;
 }
+template <class T> V<T> support(const Ball<T>& s, V<T> d) { return max_abs(d) > 0 ? s.c + s.r * unit(d) : s.c; }
 template <class T> V<T> support(const Cap<T>& s, V<T> d) {
   const V<T> x = dot(d, s.q - s.p) >= 0 ? s.q : s.p;
   return max_abs(d) > 0 ? x + s.r * unit(d) : x;
@@ -350,6 +354,69 @@ Touch<T> collide_convex(const A& a, const B& b, T scale) {
   return out;
 }
 
+/// The contact of two rounded shapes (a core swept by a ball: a point or a
+/// segment, Cap<T>), as engines treat their spheres and capsules: the
+/// closest points of the cores (the textbook parametric solution, guarded
+/// for parallel and degenerate segments), the radii added to their
+/// distance d: the depth is ra + rb - d. Where the cores nearly meet, the
+/// direction between the closest points is rounding; their difference is
+/// flat (a point, a segment or a parallelogram), so the normal of its span
+/// is a minimal translation, overlapping by at most 2 d more (within the
+/// margin for d below a quarter of it).
+/// Flaw::Unguarded: a known-wrong sibling, the parametric solution divided
+/// by the determinant of parallel segments (zero) too.
+template <class T>
+Touch<T> collide_rounded(const Cap<T>& a, const Cap<T>& b, T scale, Flaw flaw = Flaw::None) {
+  const V<T> d1 = a.q - a.p, d2 = b.q - b.p, r = a.p - b.p;
+  const T aa = dot(d1, d1), e = dot(d2, d2), f = dot(d2, r);
+  const auto clamp01 = [](T x) { return std::min(std::max(x, T(0)), T(1)); };
+  T s = 0, t = 0;
+  if (aa == 0 && e == 0) {
+  } else if (aa == 0) {
+    t = clamp01(f / e);
+  } else {
+    const T c = dot(d1, r);
+    if (e == 0) {
+      s = clamp01(-c / aa);
+    } else {
+      const T bb = dot(d1, d2), denom = aa * e - bb * bb;
+      s = denom > 0 || flaw == Flaw::Unguarded ? clamp01((bb * f - c * e) / denom) : T(0);
+      t = (bb * s + f) / e;
+      if (t < 0) {
+        t = 0, s = clamp01(-c / aa);
+      } else if (t > 1) {
+        t = 1, s = clamp01((bb - c) / aa);
+      }
+    }
+  }
+  const V<T> c1 = a.p + s * d1, c2 = b.p + t * d2;
+  const T d = len(c2 - c1);
+  if (d > a.r + b.r) return Touch<T>{};
+  Touch<T> out;
+  out.hit = true;
+  if (d > T(Tol<T>::margin / 4) * scale) {
+    out.normal = T(1 / d) * (c2 - c1);
+  } else {
+    const V<T> n = cross(d1, d2);
+    const T la = std::sqrt(aa), lb = std::sqrt(e);
+    // The cross product's direction is good to eps / sin(angle): taken
+    // where that tilts the parallelogram by less than a quarter margin;
+    // segments more nearly parallel span a strip thinner than that, and a
+    // perpendicular to the longer one does.
+    if (len(n) > T(8 / Tol<T>::margin) * std::numeric_limits<T>::epsilon() * la * lb)
+      out.normal = unit(n);
+    else if (std::max(la, lb) > 0)
+      out.normal = any_perp(la >= lb ? unit(d1) : unit(d2));
+    else
+      out.normal = {0, 0, 1};
+  }
+  out.depth = a.r + b.r - d;
+  out.point = c1 + (a.r - out.depth / 2) * out.normal;
+  return out;
+}
+template <class T> Cap<T> rounded(const Ball<T>& b) { return {b.c, b.c, b.r}; }
+template <class T> Cap<T> rounded(const Cap<T>& c) { return c; }
+
 /// The gap between a ball and a cylinder (negative: they overlap) and the
 /// cylinder's closest point to the centre.
 template <class T>
@@ -407,6 +474,7 @@ Ray<T> sweep(const Ball<T>& b, V<T> delta, const Cyl<T>& cy, T scale, bool loose
 // --- adapters --------------------------------------------------------------
 
 template <class T> Cyl<T> mine(const geomcheck::Cylinder& c) { return {mine<T>(c.p), mine<T>(c.q), T(c.r)}; }
+template <class T> Ball<T> mine(const geomcheck::Sphere& s) { return {mine<T>(s.c), T(s.r)}; }
 template <class T> Cap<T> mine(const geomcheck::Capsule& c) { return {mine<T>(c.p), mine<T>(c.q), T(c.r)}; }
 template <class T> Box<T> mine(const geomcheck::Obb& b) {
   return {mine<T>(b.c), {mine<T>(b.axes[0]), mine<T>(b.axes[1]), mine<T>(b.axes[2])}, mine<T>(b.e)};
@@ -415,6 +483,7 @@ template <class T> Tri<T> mine(const geomcheck::Triangle& t) { return {mine<T>(t
 
 /// A shape scaled by k about the origin.
 inline geomcheck::Cylinder scaled(geomcheck::Cylinder c, double k) { return {k * c.p, k * c.q, k * c.r}; }
+inline geomcheck::Sphere scaled(geomcheck::Sphere s, double k) { return {k * s.c, k * s.r}; }
 inline geomcheck::Capsule scaled(geomcheck::Capsule c, double k) { return {k * c.p, k * c.q, k * c.r}; }
 inline geomcheck::Obb scaled(geomcheck::Obb b, double k) {
   b.c = k * b.c;
@@ -425,6 +494,7 @@ inline geomcheck::Triangle scaled(geomcheck::Triangle t, double k) { return {k *
 
 /// The scale a user takes: the largest coordinate, radius or extent.
 inline double user_scale(const geomcheck::Cylinder& c) { return std::max({max_abs(mine<double>(c.p)), max_abs(mine<double>(c.q)), c.r}); }
+inline double user_scale(const geomcheck::Sphere& s) { return std::max(max_abs(mine<double>(s.c)), s.r); }
 inline double user_scale(const geomcheck::Capsule& c) { return std::max({max_abs(mine<double>(c.p)), max_abs(mine<double>(c.q)), c.r}); }
 inline double user_scale(const geomcheck::Obb& b) { return max_abs(mine<double>(b.c)) + max_abs(mine<double>(b.e)); }
 inline double user_scale(const geomcheck::Triangle& t) {
@@ -439,6 +509,8 @@ inline bool solid(const geomcheck::Cylinder& c) {
   const double l = len(mine<double>(c.q - c.p));
   return c.r >= kThin * l && l >= kThin * c.r;
 }
+/// A ball: not a point (the difference of two points has no interior).
+inline bool solid(const geomcheck::Sphere& s) { return s.r > 0; }
 inline bool solid(const geomcheck::Capsule& c) { return c.r >= kThin * len(mine<double>(c.q - c.p)); }
 inline bool solid(const geomcheck::Obb& b) {
   return std::min({b.e.x, b.e.y, b.e.z}) >= kThin * std::max({b.e.x, b.e.y, b.e.z});
@@ -462,10 +534,14 @@ geomcheck::Claims iterative_claims() {
   return c;
 }
 
-/// The collide (or penetration) query Q of a cylinder against a convex B,
+/// Spheres and capsules: a core swept by a ball (collide_rounded).
+template <class S>
+constexpr bool rounded_shape = std::is_same_v<S, geomcheck::Sphere> || std::is_same_v<S, geomcheck::Capsule>;
+
+/// The collide (or penetration) query Q of a convex A against a convex B,
 /// by GJK and EPA in T.
-/// Flaw::RoundedCaps: a known-wrong sibling, the cylinder A taken as a
-/// capsule.
+/// Flaw::RoundedCaps: a known-wrong sibling, a cylinder A taken as a
+/// capsule; Flaw::Unguarded, two capsules' closest points unguarded.
 template <geomcheck::QueryId Q, class T>
 auto convex_subject(const char* name, Flaw flaw = Flaw::None) {
   using namespace geomcheck;
@@ -478,9 +554,16 @@ auto convex_subject(const char* name, Flaw flaw = Flaw::None) {
     const A a = scaled(a0, k);
     const B b = scaled(b0, k);
     const double s = std::max(user_scale(a), user_scale(b));
-    const Touch<T> t = flaw == Flaw::RoundedCaps
-                           ? collide_convex(Cap<T>{mine<T>(a.p), mine<T>(a.q), T(a.r)}, mine<T>(b), T(s))
-                           : collide_convex(mine<T>(a), mine<T>(b), T(s));
+    Touch<T> t;
+    if constexpr (std::is_same_v<A, Cylinder>) {
+      t = flaw == Flaw::RoundedCaps ? collide_convex(Cap<T>{mine<T>(a.p), mine<T>(a.q), T(a.r)}, mine<T>(b), T(s))
+                                    : collide_convex(mine<T>(a), mine<T>(b), T(s));
+    } else if constexpr (rounded_shape<A> && rounded_shape<B>) {
+      t = collide_rounded(rounded(mine<T>(a)), rounded(mine<T>(b)), T(s), flaw);
+    } else {
+      (void)flaw;
+      t = collide_convex(mine<T>(a), mine<T>(b), T(s));
+    }
     return Contact{t.hit, (1 / k) * theirs(t.point), theirs(t.normal), double(t.depth) / k};
   };
   auto overlap_fn = [collide_fn](const A& a, const B& b) { return collide_fn(a, b).hit; };

@@ -87,6 +87,7 @@ enum class Flaw {
   DeepPointOnFace,  ///< a centre inside: the point on the nearest face, outside a small ball
   RoundedCaps,      ///< the cylinder taken as a capsule (round ends)
   NoCaps,           ///< the cast ignores the cap planes (an infinite cylinder)
+  Unguarded,        ///< segments' closest points without the parallel guard
 };
 
 /// Sphere against cylinder; the normal from the cylinder towards the ball.

@@ -99,6 +99,28 @@ TEST(ReferenceIterative, sweep_sphere_cylinder_float) {
   expect_clean(ref::advancing_sweep_subject<float>("advancing-float"), "sweep-float",
                GEOMCHECK_REFERENCE_ITERATIVE_CASES);
 }
+// Spheres and capsules by a user's closest points of their cores (a point,
+// a segment) with the radii added (reference_convex.hpp's collide_rounded):
+// closed form, so GEOMCHECK_REFERENCE_CASES cases of each seed.
+#define GEOMCHECK_ROUNDED(id)                                                                                       \
+  TEST(ReferenceRounded, id##_double) {                                                                           \
+    expect_clean(ref::convex_subject<QueryId::id, double>("closest-points-double"), #id "-double");              \
+  }                                                                                                               \
+  TEST(ReferenceRounded, id##_float) {                                                                            \
+    expect_clean(ref::convex_subject<QueryId::id, float>("closest-points-float"), #id "-float");                 \
+  }
+GEOMCHECK_ROUNDED(collide_sphere_sphere)
+GEOMCHECK_ROUNDED(collide_sphere_capsule)
+GEOMCHECK_ROUNDED(collide_capsule_capsule)
+#undef GEOMCHECK_ROUNDED
+// Its sibling: the closest points of parallel segments divided by zero.
+TEST(ReferenceRounded, SiblingCaught) {
+  const VerifyResult r = verify(
+      ref::convex_subject<QueryId::collide_capsule_capsule, double>("closest-points-unguarded", ref::Flaw::Unguarded),
+      options("closest-points-unguarded", kSeeds[0], GEOMCHECK_REFERENCE_SIBLING_CASES));
+  EXPECT_GT(r.failures, 0) << "the closest points of parallel segments unguarded";
+}
+
 // Their siblings: the cylinder taken as a capsule, the advancement stopped
 // a million times too early.
 TEST(ReferenceIterative, SiblingsCaught) {
