@@ -22,7 +22,8 @@
 //
 // Filters: orient2d and incircle (Shewchuk's ccwerrboundA and iccerrboundA,
 // core/include/geomcheck/predicates2d.hpp), the same on rescaled
-// differences (tiny and huge point sets), and the cylinder/triangle query's
+// differences (tiny and huge point sets), orient3d and insphere
+// (o3derrboundA and isperrboundA, core/include/geomcheck/predicates3d.hpp), and the cylinder/triangle query's
 // orientation keys (detail/sign_filters.hpp: w . (x - y) and q . (a x b)),
 // the consistent contact's frame orientation (w . ((a + b) - (c + d))),
 // also at scales where products underflow; the engine's prefilter of
@@ -50,9 +51,11 @@
 
 #include "../src/engine_interval.hpp"
 #include "../src/engine_search.hpp"
+#include "exact_signs_3d.hpp"
 #include "geomcheck/detail/sign_filters.hpp"
 #include "geomcheck/oracles/exact.hpp"
 #include "geomcheck/predicates2d.hpp"
+#include "geomcheck/predicates3d.hpp"
 
 namespace geomcheck {
 namespace {
@@ -231,6 +234,91 @@ TEST(Filters, IncircleRescaled) {
     hold(scale < 0 ? "incircle rescaled, points near 2^-400" : "incircle rescaled, points near 2^+400", w, false,
          0.2);
   }
+}
+
+// ---- 3D: orient3d and insphere (core/include/geomcheck/predicates3d.hpp) ----
+//
+// The exact sign from rationals (independent of the predicates' own
+// big-integer stage).
+
+using P12 = std::array<double, 12>;
+using P15s = std::array<double, 15>;
+
+Vec3 p3(const double* x) { return {x[0], x[1], x[2]}; }
+
+/// a, b, c in the unit cube, d in their plane (rounded), times 2^scale.
+std::function<P12(std::mt19937_64&)> coplanar4_start(int scale) {
+  return [scale](std::mt19937_64& rng) {
+    std::uniform_real_distribution<double> U(-1, 1), T(-2, 2);
+    const Vec3 a{U(rng), U(rng), U(rng)}, b{U(rng), U(rng), U(rng)}, c{U(rng), U(rng), U(rng)};
+    const double s = T(rng), t = T(rng);
+    const Vec3 d = a + s * (b - a) + t * (c - a);
+    P12 x{a.x, a.y, a.z, b.x, b.y, b.z, c.x, c.y, c.z, d.x, d.y, d.z};
+    for (double& v : x) v = std::ldexp(v, scale);
+    return x;
+  };
+}
+
+/// Five points on a sphere (rounded), times 2^scale.
+std::function<P15s(std::mt19937_64&)> cospherical_start(int scale) {
+  return [scale](std::mt19937_64& rng) {
+    std::uniform_real_distribution<double> U(-1, 1), R(0.25, 4);
+    std::normal_distribution<double> N(0, 1);
+    const Vec3 c{U(rng), U(rng), U(rng)};
+    const double r = R(rng);
+    P15s x;
+    for (int i = 0; i < 5; ++i) {
+      Vec3 u{N(rng), N(rng), N(rng)};
+      u = (1 / length(u)) * u;
+      const Vec3 p = c + r * u;
+      x[3 * i] = std::ldexp(p.x, scale), x[3 * i + 1] = std::ldexp(p.y, scale), x[3 * i + 2] = std::ldexp(p.z, scale);
+    }
+    return x;
+  };
+}
+
+int orient3d_q(const P12& x) { return test::orient3d_q(p3(&x[0]), p3(&x[3]), p3(&x[6]), p3(&x[9])); }
+int insphere_q(const P15s& x) { return test::insphere_q(p3(&x[0]), p3(&x[3]), p3(&x[6]), p3(&x[9]), p3(&x[12])); }
+
+Probe orient3d_probe(const P12& x) {
+  return {detail::orient3d_filter(p3(&x[0]), p3(&x[3]), p3(&x[6]), p3(&x[9])), orient3d_q(x)};
+}
+Probe insphere_probe(const P15s& x) {
+  return {detail::insphere_filter(p3(&x[0]), p3(&x[3]), p3(&x[6]), p3(&x[9]), p3(&x[12])), insphere_q(x)};
+}
+
+// Both exact stages agree with the rationals on the searched inputs, and
+// the rational oracle's sign convention is the predicates' (positive
+// orientation, inside positive).
+TEST(Filters, Predicates3dSignConvention) {
+  const Vec3 a{0, 0, 0}, b{1, 0, 0}, c{0, 1, 0}, below{0, 0, -1};
+  EXPECT_EQ(orient3d(a, b, c, below), 1) << "d below the counter-clockwise a, b, c";
+  EXPECT_EQ(orient3d(a, b, c, Vec3{0, 0, 1}), -1);
+  const P12 x{0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, -1};
+  EXPECT_EQ(orient3d_q(x), 1);
+  const Vec3 d{0, 0, -1};
+  EXPECT_EQ(insphere(a, b, c, d, Vec3{0.25, 0.25, -0.25}), 1) << "inside the positively oriented tetrahedron's sphere";
+  EXPECT_EQ(insphere(a, b, c, d, Vec3{5, 5, 5}), -1);
+  const P15s y{0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, -1, 0.25, 0.25, -0.25};
+  EXPECT_EQ(insphere_q(y), 1);
+}
+
+// Shewchuk's 3D bounds are worst-case sums that rounding does not reach
+// here (the search gets to a third of o3derrboundA and a sixth of
+// isperrboundA): those figures are held as floors, so that a weaker search
+// is noticed; a bound cut to a quarter (orient3d) or an eighth (insphere)
+// answers wrongly on the input found.
+TEST(Filters, Orient3d) {
+  const auto w = search<12>(coplanar4_start(0), orient3d_probe, trials(), 400);
+  EXPECT_EQ(detail::orient3d_rational(p3(&w.x[0]), p3(&w.x[3]), p3(&w.x[6]), p3(&w.x[9])), w.probe.exact);
+  hold("orient3d", w, false, 0.3);
+}
+
+TEST(Filters, Insphere) {
+  const auto w = search<15>(cospherical_start(0), insphere_probe, trials() / 2, 400);
+  EXPECT_EQ(detail::insphere_rational(p3(&w.x[0]), p3(&w.x[3]), p3(&w.x[6]), p3(&w.x[9]), p3(&w.x[12])),
+            w.probe.exact);
+  hold("insphere", w, false, 0.15);
 }
 
 // ---- the cylinder/triangle query's orientation keys ------------------------
