@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "exact_signs_3d.hpp"
+#include "point_sets_3d.hpp"
 #include "geomcheck/predicates3d.hpp"
 
 namespace geomcheck {
@@ -40,18 +41,6 @@ double ulps(double x, int k) {
   return x;
 }
 
-/// The integer points of the sphere |p|^2 = 325 (a radius with many
-/// representations: 325 = 1 + 324 = 36 + 289 = 100 + 225 = ...), and a
-/// cube's corners (cospherical too).
-std::vector<Vec3> sphere_points() {
-  std::vector<Vec3> out;
-  for (int x = -18; x <= 18; ++x)
-    for (int y = -18; y <= 18; ++y)
-      for (int z = -18; z <= 18; ++z)
-        if (x * x + y * y + z * z == 325) out.push_back({double(x), double(y), double(z)});
-  return out;
-}
-
 /// n points of one kind: "coplanar" (integer points of an integer plane, or
 /// points rounded onto a random plane), "cospherical" (integer points of
 /// one sphere, centred at an integer point, or a cube's corners), or
@@ -60,7 +49,7 @@ std::vector<Vec3> sphere_points() {
 /// size (inRange scales its range by it: a small size drew one kind only).
 rc::Gen<Points> degenerate_points(int n) {
   return rc::gen::resize(rc::kNominalSize, rc::gen::exec([n] {
-    static const std::vector<Vec3> sphere = sphere_points();
+    static const std::vector<Vec3> sphere = geomcheck::test::integer_sphere_points();
     Points pts;
     const int kind = *rc::gen::inRange(0, 5);
     if (kind == 0) {  // an integer plane: z = (u x + v y + w) / s, exactly

@@ -1,0 +1,195 @@
+// The CGAL translation unit of the 3D Delaunay oracles (see the header).
+#include "geomcheck/oracles/delaunay_3d.hpp"
+
+// In fuzz builds the library goes without coverage instrumentation as a
+// whole (oracles/CMakeLists.txt); the sanitizers stay on.
+#include <CGAL/Delaunay_triangulation_3.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Triangulation_vertex_base_with_info_3.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <numeric>
+#include <utility>
+
+namespace geomcheck::oracle {
+
+namespace {
+
+using K = CGAL::Exact_predicates_inexact_constructions_kernel;
+using P3 = K::Point_3;
+using Facet = std::array<std::uint32_t, 3>;
+
+P3 cg(Vec3 p) { return P3(p.x, p.y, p.z); }
+
+std::string pt(const std::vector<Vec3>& pts, std::uint32_t i) {
+  char buf[160];
+  std::snprintf(buf, sizeof buf, "%u (%a, %a, %a)", i, pts[i].x, pts[i].y, pts[i].z);
+  return buf;
+}
+std::string tet_text(const std::vector<Vec3>& pts, std::uint32_t i, const Tetrahedron& t) {
+  return "tetrahedron " + std::to_string(i) + " (" + pt(pts, t[0]) + ", " + pt(pts, t[1]) + ", " + pt(pts, t[2]) +
+         ", " + pt(pts, t[3]) + ")";
+}
+
+// Smallest index of each distinct point, by sorting.
+std::vector<std::uint32_t> representatives(const std::vector<Vec3>& pts) {
+  std::vector<std::uint32_t> idx(pts.size());
+  std::iota(idx.begin(), idx.end(), 0u);
+  auto key = [&](std::uint32_t a) { return std::make_tuple(pts[a].x, pts[a].y, pts[a].z); };
+  std::sort(idx.begin(), idx.end(), [&](std::uint32_t a, std::uint32_t b) {
+    return key(a) != key(b) ? key(a) < key(b) : a < b;
+  });
+  std::vector<std::uint32_t> rep(pts.size());
+  for (std::size_t k = 0; k < idx.size(); ++k)
+    rep[idx[k]] = (k > 0 && key(idx[k]) == key(idx[k - 1])) ? rep[idx[k - 1]] : idx[k];
+  return rep;
+}
+
+// The facets of a positively oriented (a, b, c, d), each oriented outwards
+// (the opposite vertex on its negative side): opposite a, b, c, d in turn.
+constexpr int kOutward[4][3] = {{1, 2, 3}, {0, 3, 2}, {0, 1, 3}, {0, 2, 1}};
+
+// A facet occurrence: its vertices rotated to start at the smallest (the
+// orientation kept), the tetrahedron and the corner opposite.
+struct Occurrence {
+  Facet f;
+  std::uint32_t t;
+  int k;
+};
+Facet rotated(Facet f) {
+  const int m = f[0] < f[1] ? (f[0] < f[2] ? 0 : 2) : (f[1] < f[2] ? 1 : 2);
+  return {f[m], f[(m + 1) % 3], f[(m + 2) % 3]};
+}
+// The same triangle whatever the orientation: smallest first, then the
+// smaller of the other two.
+Facet unoriented(Facet f) {
+  f = rotated(f);
+  if (f[1] > f[2]) std::swap(f[1], f[2]);
+  return f;
+}
+
+}  // namespace
+
+Tetrahedron canonical_tetrahedron(Tetrahedron t) {
+  // Even permutations only: a cyclic shift of four is odd, so move the
+  // smallest to the front by a double swap.
+  const int m = static_cast<int>(std::min_element(t.begin(), t.end()) - t.begin());
+  if (m != 0) {
+    std::swap(t[0], t[m]);
+    // one more transposition among the other three keeps the parity even
+    const int a = m == 1 ? 2 : 1, b = m == 3 ? 2 : 3;
+    std::swap(t[a], t[b]);
+  }
+  // Rotate the last three (an even permutation) to put their smallest second.
+  for (int r = 0; r < 2 && !(t[1] <= t[2] && t[1] <= t[3]); ++r) {
+    const std::uint32_t x = t[1];
+    t[1] = t[2], t[2] = t[3], t[3] = x;
+  }
+  return t;
+}
+
+std::string check_delaunay_3d(const std::vector<Vec3>& pts, const std::vector<Tetrahedron>& tets) {
+  const std::size_t n = pts.size();
+  const std::vector<std::uint32_t> rep = representatives(pts);
+  std::vector<std::uint32_t> distinct;
+  for (std::uint32_t i = 0; i < n; ++i)
+    if (rep[i] == i) distinct.push_back(i);
+  // The dimension: four non-coplanar distinct points or not.
+  bool solid = false;
+  if (distinct.size() >= 4) {
+    std::size_t b = 1, c = 0;
+    while (b < distinct.size() && pts[distinct[b]] == pts[distinct[0]]) ++b;
+    for (std::size_t k = b + 1; k < distinct.size() && !c; ++k)
+      if (!CGAL::collinear(cg(pts[distinct[0]]), cg(pts[distinct[b]]), cg(pts[distinct[k]]))) c = k;
+    for (std::size_t k = c + 1; c && k < distinct.size() && !solid; ++k)
+      solid = CGAL::orientation(cg(pts[distinct[0]]), cg(pts[distinct[b]]), cg(pts[distinct[c]]),
+                                cg(pts[distinct[k]])) != CGAL::COPLANAR;
+  }
+  if (!solid) {
+    if (!tets.empty())
+      return std::to_string(tets.size()) + " tetrahedra for " + std::to_string(distinct.size()) +
+             " distinct points that span no volume";
+    return "";
+  }
+  if (tets.empty()) return "no tetrahedron for points that span a volume";
+
+  std::vector<Occurrence> occ;
+  occ.reserve(4 * tets.size());
+  std::vector<char> used(n, 0);
+  for (std::uint32_t i = 0; i < tets.size(); ++i) {
+    const Tetrahedron& t = tets[i];
+    for (int k = 0; k < 4; ++k) {
+      if (t[k] >= n || rep[t[k]] != t[k])
+        return "tetrahedron " + std::to_string(i) + " names " + std::to_string(t[k]) + ", not a vertex";
+      used[t[k]] = 1;
+    }
+    if (CGAL::orientation(cg(pts[t[0]]), cg(pts[t[1]]), cg(pts[t[2]]), cg(pts[t[3]])) != CGAL::POSITIVE)
+      return tet_text(pts, i, t) + " is not positively oriented (or is flat)";
+    for (int k = 0; k < 4; ++k)
+      occ.push_back({rotated({t[kOutward[k][0]], t[kOutward[k][1]], t[kOutward[k][2]]}), i, k});
+  }
+  std::sort(occ.begin(), occ.end(), [](const Occurrence& x, const Occurrence& y) {
+    const Facet a = unoriented(x.f), b = unoriented(y.f);
+    return a != b ? a < b : x.t < y.t;
+  });
+  for (std::size_t j = 0; j < occ.size();) {
+    std::size_t e = j + 1;
+    while (e < occ.size() && unoriented(occ[e].f) == unoriented(occ[j].f)) ++e;
+    const Occurrence& x = occ[j];
+    const Tetrahedron& tx = tets[x.t];
+    if (e - j > 2)
+      return "facet (" + std::to_string(x.f[0]) + ", " + std::to_string(x.f[1]) + ", " + std::to_string(x.f[2]) +
+             ") lies in " + std::to_string(e - j) + " tetrahedra";
+    if (e - j == 2) {
+      const Occurrence& y = occ[j + 1];
+      if (x.f == y.f)
+        return "tetrahedra " + std::to_string(x.t) + " and " + std::to_string(y.t) +
+               " lie on the same side of their common facet (they overlap)";
+      // Locally Delaunay, both ways round (exact; on the sphere allowed).
+      const Tetrahedron& ty = tets[y.t];
+      const std::uint32_t vy = ty[y.k], vx = tx[x.k];
+      if (CGAL::side_of_oriented_sphere(cg(pts[tx[0]]), cg(pts[tx[1]]), cg(pts[tx[2]]), cg(pts[tx[3]]),
+                                        cg(pts[vy])) == CGAL::ON_POSITIVE_SIDE)
+        return "not locally Delaunay: " + pt(pts, vy) + " lies strictly inside the circumsphere of " +
+               tet_text(pts, x.t, tx);
+      if (CGAL::side_of_oriented_sphere(cg(pts[ty[0]]), cg(pts[ty[1]]), cg(pts[ty[2]]), cg(pts[ty[3]]),
+                                        cg(pts[vx])) == CGAL::ON_POSITIVE_SIDE)
+        return "not locally Delaunay: " + pt(pts, vx) + " lies strictly inside the circumsphere of " +
+               tet_text(pts, y.t, ty);
+    } else {
+      // A boundary facet: no distinct point strictly outside its plane.
+      const P3 a = cg(pts[x.f[0]]), b = cg(pts[x.f[1]]), c = cg(pts[x.f[2]]);
+      for (std::uint32_t p : distinct)
+        if (CGAL::orientation(a, b, c, cg(pts[p])) == CGAL::POSITIVE)
+          return "boundary facet (" + std::to_string(x.f[0]) + ", " + std::to_string(x.f[1]) + ", " +
+                 std::to_string(x.f[2]) + ") of tetrahedron " + std::to_string(x.t) + " is not on the hull: " +
+                 pt(pts, p) + " lies outside it";
+    }
+    j = e;
+  }
+  for (std::uint32_t p : distinct)
+    if (!used[p]) return "point " + pt(pts, p) + " is no vertex";
+  return "";
+}
+
+std::vector<Tetrahedron> cgal_delaunay_3d(const std::vector<Vec3>& pts) {
+  using Vb = CGAL::Triangulation_vertex_base_with_info_3<std::uint32_t, K>;
+  using Tds = CGAL::Triangulation_data_structure_3<Vb, CGAL::Delaunay_triangulation_cell_base_3<K>>;
+  using DT = CGAL::Delaunay_triangulation_3<K, Tds>;
+  const std::vector<std::uint32_t> rep = representatives(pts);
+  std::vector<std::pair<P3, std::uint32_t>> in;
+  in.reserve(pts.size());
+  for (std::uint32_t i = 0; i < pts.size(); ++i)
+    if (rep[i] == i) in.emplace_back(cg(pts[i]), i);
+  DT dt(in.begin(), in.end());
+  std::vector<Tetrahedron> out;
+  if (dt.dimension() < 3) return out;
+  for (auto c = dt.finite_cells_begin(); c != dt.finite_cells_end(); ++c)
+    out.push_back(canonical_tetrahedron(
+        {c->vertex(0)->info(), c->vertex(1)->info(), c->vertex(2)->info(), c->vertex(3)->info()}));
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+}  // namespace geomcheck::oracle
