@@ -5,6 +5,7 @@
 // whole (oracles/CMakeLists.txt); the sanitizers stay on.
 #include <CGAL/Delaunay_triangulation_3.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Mpzf.h>
 #include <CGAL/Triangulation_vertex_base_with_info_3.h>
 
 #include <algorithm>
@@ -190,6 +191,86 @@ std::vector<Tetrahedron> cgal_delaunay_3d(const std::vector<Vec3>& pts) {
         {c->vertex(0)->info(), c->vertex(1)->info(), c->vertex(2)->info(), c->vertex(3)->info()}));
   std::sort(out.begin(), out.end());
   return out;
+}
+
+namespace {
+// Six times the signed volume of (a, b, c, d), exactly.
+CGAL::Mpzf six_volume(Vec3 a, Vec3 b, Vec3 c, Vec3 d) {
+  const CGAL::Mpzf ax(a.x), ay(a.y), az(a.z);
+  const CGAL::Mpzf ux = CGAL::Mpzf(b.x) - ax, uy = CGAL::Mpzf(b.y) - ay, uz = CGAL::Mpzf(b.z) - az;
+  const CGAL::Mpzf vx = CGAL::Mpzf(c.x) - ax, vy = CGAL::Mpzf(c.y) - ay, vz = CGAL::Mpzf(c.z) - az;
+  const CGAL::Mpzf wx = CGAL::Mpzf(d.x) - ax, wy = CGAL::Mpzf(d.y) - ay, wz = CGAL::Mpzf(d.z) - az;
+  return ux * (vy * wz - vz * wy) - uy * (vx * wz - vz * wx) + uz * (vx * wy - vy * wx);
+}
+
+// The dimension of the distinct points' affine hull, exactly.
+ConvexHull3::Dimension dimension_of(const std::vector<Vec3>& pts, const std::vector<std::uint32_t>& distinct) {
+  using D = ConvexHull3::Dimension;
+  if (distinct.empty()) return D::empty;
+  if (distinct.size() == 1) return D::point;
+  const P3 a = cg(pts[distinct[0]]), b = cg(pts[distinct[1]]);
+  std::size_t c = 0;
+  for (std::size_t k = 2; k < distinct.size() && !c; ++k)
+    if (!CGAL::collinear(a, b, cg(pts[distinct[k]]))) c = k;
+  if (!c) return D::line;
+  for (std::size_t k = c + 1; k < distinct.size(); ++k)
+    if (CGAL::orientation(a, b, cg(pts[distinct[c]]), cg(pts[distinct[k]])) != CGAL::COPLANAR) return D::solid;
+  return D::plane;
+}
+}  // namespace
+
+std::string check_convex_hull_3d(const std::vector<Vec3>& pts, const ConvexHull3& hull) {
+  using D = ConvexHull3::Dimension;
+  for (const Vec3& v : pts)
+    if (!(std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z)))
+      return hull.dimension == D::invalid && hull.facets.empty() ? "" : "non-finite input not answered as invalid";
+  const std::size_t n = pts.size();
+  const std::vector<std::uint32_t> rep = representatives(pts);
+  std::vector<std::uint32_t> distinct;
+  for (std::uint32_t i = 0; i < n; ++i)
+    if (rep[i] == i) distinct.push_back(i);
+  const D dim = dimension_of(pts, distinct);
+  if (hull.dimension != dim) return std::string("dimension ") + to_string(hull.dimension) + ", the input is " + to_string(dim);
+  if (dim != D::solid) return hull.facets.empty() ? "" : std::to_string(hull.facets.size()) + " facets for a flat hull";
+  if (hull.facets.size() < 4) return std::to_string(hull.facets.size()) + " facets cannot close a solid";
+  // Facets: representative, distinct, not collinear; directed edges.
+  std::vector<std::array<std::uint32_t, 3>> edges;  // (from, to, facet)
+  for (std::uint32_t i = 0; i < hull.facets.size(); ++i) {
+    const Facet& f = hull.facets[i];
+    for (int k = 0; k < 3; ++k)
+      if (f[k] >= n || rep[f[k]] != f[k])
+        return "facet " + std::to_string(i) + " names " + std::to_string(f[k]) + ", not a distinct point's index";
+    if (CGAL::collinear(cg(pts[f[0]]), cg(pts[f[1]]), cg(pts[f[2]])))
+      return "facet " + std::to_string(i) + " (" + pt(pts, f[0]) + ", " + pt(pts, f[1]) + ", " + pt(pts, f[2]) +
+             ") is degenerate";
+    for (int k = 0; k < 3; ++k) edges.push_back({f[k], f[(k + 1) % 3], i});
+  }
+  std::sort(edges.begin(), edges.end());
+  for (std::size_t j = 0; j < edges.size(); ++j) {
+    if (j + 1 < edges.size() && edges[j][0] == edges[j + 1][0] && edges[j][1] == edges[j + 1][1])
+      return "edge (" + std::to_string(edges[j][0]) + ", " + std::to_string(edges[j][1]) + ") is in facets " +
+             std::to_string(edges[j][2]) + " and " + std::to_string(edges[j + 1][2]) + " in the same direction";
+    const std::array<std::uint32_t, 3> rev{edges[j][1], edges[j][0], 0};
+    const auto it = std::lower_bound(edges.begin(), edges.end(), rev);
+    if (it == edges.end() || (*it)[0] != rev[0] || (*it)[1] != rev[1])
+      return "edge (" + std::to_string(edges[j][0]) + ", " + std::to_string(edges[j][1]) + ") of facet " +
+             std::to_string(edges[j][2]) + " has no facet on its other side";
+  }
+  // Every facet on the hull.
+  for (std::uint32_t i = 0; i < hull.facets.size(); ++i) {
+    const Facet& f = hull.facets[i];
+    const P3 a = cg(pts[f[0]]), b = cg(pts[f[1]]), c = cg(pts[f[2]]);
+    for (std::uint32_t q : distinct)
+      if (CGAL::orientation(a, b, c, cg(pts[q])) == CGAL::POSITIVE)
+        return "facet " + std::to_string(i) + " is not on the hull: " + pt(pts, q) + " lies outside its plane";
+  }
+  // Enclosed volume (from the first point) against the hull's.
+  CGAL::Mpzf enclosed = 0, volume = 0;
+  const Vec3 o = pts[distinct[0]];
+  for (const Facet& f : hull.facets) enclosed += six_volume(o, pts[f[0]], pts[f[1]], pts[f[2]]);
+  for (const Tetrahedron& t : cgal_delaunay_3d(pts)) volume += six_volume(pts[t[0]], pts[t[1]], pts[t[2]], pts[t[3]]);
+  if (enclosed != volume) return "the facets enclose another volume than the hull's (a part missing or wrapped twice)";
+  return "";
 }
 
 }  // namespace geomcheck::oracle

@@ -1,5 +1,5 @@
-// geomcheck — oracles for a 3D Delaunay tetrahedralization: an exact
-// validity checker and CGAL's Delaunay_triangulation_3, both on CGAL's
+// geomcheck — oracles for a 3D Delaunay tetrahedralization and a convex
+// hull: exact validity checkers and CGAL's Delaunay_triangulation_3, both on CGAL's
 // exact predicates (Epick: interval filter, exact fallback), independent of
 // production's (predicates3d.hpp).
 //
@@ -37,6 +37,7 @@
 #include <string>
 #include <vector>
 
+#include "geomcheck/convex_hull_3d.hpp"
 #include "geomcheck/vec3.hpp"
 
 namespace geomcheck::oracle {
@@ -59,5 +60,17 @@ std::vector<Tetrahedron> cgal_delaunay_3d(const std::vector<Vec3>& points);
 /// kept), and the other three rotated so that the second is the smallest of
 /// them.
 Tetrahedron canonical_tetrahedron(Tetrahedron t);
+
+/// "" when `hull` is the convex hull of `points` by the semantics of
+/// convex_hull_3d.hpp, else the first violation found: the dimension is the
+/// distinct points' (exact orientation tests); for a solid, every facet
+/// names representative, distinct, non-collinear points; every directed edge
+/// is in one facet and its reverse in one other (a closed, consistently
+/// oriented surface); no distinct point lies strictly outside a facet's
+/// plane (each facet is on the hull); and the volume the facets enclose
+/// equals the sum of the volumes of CGAL's Delaunay tetrahedra (exact
+/// sums), so the surface wraps the hull once. Cost: O(facets * points)
+/// orientation tests.
+std::string check_convex_hull_3d(const std::vector<Vec3>& points, const ConvexHull3& hull);
 
 }  // namespace geomcheck::oracle

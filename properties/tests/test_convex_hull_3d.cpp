@@ -1,0 +1,134 @@
+// geomcheck — convex_hull_3d (core/convex_hull_3d.hpp) held to the exact
+// checker (oracles/delaunay_3d.hpp: closed and outward, every facet on the
+// hull, the hull's volume) on point sets built to defeat floating point:
+// integer grids and the surfaces of boxes (many coplanar points), integer
+// points of one sphere (cospherical), points rounded onto a plane (flat
+// input), random clouds, duplicates, a few ulps of jitter, one power-of-two
+// scale from 2^-1000 to 2^1000 or a scale per coordinate axis; metamorphic:
+// scaling every point by a power of two keeps the facets.
+#include <gtest/gtest.h>
+#include <rapidcheck/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <ostream>
+#include <vector>
+
+#include "geomcheck/convex_hull_3d.hpp"
+#include "geomcheck/oracles/delaunay_3d.hpp"
+
+namespace geomcheck {
+inline void showValue(const Vec3& p, std::ostream& os) {
+  char buf[128];
+  std::snprintf(buf, sizeof buf, "(%a, %a, %a)", p.x, p.y, p.z);
+  os << buf;
+}
+}  // namespace geomcheck
+
+namespace {
+
+using geomcheck::Vec3;
+
+double ulps(double x, int k) {
+  for (; k > 0; --k) x = std::nextafter(x, INFINITY);
+  for (; k < 0; ++k) x = std::nextafter(x, -INFINITY);
+  return x;
+}
+
+rc::Gen<std::vector<Vec3>> hull_points() {
+  return rc::gen::resize(rc::kNominalSize, rc::gen::exec([] {
+    std::vector<Vec3> pts;
+    const int n = *rc::gen::inRange(1, 80);
+    const int kind = *rc::gen::inRange(0, 6);
+    for (int i = 0; i < n; ++i) {
+      Vec3 v;
+      if (kind == 0) {  // an integer grid
+        v = {double(*rc::gen::inRange(0, 4)), double(*rc::gen::inRange(0, 4)), double(*rc::gen::inRange(0, 4))};
+      } else if (kind == 1) {  // the surface of a box: a coordinate at its end
+        v = {double(*rc::gen::inRange(-5, 6)), double(*rc::gen::inRange(-3, 4)), double(*rc::gen::inRange(-2, 3))};
+        const int axis = *rc::gen::inRange(0, 3);
+        const double end = *rc::gen::inRange(0, 2) ? 1 : -1;
+        (axis == 0 ? v.x : axis == 1 ? v.y : v.z) = end * (axis == 0 ? 5 : axis == 1 ? 3 : 2);
+      } else if (kind == 2) {  // integer points of |p|^2 = 50 (cospherical)
+        static const Vec3 s[] = {{3, 4, 5}, {-3, 4, 5}, {3, -4, 5}, {3, 4, -5}, {5, 3, 4}, {-5, 3, 4}, {4, 5, -3},
+                                 {0, 1, 7}, {0, -1, 7}, {1, 0, -7}, {7, 0, 1}, {-7, 1, 0}, {0, 7, -1}, {5, 5, 0},
+                                 {-5, 5, 0}, {0, -5, -5}, {4, -3, -5}, {-4, -5, 3}};
+        v = s[*rc::gen::inRange(0, 18)];
+      } else if (kind == 3) {  // rounded onto the plane x + 2y + 3z = 1/3
+        const double x = *rc::gen::inRange(-1000, 1001) / 997.0, y = *rc::gen::inRange(-1000, 1001) / 991.0;
+        v = {x, y, (1.0 / 3 - x - 2 * y) / 3};
+      } else if (kind == 4 && i > 0 && *rc::gen::inRange(0, 3) == 0) {  // a duplicate
+        v = pts[*rc::gen::inRange<std::size_t>(0, pts.size())];
+      } else {
+        v = {*rc::gen::inRange(-100000, 100001) / 1e4, *rc::gen::inRange(-100000, 100001) / 1e4,
+             *rc::gen::inRange(-100000, 100001) / 1e4};
+      }
+      if (*rc::gen::inRange(0, 8) == 0)
+        v = {ulps(v.x, *rc::gen::inRange(-2, 3)), ulps(v.y, *rc::gen::inRange(-2, 3)), ulps(v.z, *rc::gen::inRange(-2, 3))};
+      pts.push_back(v);
+    }
+    const int mode = *rc::gen::inRange(0, 4);
+    const int k = *rc::gen::element(0, -1000, 1000, -500, 500, 37);
+    for (Vec3& v : pts) {
+      if (mode == 0) v = {std::ldexp(v.x, k), std::ldexp(v.y, k), std::ldexp(v.z, k)};
+      if (mode == 1) v = {std::ldexp(v.x, -520), std::ldexp(v.y, 480), v.z};
+    }
+    return pts;
+  }));
+}
+
+}  // namespace
+
+namespace geomcheck {
+
+RC_GTEST_PROP(ConvexHull3d, ExactHull, ()) {
+  const std::vector<Vec3> p = *hull_points();
+  const ConvexHull3 h = convex_hull_3d(p);
+  const std::string why = oracle::check_convex_hull_3d(p, h);
+  RC_CLASSIFY(h.dimension == ConvexHull3::Dimension::solid, "solid");
+  RC_ASSERT(why == "");
+}
+
+RC_GTEST_PROP(ConvexHull3d, PowerOfTwoScaleKeepsFacets, ()) {
+  const std::vector<Vec3> p = *hull_points();
+  const int k = *rc::gen::element(-7, 3, 64);
+  std::vector<Vec3> q = p;
+  for (Vec3& v : q) {
+    v = {std::ldexp(v.x, k), std::ldexp(v.y, k), std::ldexp(v.z, k)};
+    for (double c : {v.x, v.y, v.z}) RC_PRE(std::isfinite(c) && (c == 0 || std::fabs(c) >= 0x1p-1000));
+  }
+  for (const Vec3& v : p)
+    for (double c : {v.x, v.y, v.z}) RC_PRE(c == 0 || std::fabs(c) >= 0x1p-1000);
+  const ConvexHull3 a = convex_hull_3d(p), b = convex_hull_3d(q);
+  RC_ASSERT(a.dimension == b.dimension);
+  RC_ASSERT(a.facets == b.facets);
+}
+
+TEST(ConvexHull3d, KnownAnswers) {
+  EXPECT_EQ(convex_hull_3d({}).dimension, ConvexHull3::Dimension::empty);
+  EXPECT_EQ(convex_hull_3d({{1, 2, 3}, {1, 2, 3}}).dimension, ConvexHull3::Dimension::point);
+  EXPECT_EQ(convex_hull_3d({{0, 0, 0}, {1, 1, 1}, {2, 2, 2}}).dimension, ConvexHull3::Dimension::line);
+  EXPECT_EQ(convex_hull_3d({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 1, 0}}).dimension, ConvexHull3::Dimension::plane);
+  EXPECT_EQ(convex_hull_3d({{0, 0, 0}, {1, 0, NAN}, {0, 1, 0}, {0, 0, 1}}).dimension, ConvexHull3::Dimension::invalid);
+  // A cube with its centre and face centres: 8 corners, 12 triangles at
+  // least (face centres may split faces), the centre never a vertex.
+  std::vector<Vec3> cube;
+  for (int i = 0; i < 8; ++i) cube.push_back({double(i & 1), double((i >> 1) & 1), double((i >> 2) & 1)});
+  cube.push_back({0.5, 0.5, 0.5});
+  cube.push_back({0.5, 0.5, 0});
+  cube.push_back({0.5, 0.5, 1});
+  const ConvexHull3 h = convex_hull_3d(cube);
+  EXPECT_EQ(oracle::check_convex_hull_3d(cube, h), "");
+  EXPECT_GE(h.facets.size(), 12u);
+  for (const auto& f : h.facets)
+    for (std::uint32_t v : f) EXPECT_NE(v, 8u) << "the centre is inside";
+  // A facet turned inside out, or dropped, is caught by the checker.
+  ConvexHull3 bad = h;
+  std::swap(bad.facets[0][1], bad.facets[0][2]);
+  EXPECT_NE(oracle::check_convex_hull_3d(cube, bad), "");
+  bad = h;
+  bad.facets.pop_back();
+  EXPECT_NE(oracle::check_convex_hull_3d(cube, bad), "");
+}
+
+}  // namespace geomcheck
