@@ -4,6 +4,7 @@
 #include <cmath>
 #include <numeric>
 #include <tuple>
+#include <utility>
 
 #include "geomcheck/predicates3d.hpp"
 
@@ -17,17 +18,28 @@ struct Facet {
   std::array<std::uint32_t, 3> v;  // outward
   std::array<std::uint32_t, 3> n;  // the neighbour across edge (v[k], v[k+1])
   std::vector<std::uint32_t> conflicts;  // points strictly beyond its plane, assigned here
+  std::uint32_t far = kNone;             // the conflict farthest from the plane (by the filter's value)
+  double far_value = 0;
   bool alive = true;
 };
 
 class Hull {
  public:
-  explicit Hull(const std::vector<Vec3>& p) : p_(p) {}
+  /// `unit`: the points scaled by one power of two, the largest coordinate
+  /// into [1, 2) (for the farthest-point heuristic only: the same numbers
+  /// for every power-of-two scaling of the input, so the same order).
+  Hull(const std::vector<Vec3>& p, const std::vector<Vec3>& unit) : p_(p), unit_(unit) {}
 
-  /// q strictly beyond the plane of f (on its outer side).
+  /// q strictly beyond the plane of f (on its outer side), exactly.
   bool sees(std::uint32_t f, std::uint32_t q) const {
     const auto& v = facets_[f].v;
     return orient3d(p_[v[0]], p_[v[1]], p_[v[2]], p_[q]) < 0;
+  }
+  /// How far beyond f's plane q lies, roughly (a heuristic).
+  double how_far(std::uint32_t f, std::uint32_t q) const {
+    const auto& v = facets_[f].v;
+    const double x = -detail::orient3d_filter(unit_[v[0]], unit_[v[1]], unit_[v[2]], unit_[q]).value;
+    return x == x ? x : 0;
   }
 
   /// The tetrahedron a, b, c, d (not coplanar) as four outward facets.
@@ -52,7 +64,10 @@ class Hull {
   void assign(std::uint32_t q, const std::vector<std::uint32_t>& candidates) {
     for (std::uint32_t f : candidates)
       if (sees(f, q)) {
-        facets_[f].conflicts.push_back(q);
+        Facet& g = facets_[f];
+        g.conflicts.push_back(q);
+        const double far = how_far(f, q);
+        if (g.far == kNone || far > g.far_value) g.far = q, g.far_value = far;
         return;
       }
   }
@@ -105,11 +120,15 @@ class Hull {
 
  private:
   std::uint32_t add(std::array<std::uint32_t, 3> v) {
-    facets_.push_back({v, {kNone, kNone, kNone}, {}, true});
+    Facet f;
+    f.v = v;
+    f.n = {kNone, kNone, kNone};
+    facets_.push_back(std::move(f));
     return static_cast<std::uint32_t>(facets_.size() - 1);
   }
 
   const std::vector<Vec3>& p_;
+  const std::vector<Vec3>& unit_;
   std::vector<Facet> facets_;
   std::vector<std::uint32_t> visible_, created_;
 
@@ -175,7 +194,18 @@ ConvexHull3 convex_hull_3d(const std::vector<Vec3>& p) {
   const std::uint32_t d = distinct[id];
   out.dimension = D::solid;
 
-  Hull h(p);
+  double m = 0;
+  for (const Vec3& v : p) m = std::max(m, max_abs(v));
+  std::vector<Vec3> unit(p);
+  const int e = std::ilogb(m);  // m > 0: four independent points
+  bool exact = true;  // no coordinate scaled into the subnormals: every sign is the input's
+  for (Vec3& v : unit) {
+    for (double c : {v.x, v.y, v.z}) exact = exact && (c == 0 || std::ilogb(c) - e >= -1022);
+    v = {std::ldexp(v.x, -e), std::ldexp(v.y, -e), std::ldexp(v.z, -e)};
+  }
+  // Where the scaling is exact the decisions use the scaled points too: a
+  // set far from 1 in scale then never leaves orient3d's inline filter.
+  Hull h(exact ? unit : p, unit);
   h.by_start.assign(n, kNone);
   h.start(a, b, c, d);
   // The rest in a fixed pseudo-random order (expected O(n log n) whatever
@@ -190,12 +220,10 @@ ConvexHull3 convex_hull_3d(const std::vector<Vec3>& p) {
   }
   const std::vector<std::uint32_t> first{0, 1, 2, 3};
   for (std::uint32_t q : rest) h.assign(q, first);
-  // Each facet with conflicts, in creation order: its first point goes in.
+  // Each facet with conflicts, in creation order: its farthest point goes
+  // in (as Quickhull chooses: the points it swallows leave early).
   for (std::uint32_t f = 0; f < h.facets().size(); ++f) {
-    while (h.facets()[f].alive && !h.facets()[f].conflicts.empty()) {
-      const std::uint32_t q = h.facets()[f].conflicts.front();
-      h.insert(q, f);
-    }
+    if (h.facets()[f].alive && !h.facets()[f].conflicts.empty()) h.insert(h.facets()[f].far, f);
   }
   for (const auto& f : h.facets())
     if (f.alive) out.facets.push_back(f.v);

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "exact_integers.hpp"
+#include "exact_steps.hpp"
 
 namespace geomcheck {
 
@@ -17,16 +18,15 @@ namespace {
 using detail::exact_integers::Int;
 using detail::exact_integers::Scaled;
 using detail::exact_integers::sign_of;
+using detail::exact_steps::exact_add;
+using detail::exact_steps::exact_diff;
+using detail::exact_steps::exact_prod;
+using detail::exact_steps::two_sum;
 
 // ---- expansion arithmetic (Shewchuk 1997): components nonoverlapping, in
 // increasing magnitude, zeros eliminated; the value is their exact sum.
 using Expansion = std::vector<double>;
 
-inline void two_sum(double a, double b, double& x, double& y) {
-  x = a + b;
-  const double bv = x - a, av = x - bv;
-  y = (a - av) + (b - bv);
-}
 inline void fast_two_sum(double a, double b, double& x, double& y) {  // |a| >= |b|
   x = a + b;
   y = b - (x - a);
@@ -238,22 +238,6 @@ bool incircle_small_grid(Vec2 a, Vec2 b, Vec2 c, Vec2 d, int& sign) {
 // to be error-free (a zero fma residual or two_sum tail) and normal, so the
 // computed determinant is the exact one. Catches small integer grids and
 // their power-of-two scalings (the common degenerate input) at little cost.
-inline bool exact_diff(double a, double b, double& d) {
-  double err;
-  two_sum(a, -b, d, err);
-  return err == 0 && std::isfinite(d);
-}
-inline bool exact_prod(double a, double b, double& p) {
-  p = a * b;
-  // Zero only from a zero factor; otherwise the residual must vanish and p
-  // be large enough that a non-zero residual would have been representable.
-  return p == 0 ? (a == 0 || b == 0) : (std::fma(a, b, -p) == 0 && std::fabs(p) >= 0x1p-960);
-}
-inline bool exact_add(double a, double b, double& s) {
-  double err;
-  two_sum(a, b, s, err);
-  return err == 0 && std::isfinite(s);
-}
 bool orient2d_in_doubles(Vec2 a, Vec2 b, Vec2 c, int& sign) {
   double acx, acy, bcx, bcy, l, r, det;
   if (!exact_diff(a.x, c.x, acx) || !exact_diff(a.y, c.y, acy) || !exact_diff(b.x, c.x, bcx) ||

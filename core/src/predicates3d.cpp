@@ -1,12 +1,114 @@
 #include "geomcheck/predicates3d.hpp"
 
+#include <cmath>
+
 #include "exact_integers.hpp"
+#include "exact_steps.hpp"
 
 namespace geomcheck::detail {
 
 using exact_integers::Int;
 using exact_integers::Scaled;
 using exact_integers::sign_of;
+
+namespace {
+
+// ---- stage 2: the filter on the points scaled by one power of two (their
+// largest magnitude into [1, 2)), where that is exact (no non-zero
+// coordinate leaves the normal range): a set far from 1 in scale, whose
+// products overflow or underflow, answers as fast as one near 1.
+template <std::size_t N>
+bool common_scale(Vec3 (&p)[N]) {
+  double m = 0;
+  for (const Vec3& v : p) m = std::max(m, max_abs(v));
+  if (!(m > 0) || !std::isfinite(m)) return false;
+  const int e = std::ilogb(m);
+  for (const Vec3& v : p)
+    for (double c : {v.x, v.y, v.z})
+      if (c != 0 && std::ilogb(c) - e < -1022) return false;
+  for (Vec3& v : p) v = {std::ldexp(v.x, -e), std::ldexp(v.y, -e), std::ldexp(v.z, -e)};
+  return true;
+}
+int decided(const FilterValue& f) {
+  return f.usable && (f.value > f.bound || -f.value > f.bound) ? (f.value > 0 ? 1 : -1) : 2;
+}
+
+// ---- stage 3: the determinant in doubles, every step checked error-free
+// (exact_steps.hpp): integer grids and other small exact coordinates, the
+// common degenerate input, without big integers.
+struct Steps {
+  bool ok = true;
+  double diff(double a, double b) {
+    double d = 0;
+    ok = ok && exact_steps::exact_diff(a, b, d);
+    return d;
+  }
+  double prod(double a, double b) {
+    double p = 0;
+    ok = ok && exact_steps::exact_prod(a, b, p);
+    return p;
+  }
+  double add(double a, double b) {
+    double s = 0;
+    ok = ok && exact_steps::exact_add(a, b, s);
+    return s;
+  }
+  double minor(double a, double b, double c, double d) { return add(prod(a, b), -prod(c, d)); }  // ab - cd
+};
+int sign_if(const Steps& st, double det) { return !st.ok ? 2 : (det > 0 ? 1 : (det < 0 ? -1 : 0)); }
+
+int orient3d_in_doubles(Vec3 a, Vec3 b, Vec3 c, Vec3 d) {
+  Steps st;
+  const double adx = st.diff(a.x, d.x), ady = st.diff(a.y, d.y), adz = st.diff(a.z, d.z);
+  const double bdx = st.diff(b.x, d.x), bdy = st.diff(b.y, d.y), bdz = st.diff(b.z, d.z);
+  const double cdx = st.diff(c.x, d.x), cdy = st.diff(c.y, d.y), cdz = st.diff(c.z, d.z);
+  if (!st.ok) return 2;
+  const double t1 = st.prod(adz, st.minor(bdx, cdy, cdx, bdy));
+  const double t2 = st.prod(bdz, st.minor(cdx, ady, adx, cdy));
+  const double t3 = st.prod(cdz, st.minor(adx, bdy, bdx, ady));
+  return sign_if(st, st.add(st.add(t1, t2), t3));
+}
+
+int insphere_in_doubles(Vec3 a, Vec3 b, Vec3 c, Vec3 d, Vec3 e) {
+  Steps st;
+  const double aex = st.diff(a.x, e.x), aey = st.diff(a.y, e.y), aez = st.diff(a.z, e.z);
+  const double bex = st.diff(b.x, e.x), bey = st.diff(b.y, e.y), bez = st.diff(b.z, e.z);
+  const double cex = st.diff(c.x, e.x), cey = st.diff(c.y, e.y), cez = st.diff(c.z, e.z);
+  const double dex = st.diff(d.x, e.x), dey = st.diff(d.y, e.y), dez = st.diff(d.z, e.z);
+  if (!st.ok) return 2;
+  const double ab = st.minor(aex, bey, bex, aey), bc = st.minor(bex, cey, cex, bey), cd = st.minor(cex, dey, dex, cey);
+  const double da = st.minor(dex, aey, aex, dey), ac = st.minor(aex, cey, cex, aey), bd = st.minor(bex, dey, dex, bey);
+  const double abc = st.add(st.add(st.prod(aez, bc), -st.prod(bez, ac)), st.prod(cez, ab));
+  const double bcd = st.add(st.add(st.prod(bez, cd), -st.prod(cez, bd)), st.prod(dez, bc));
+  const double cda = st.add(st.add(st.prod(cez, da), st.prod(dez, ac)), st.prod(aez, cd));
+  const double dab = st.add(st.add(st.prod(dez, ab), st.prod(aez, bd)), st.prod(bez, da));
+  auto lift = [&](double x, double y, double z) { return st.add(st.add(st.prod(x, x), st.prod(y, y)), st.prod(z, z)); };
+  const double al = lift(aex, aey, aez), bl = lift(bex, bey, bez), cl = lift(cex, cey, cez), dl = lift(dex, dey, dez);
+  const double det = st.add(st.add(st.prod(dl, abc), -st.prod(cl, dab)), st.add(st.prod(bl, cda), -st.prod(al, bcd)));
+  return sign_if(st, det);
+}
+
+}  // namespace
+
+int orient3d_exact(Vec3 a, Vec3 b, Vec3 c, Vec3 d) {
+  Vec3 p[4] = {a, b, c, d};
+  if (common_scale(p)) {
+    const int s = decided(orient3d_filter(p[0], p[1], p[2], p[3]));
+    if (s != 2) return s;
+  }
+  const int s = orient3d_in_doubles(a, b, c, d);
+  return s != 2 ? s : orient3d_rational(a, b, c, d);
+}
+
+int insphere_exact(Vec3 a, Vec3 b, Vec3 c, Vec3 d, Vec3 e) {
+  Vec3 p[5] = {a, b, c, d, e};
+  if (common_scale(p)) {
+    const int s = decided(insphere_filter(p[0], p[1], p[2], p[3], p[4]));
+    if (s != 2) return s;
+  }
+  const int s = insphere_in_doubles(a, b, c, d, e);
+  return s != 2 ? s : insphere_rational(a, b, c, d, e);
+}
 
 int orient3d_rational(Vec3 a, Vec3 b, Vec3 c, Vec3 d) {
   const double xs[] = {a.x, a.y, a.z, b.x, b.y, b.z, c.x, c.y, c.z, d.x, d.y, d.z};

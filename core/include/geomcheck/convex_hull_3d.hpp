@@ -15,13 +15,15 @@
 // order met them; its triangles are coplanar neighbours.
 //
 // Algorithm: incremental with conflict lists (Clarkson and Shor): a first
-// tetrahedron from the first four independent points (index order), then
-// the remaining distinct points in a fixed pseudo-random order; a point
-// strictly beyond a facet's plane removes the facets it sees, strictly, and
-// is joined to their horizon. Every decision is orient3d's exact sign
-// (predicates3d.hpp), so the result is exact for every finite input and
-// unchanged by scaling every point by one power of two. Expected time
-// O(n log n).
+// tetrahedron from the first four independent points (index order), every
+// other distinct point assigned (in a fixed pseudo-random order) to a facet
+// it sees; then, facet by facet, the conflict farthest from its plane (by
+// the filter's value, as Quickhull chooses) removes the facets it sees,
+// strictly, and is joined to their horizon; the removed facets' conflicts
+// go to the new facets or, seeing none, are inside. Every decision is
+// orient3d's exact sign (predicates3d.hpp), so the result is exact for
+// every finite input and unchanged by scaling every point by one power of
+// two.
 //
 // Non-finite coordinates: dimension `invalid`, no facets.
 #pragma once

@@ -9,7 +9,14 @@
 //      bound, nothing overflowed and no product could underflow (every
 //      non-zero coordinate difference at least kOrient3dDiffFloor,
 //      kInsphereDiffFloor: a product of three, or of five, is then normal);
-//   2. otherwise exact big integers on the coordinates scaled to integers by
+//   (then, out of line:)
+//   2. the same filter on the points scaled by one power of two, their
+//      largest magnitude into [1, 2), where that scaling is exact: a set far
+//      from 1 in scale answers as fast as one near it;
+//   3. the determinant in doubles with every step checked error-free
+//      (integer grids and other small exact coordinates: the common
+//      degenerate input);
+//   4. otherwise exact big integers on the coordinates scaled to integers by
 //      one power of two (core/src/exact_integers.hpp, as the 2D predicates'
 //      last stage), which cover any mix of magnitudes (1e300 beside 1e-300).
 // Scaling every point by the same power of two changes no answer, and
@@ -89,9 +96,11 @@ GEOMCHECK_PREDICATE_INLINE FilterValue insphere_filter(Vec3 a, Vec3 b, Vec3 c, V
               diffs_at_least(de, kInsphereDiffFloor)};
 }
 
-/// The exact stage behind the filters (out of line: rarely reached). Named
-/// *_rational as the 2D predicates' big-integer stage; tests compare it with
-/// an independent exact kernel.
+/// The stages behind the filter (2 to 4 above; out of line: rarely reached).
+int orient3d_exact(Vec3 a, Vec3 b, Vec3 c, Vec3 d);
+int insphere_exact(Vec3 a, Vec3 b, Vec3 c, Vec3 d, Vec3 e);
+/// The big-integer stage alone (named *_rational as the 2D predicates');
+/// tests compare it with an independent exact kernel.
 int orient3d_rational(Vec3 a, Vec3 b, Vec3 c, Vec3 d);
 int insphere_rational(Vec3 a, Vec3 b, Vec3 c, Vec3 d, Vec3 e);
 }  // namespace detail
@@ -103,7 +112,7 @@ int insphere_rational(Vec3 a, Vec3 b, Vec3 c, Vec3 d, Vec3 e);
 GEOMCHECK_PREDICATE_INLINE int orient3d(Vec3 a, Vec3 b, Vec3 c, Vec3 d) {
   const detail::FilterValue f = detail::orient3d_filter(a, b, c, d);
   if (f.usable && (f.value > f.bound || -f.value > f.bound)) return f.value > 0 ? 1 : -1;
-  return detail::orient3d_rational(a, b, c, d);
+  return detail::orient3d_exact(a, b, c, d);
 }
 
 /// For a, b, c, d with orient3d(a, b, c, d) > 0: +1 when e lies strictly
@@ -114,7 +123,7 @@ GEOMCHECK_PREDICATE_INLINE int orient3d(Vec3 a, Vec3 b, Vec3 c, Vec3 d) {
 GEOMCHECK_PREDICATE_INLINE int insphere(Vec3 a, Vec3 b, Vec3 c, Vec3 d, Vec3 e) {
   const detail::FilterValue f = detail::insphere_filter(a, b, c, d, e);
   if (f.usable && (f.value > f.bound || -f.value > f.bound)) return f.value > 0 ? 1 : -1;
-  return detail::insphere_rational(a, b, c, d, e);
+  return detail::insphere_exact(a, b, c, d, e);
 }
 
 }  // namespace geomcheck
