@@ -28,7 +28,8 @@ class Hull {
   /// `unit`: the points scaled by one power of two, the largest coordinate
   /// into [1, 2) (for the farthest-point heuristic only: the same numbers
   /// for every power-of-two scaling of the input, so the same order).
-  Hull(const std::vector<Vec3>& p, const std::vector<Vec3>& unit) : p_(p), unit_(unit) {}
+  Hull(const std::vector<Vec3>& p, const std::vector<Vec3>& unit)
+      : p_(p), unit_(unit), by_start_(p.size(), kNone) {}
 
   /// q strictly beyond the plane of f (on its outer side), exactly.
   bool sees(std::uint32_t f, std::uint32_t q) const {
@@ -97,13 +98,13 @@ class Hull {
         for (int j = 0; j < 3; ++j)
           if (facets_[g].v[j] == y && facets_[g].v[(j + 1) % 3] == x) facets_[g].n[j] = h;
         created_.push_back(h);
-        by_start[x] = h;
+        by_start_[x] = h;
       }
     // The horizon is one loop: (x, y, q)'s edge (y, q) meets the new facet
     // starting at y, its edge (q, x) the one ending at x.
     for (std::uint32_t h : created_) {
       const std::uint32_t y = facets_[h].v[1];
-      const std::uint32_t next = by_start[y];
+      const std::uint32_t next = by_start_[y];
       facets_[h].n[1] = next;
       facets_[next].n[2] = h;
     }
@@ -131,11 +132,7 @@ class Hull {
   const std::vector<Vec3>& unit_;
   std::vector<Facet> facets_;
   std::vector<std::uint32_t> visible_, created_;
-
- public:
-  /// The new facet starting at each horizon vertex (by point index; the
-  /// caller sizes it).
-  std::vector<std::uint32_t> by_start;
+  std::vector<std::uint32_t> by_start_;  // the new facet starting at each horizon vertex (by point index)
 };
 
 }  // namespace
@@ -206,18 +203,11 @@ ConvexHull3 convex_hull_3d(const std::vector<Vec3>& p) {
   // Where the scaling is exact the decisions use the scaled points too: a
   // set far from 1 in scale then never leaves orient3d's inline filter.
   Hull h(exact ? unit : p, unit);
-  h.by_start.assign(n, kNone);
   h.start(a, b, c, d);
-  // The rest in a fixed pseudo-random order (expected O(n log n) whatever
-  // the input's order), each assigned to a first facet it sees.
+  // The rest, each assigned to a first facet it sees.
   std::vector<std::uint32_t> rest;
   for (std::uint32_t q : distinct)
     if (q != a && q != b && q != c && q != d) rest.push_back(q);
-  std::uint64_t s = 0x9e3779b97f4a7c15ull;
-  for (std::size_t i = rest.size(); i > 1; --i) {
-    s ^= s << 13, s ^= s >> 7, s ^= s << 17;
-    std::swap(rest[i - 1], rest[s % i]);
-  }
   const std::vector<std::uint32_t> first{0, 1, 2, 3};
   for (std::uint32_t q : rest) h.assign(q, first);
   // Each facet with conflicts, in creation order: its farthest point goes

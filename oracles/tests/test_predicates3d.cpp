@@ -21,25 +21,11 @@
 #include "point_sets_3d.hpp"
 #include "geomcheck/predicates3d.hpp"
 
-namespace geomcheck {
-// Counterexamples print bit-exact (hex floats).
-inline void showValue(const Vec3& p, std::ostream& os) {
-  char buf[128];
-  std::snprintf(buf, sizeof buf, "(%a, %a, %a)", p.x, p.y, p.z);
-  os << buf;
-}
-}  // namespace geomcheck
-
 namespace {
 
 using geomcheck::Vec3;
+using geomcheck::test::ulps;
 using Points = std::vector<Vec3>;
-
-double ulps(double x, int k) {
-  for (; k > 0; --k) x = std::nextafter(x, INFINITY);
-  for (; k < 0; ++k) x = std::nextafter(x, -INFINITY);
-  return x;
-}
 
 /// n points of one kind: "coplanar" (integer points of an integer plane, or
 /// points rounded onto a random plane), "cospherical" (integer points of

@@ -16,24 +16,12 @@
 
 #include "geomcheck/convex_hull_3d.hpp"
 #include "geomcheck/oracles/delaunay_3d.hpp"
-
-namespace geomcheck {
-inline void showValue(const Vec3& p, std::ostream& os) {
-  char buf[128];
-  std::snprintf(buf, sizeof buf, "(%a, %a, %a)", p.x, p.y, p.z);
-  os << buf;
-}
-}  // namespace geomcheck
+#include "point_sets_3d.hpp"
 
 namespace {
 
 using geomcheck::Vec3;
-
-double ulps(double x, int k) {
-  for (; k > 0; --k) x = std::nextafter(x, INFINITY);
-  for (; k < 0; ++k) x = std::nextafter(x, -INFINITY);
-  return x;
-}
+using geomcheck::test::ulps;
 
 rc::Gen<std::vector<Vec3>> hull_points() {
   return rc::gen::resize(rc::kNominalSize, rc::gen::exec([] {

@@ -16,8 +16,7 @@
 //
 // Algorithm: incremental with conflict lists (Clarkson and Shor): a first
 // tetrahedron from the first four independent points (index order), every
-// other distinct point assigned (in a fixed pseudo-random order) to a facet
-// it sees; then, facet by facet, the conflict farthest from its plane (by
+// other distinct point assigned to a facet it sees; then, facet by facet, the conflict farthest from its plane (by
 // the filter's value, as Quickhull chooses) removes the facets it sees,
 // strictly, and is joined to their horizon; the removed facets' conflicts
 // go to the new facets or, seeing none, are inside. Every decision is
