@@ -1,0 +1,135 @@
+// geomcheck benchmarks — delaunay_3d against CGAL's Delaunay_triangulation_3
+// (Epick, range insert, which spatially sorts first) on the same inputs in
+// the same run: 10^5 and 10^6 uniform points in a cube, the 100^3 integer
+// grid (every cube's corners cospherical), 10^5 points rounded onto a
+// sphere, and the uniform 10^6 scaled by 2^500 and 2^-500. Every benchmark
+// reports the peak heap of one construction (this program counts its own
+// allocations); after the run the ratios geomcheck / CGAL are printed.
+//
+//   build/release/bench/bench_delaunay_3d [--benchmark_filter=...]
+#include <benchmark/benchmark.h>
+
+#include <CGAL/Delaunay_triangulation_3.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <map>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "geomcheck/delaunay_3d.hpp"
+#include "heap_accounting.hpp"
+
+namespace {
+
+using K = CGAL::Exact_predicates_inexact_constructions_kernel;
+using DT = CGAL::Delaunay_triangulation_3<K>;
+using geomcheck::Vec3;
+
+constexpr std::uint64_t kSeed = 20261203;
+
+// Set k: 0 uniform 10^5, 1 uniform 10^6, 2 grid 100^3, 3 sphere 10^5,
+// 4 uniform 10^6 times 2^500, 5 uniform 10^6 times 2^-500.
+constexpr int kSets = 6;
+constexpr const char* kNames[kSets] = {"uniform 10^5", "uniform 10^6", "grid 100^3", "sphere 10^5",
+                                       "uniform 10^6 x2^500", "uniform 10^6 x2^-500"};
+const std::vector<Vec3>& point_set(int k) {
+  static std::map<int, std::vector<Vec3>> cache;
+  auto& p = cache[k];
+  if (!p.empty()) return p;
+  std::mt19937_64 rng(kSeed);
+  std::uniform_real_distribution<double> u(0, 1);
+  std::normal_distribution<double> g(0, 1);
+  if (k == 2) {
+    for (int x = 0; x < 100; ++x)
+      for (int y = 0; y < 100; ++y)
+        for (int z = 0; z < 100; ++z) p.push_back({double(x), double(y), double(z)});
+  } else if (k == 3) {
+    p.resize(100000);
+    for (Vec3& q : p) {
+      const Vec3 v{g(rng), g(rng), g(rng)};
+      q = (1 / length(v)) * v;
+    }
+  } else {
+    p.resize(k == 0 ? 100000 : 1000000);
+    const int e = k == 4 ? 500 : (k == 5 ? -500 : 0);
+    for (Vec3& q : p) q = {std::ldexp(u(rng), e), std::ldexp(u(rng), e), std::ldexp(u(rng), e)};
+  }
+  return p;
+}
+
+void BM_geomcheck(benchmark::State& s) {
+  const std::vector<Vec3>& p = point_set(static_cast<int>(s.range(0)));
+  std::size_t tets = 0;
+  for (auto _ : s) {
+    tets = geomcheck::delaunay_3d(p).tetrahedra.size();
+    benchmark::DoNotOptimize(tets);
+  }
+  s.counters["tetrahedra"] = static_cast<double>(tets);
+  s.counters["peak_MB"] = peak_mb([&] { benchmark::DoNotOptimize(geomcheck::delaunay_3d(p).tetrahedra.size()); });
+  s.SetLabel(kNames[s.range(0)]);
+}
+
+void BM_cgal(benchmark::State& s) {
+  const std::vector<Vec3>& p = point_set(static_cast<int>(s.range(0)));
+  std::vector<K::Point_3> pts;
+  pts.reserve(p.size());
+  for (const Vec3& q : p) pts.emplace_back(q.x, q.y, q.z);
+  std::size_t tets = 0;
+  for (auto _ : s) {
+    DT dt(pts.begin(), pts.end());
+    tets = dt.number_of_finite_cells();
+    benchmark::DoNotOptimize(tets);
+  }
+  s.counters["tetrahedra"] = static_cast<double>(tets);
+  s.counters["peak_MB"] = peak_mb([&] {
+    DT dt(pts.begin(), pts.end());
+    benchmark::DoNotOptimize(dt.number_of_finite_cells());
+  });
+  s.SetLabel(kNames[s.range(0)]);
+}
+
+BENCHMARK(BM_geomcheck)->DenseRange(0, kSets - 1)->Unit(benchmark::kMillisecond)->Iterations(2);
+BENCHMARK(BM_cgal)->DenseRange(0, kSets - 1)->Unit(benchmark::kMillisecond)->Iterations(2);
+
+class Capture : public benchmark::ConsoleReporter {
+ public:
+  std::map<std::string, std::pair<double, double>> runs;  // name -> (ms, peak MB)
+  void ReportRuns(const std::vector<Run>& rs) override {
+    for (const Run& r : rs) {
+      if (r.error_occurred || r.run_type != Run::RT_Iteration) continue;
+      const auto peak = r.counters.find("peak_MB");
+      std::string name = r.benchmark_name();
+      name = name.substr(0, name.find("/iterations"));
+      runs[name] = {r.GetAdjustedRealTime(), peak == r.counters.end() ? 0.0 : double(peak->second)};
+    }
+    ConsoleReporter::ReportRuns(rs);
+  }
+};
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  benchmark::Initialize(&argc, argv);
+  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
+  std::printf("delaunay_3d vs CGAL Delaunay_triangulation_3 (Epick, range insert); points seed %llu\n",
+              static_cast<unsigned long long>(kSeed));
+  Capture reporter;
+  benchmark::RunSpecifiedBenchmarks(&reporter);
+  std::printf("\n%-22s %12s %10s %8s %13s %9s %8s\n", "input", "geomcheck ms", "CGAL ms", "ratio", "geomcheck MB",
+              "CGAL MB", "ratio");
+  for (int k = 0; k < kSets; ++k) {
+    const auto g = reporter.runs.find("BM_geomcheck/" + std::to_string(k));
+    const auto c = reporter.runs.find("BM_cgal/" + std::to_string(k));
+    if (g == reporter.runs.end() || c == reporter.runs.end()) continue;
+    std::printf("%-22s %12.1f %10.1f %8.2f %13.1f %9.1f %8.2f\n", kNames[k], g->second.first, c->second.first,
+                g->second.first / c->second.first, g->second.second, c->second.second,
+                g->second.second / c->second.second);
+  }
+  std::printf("(ratio = geomcheck / CGAL, time and peak heap; target <= 1, stretch 0.8)\n");
+  benchmark::Shutdown();
+  return 0;
+}
