@@ -4,6 +4,7 @@
 
 #include "exact_integers.hpp"
 #include "exact_steps.hpp"
+#include "exact_wide.hpp"
 
 namespace geomcheck::detail {
 
@@ -16,13 +17,17 @@ namespace {
 // ---- stage 2: the filter on the points scaled by one power of two (their
 // largest magnitude into [1, 2)), where that is exact (no non-zero
 // coordinate leaves the normal range): a set far from 1 in scale, whose
-// products overflow or underflow, answers as fast as one near 1.
+// products overflow or underflow, answers as fast as one near 1. False
+// (nothing to retry) when the scaling is not exact, or is by 2^0: the points
+// already in [1, 2) (as delaunay_3d scales its points) would give the first
+// filter's answer again.
 template <std::size_t N>
 bool common_scale(Vec3 (&p)[N]) {
   double m = 0;
   for (const Vec3& v : p) m = std::max(m, max_abs(v));
   if (!(m > 0) || !std::isfinite(m)) return false;
   const int e = std::ilogb(m);
+  if (e == 0) return false;
   for (const Vec3& v : p)
     for (double c : {v.x, v.y, v.z})
       if (c != 0 && std::ilogb(c) - e < -1022) return false;
@@ -110,31 +115,71 @@ int insphere_exact(Vec3 a, Vec3 b, Vec3 c, Vec3 d, Vec3 e) {
   return s != 2 ? s : insphere_rational(a, b, c, d, e);
 }
 
+namespace {
+
+// The determinants on integer coordinates s[0..12) (orient3d: a, b, c, d)
+// and s[0..15) (insphere: a, b, c, d, e), in any exact integer type T.
+template <class T, class S>
+int orient3d_sign(const S& s) {
+  const T adx = T(s[0]) - T(s[9]), ady = T(s[1]) - T(s[10]), adz = T(s[2]) - T(s[11]);
+  const T bdx = T(s[3]) - T(s[9]), bdy = T(s[4]) - T(s[10]), bdz = T(s[5]) - T(s[11]);
+  const T cdx = T(s[6]) - T(s[9]), cdy = T(s[7]) - T(s[10]), cdz = T(s[8]) - T(s[11]);
+  return sign_of(T(adz * (bdx * cdy - cdx * bdy) + bdz * (cdx * ady - adx * cdy) + cdz * (adx * bdy - bdx * ady)));
+}
+
+template <class T, class S>
+int insphere_sign(const S& s) {
+  const T aex = T(s[0]) - T(s[12]), aey = T(s[1]) - T(s[13]), aez = T(s[2]) - T(s[14]);
+  const T bex = T(s[3]) - T(s[12]), bey = T(s[4]) - T(s[13]), bez = T(s[5]) - T(s[14]);
+  const T cex = T(s[6]) - T(s[12]), cey = T(s[7]) - T(s[13]), cez = T(s[8]) - T(s[14]);
+  const T dex = T(s[9]) - T(s[12]), dey = T(s[10]) - T(s[13]), dez = T(s[11]) - T(s[14]);
+  const T ab = aex * bey - bex * aey, bc = bex * cey - cex * bey, cd = cex * dey - dex * cey;
+  const T da = dex * aey - aex * dey, ac = aex * cey - cex * aey, bd = bex * dey - dex * bey;
+  const T abc = aez * bc - bez * ac + cez * ab;
+  const T bcd = bez * cd - cez * bd + dez * bc;
+  const T cda = cez * da + dez * ac + aez * cd;
+  const T dab = dez * ab + aez * bd + bez * da;
+  const T alift = aex * aex + aey * aey + aez * aez, blift = bex * bex + bey * bey + bez * bez;
+  const T clift = cex * cex + cey * cey + cez * cez, dlift = dex * dex + dey * dey + dez * dez;
+  return sign_of(T((dlift * abc - clift * dab) + (blift * cda - alift * bcd)));
+}
+
+// Fixed-width limbs where the coordinates span few bits (exact_wide.hpp):
+// with every |coordinate| < 2^b, every difference is below 2^(b+1) and the
+// determinant of degree k below 2^(k (b+1) + 7) (insphere: 4 terms of a
+// lift below 3 2^(2(b+1)) times a 3x3 minor below 6 2^(3(b+1))). The limbs
+// compute modulo 2^(64 N), so the sign is exact once that final value fits,
+// k (b + 1) + 7 < 64 N, whatever the partial sums do (a wrap cancels out).
+// 2 when too wide.
+template <std::size_t M, int Degree>
+int sign_in_limbs(const double (&xs)[M]) {
+  using namespace exact_wide;
+  const ScaledSmall<M> s(xs);
+  if (!s.ok) return 2;
+  const int need = Degree * (s.bits + 1) + 7;
+  auto eval = [&](auto tag) {
+    using T = decltype(tag);
+    return Degree == 3 ? orient3d_sign<T>(s.v) : insphere_sign<T>(s.v);
+  };
+  if (need < 64 * 4) return eval(Wide<4>());
+  if (need < 64 * 6) return eval(Wide<6>());
+  if (need < 64 * 8) return eval(Wide<8>());
+  if (need < 64 * 10) return eval(Wide<10>());
+  return 2;
+}
+
+}  // namespace
+
 int orient3d_rational(Vec3 a, Vec3 b, Vec3 c, Vec3 d) {
   const double xs[] = {a.x, a.y, a.z, b.x, b.y, b.z, c.x, c.y, c.z, d.x, d.y, d.z};
-  const Scaled<12> s(xs);
-  const Int adx = s[0] - s[9], ady = s[1] - s[10], adz = s[2] - s[11];
-  const Int bdx = s[3] - s[9], bdy = s[4] - s[10], bdz = s[5] - s[11];
-  const Int cdx = s[6] - s[9], cdy = s[7] - s[10], cdz = s[8] - s[11];
-  return sign_of(Int(adz * (bdx * cdy - cdx * bdy) + bdz * (cdx * ady - adx * cdy) + cdz * (adx * bdy - bdx * ady)));
+  const int w = sign_in_limbs<12, 3>(xs);
+  return w != 2 ? w : orient3d_sign<Int>(Scaled<12>(xs));
 }
 
 int insphere_rational(Vec3 a, Vec3 b, Vec3 c, Vec3 d, Vec3 e) {
   const double xs[] = {a.x, a.y, a.z, b.x, b.y, b.z, c.x, c.y, c.z, d.x, d.y, d.z, e.x, e.y, e.z};
-  const Scaled<15> s(xs);
-  const Int aex = s[0] - s[12], aey = s[1] - s[13], aez = s[2] - s[14];
-  const Int bex = s[3] - s[12], bey = s[4] - s[13], bez = s[5] - s[14];
-  const Int cex = s[6] - s[12], cey = s[7] - s[13], cez = s[8] - s[14];
-  const Int dex = s[9] - s[12], dey = s[10] - s[13], dez = s[11] - s[14];
-  const Int ab = aex * bey - bex * aey, bc = bex * cey - cex * bey, cd = cex * dey - dex * cey;
-  const Int da = dex * aey - aex * dey, ac = aex * cey - cex * aey, bd = bex * dey - dex * bey;
-  const Int abc = aez * bc - bez * ac + cez * ab;
-  const Int bcd = bez * cd - cez * bd + dez * bc;
-  const Int cda = cez * da + dez * ac + aez * cd;
-  const Int dab = dez * ab + aez * bd + bez * da;
-  const Int alift = aex * aex + aey * aey + aez * aez, blift = bex * bex + bey * bey + bez * bez;
-  const Int clift = cex * cex + cey * cey + cez * cez, dlift = dex * dex + dey * dey + dez * dez;
-  return sign_of(Int((dlift * abc - clift * dab) + (blift * cda - alift * bcd)));
+  const int w = sign_in_limbs<15, 5>(xs);
+  return w != 2 ? w : insphere_sign<Int>(Scaled<15>(xs));
 }
 
 }  // namespace geomcheck::detail

@@ -157,6 +157,33 @@ RC_GTEST_PROP(Predicates3d, Symmetries, ()) {
   }
 }
 
+// The exact stage's fixed-width limbs (core/src/exact_wide.hpp) at every
+// width they switch at: cospherical (coplanar) integer points scaled by 2^60
+// with one coordinate moved by 2^(64 - s), so that the coordinates span
+// about s bits and the sign hangs on the last of them, s from 40 to 140
+// (limbs of 4, 6, 8 and 10 words, then the arbitrary-precision integers).
+RC_GTEST_PROP(Predicates3d, LimbWidthsAgreeWithRationals, ()) {
+  static const std::vector<Vec3> sphere = test::integer_sphere_points();
+  const int s = *rc::gen::inRange(40, 141);
+  const double nudge = std::ldexp(*rc::gen::element(1.0, -1.0, 3.0), 64 - s);
+  Vec3 p[5];
+  for (Vec3& v : p) {
+    const Vec3 q = sphere[*rc::gen::inRange<std::size_t>(0, sphere.size())];
+    v = {std::ldexp(q.x, 60), std::ldexp(q.y, 60), std::ldexp(q.z, 60)};
+  }
+  const int who = *rc::gen::inRange(0, 5), axis = *rc::gen::inRange(0, 3);
+  p[who][axis] += nudge;  // exact for a zero coordinate, rounded (another near-tie) otherwise
+  RC_ASSERT(detail::insphere_rational(p[0], p[1], p[2], p[3], p[4]) == test::insphere_q(p[0], p[1], p[2], p[3], p[4]));
+  // Coplanar: four points of the plane x + y + z = 2^62, exactly, one moved.
+  Vec3 c[4];
+  for (Vec3& v : c) {
+    const double x = std::ldexp(*rc::gen::inRange(-1000, 1001), 50), y = std::ldexp(*rc::gen::inRange(-1000, 1001), 50);
+    v = {x, y, 0x1p62 - x - y};
+  }
+  c[who % 4][axis] += nudge;
+  RC_ASSERT(detail::orient3d_rational(c[0], c[1], c[2], c[3]) == test::orient3d_q(c[0], c[1], c[2], c[3]));
+}
+
 // Known answers: every cube's corners are cospherical and each face's four
 // coplanar; a point just off (one ulp) decides by the side it moved to.
 TEST(Predicates3d, KnownDegenerateAnswers) {
