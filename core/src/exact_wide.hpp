@@ -48,28 +48,30 @@ struct Wide {
     }
     return r;
   }
-  /// The product modulo 2^(64 N) (the low N limbs), which for two's
-  /// complement operands is the signed product's low N limbs.
+  /// The negation modulo 2^(64 N).
+  Wide operator-() const { return Wide() - *this; }
+  /// The product modulo 2^(64 N) (the low N limbs). Computed on the
+  /// magnitudes (a negative value's high limbs are all ones: its magnitude
+  /// has as few limbs as the number), so a product of small values costs a
+  /// few limb products, then signed.
   friend Wide operator*(const Wide& a, const Wide& b) {
+    const bool na_neg = a.w[N - 1] >> 63, nb_neg = b.w[N - 1] >> 63;
+    const Wide ma = na_neg ? -a : a, mb = nb_neg ? -b : b;
+    int na = N, nb = N;  // zero high limbs contribute nothing
+    while (na > 1 && ma.w[na - 1] == 0) --na;
+    while (nb > 1 && mb.w[nb - 1] == 0) --nb;
     Wide r;
-    int na = N, nb = N;  // zero high limbs contribute nothing (a negative value's are all ones)
-    while (na > 1 && a.w[na - 1] == 0) --na;
-    while (nb > 1 && b.w[nb - 1] == 0) --nb;
-    for (int i = 0; i < N && i < na; ++i) {
+    for (int i = 0; i < na; ++i) {
       unsigned __int128 carry = 0;
       const int jend = N - i < nb ? N - i : nb;
       for (int j = 0; j < jend; ++j) {
-        carry += static_cast<unsigned __int128>(a.w[i]) * b.w[j] + r.w[i + j];
+        carry += static_cast<unsigned __int128>(ma.w[i]) * mb.w[j] + r.w[i + j];
         r.w[i + j] = static_cast<std::uint64_t>(carry);
         carry >>= 64;
       }
-      for (int k = i + jend; k < N && carry != 0; ++k) {
-        carry += r.w[k];
-        r.w[k] = static_cast<std::uint64_t>(carry);
-        carry >>= 64;
-      }
+      if (i + jend < N) r.w[i + jend] = static_cast<std::uint64_t>(carry);  // above every earlier row's reach
     }
-    return r;
+    return na_neg != nb_neg ? -r : r;
   }
   int sign() const {
     if (w[N - 1] >> 63) return -1;
@@ -115,7 +117,9 @@ struct ScaledSmall {
     ok = bits <= 125;
     if (!ok) return;
     for (std::size_t i = 0; i < M; ++i) {
-      const int shift = low[i] - emin;  // below 0: only zero bits shifted out
+      v[i] = 0;
+      if (mant[i] == 0) continue;
+      const int shift = low[i] - emin;  // from -52 (only zero bits shifted out) to bits - 53
       const __int128 m = shift >= 0 ? static_cast<__int128>(mant[i]) << shift : static_cast<__int128>(mant[i] >> -shift);
       v[i] = xs[i] < 0 ? -m : m;
     }

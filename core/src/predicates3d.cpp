@@ -159,7 +159,8 @@ int sign_in_limbs(const double (&xs)[M]) {
   const int need = Degree * (s.bits + 1) + 7;
   auto eval = [&](auto tag) {
     using T = decltype(tag);
-    return Degree == 3 ? orient3d_sign<T>(s.v) : insphere_sign<T>(s.v);
+    if constexpr (Degree == 3) return orient3d_sign<T>(s.v);
+    else return insphere_sign<T>(s.v);
   };
   if (need < 64 * 4) return eval(Wide<4>());
   if (need < 64 * 6) return eval(Wide<6>());
