@@ -24,7 +24,7 @@
 #include <vector>
 
 #include "geomcheck/delaunay_2d.hpp"
-#include "heap_accounting.hpp"
+#include "pointset_bench.hpp"
 
 namespace {
 
@@ -180,22 +180,6 @@ BENCHMARK(BM_cgal_uniform)->Arg(100000)->Arg(1000000)->Unit(benchmark::kMillisec
 BENCHMARK(BM_geomcheck_grid)->Arg(1000)->Unit(benchmark::kMillisecond)->MinTime(2.0);
 BENCHMARK(BM_cgal_grid)->Arg(1000)->Unit(benchmark::kMillisecond)->MinTime(2.0);
 
-// Keeps the per-run real time and peak memory for the ratio table.
-class Capture : public benchmark::ConsoleReporter {
- public:
-  std::map<std::string, std::pair<double, double>> runs;  // name -> (ms, peak MB)
-  void ReportRuns(const std::vector<Run>& rs) override {
-    for (const Run& r : rs) {
-      if (r.error_occurred || r.run_type != Run::RT_Iteration) continue;
-      const auto peak = r.counters.find("peak_MB");
-      std::string name = r.benchmark_name();
-      name = name.substr(0, name.find("/min_time"));
-      runs[name] = {r.GetAdjustedRealTime(), peak == r.counters.end() ? 0.0 : double(peak->second)};
-    }
-    ConsoleReporter::ReportRuns(rs);
-  }
-};
-
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -203,7 +187,7 @@ int main(int argc, char** argv) {
   if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
   std::printf("delaunay_2d vs CGAL Delaunay_triangulation_2 (Epick, range insert); points seed %llu\n",
               static_cast<unsigned long long>(kSeed));
-  Capture reporter;
+  Capture reporter("/min_time");
   benchmark::RunSpecifiedBenchmarks(&reporter);
   std::printf("\n%-22s %12s %12s %8s %14s %14s\n", "input", "geomcheck ms", "CGAL ms", "ratio", "geomcheck MB", "CGAL MB");
   const std::pair<const char*, const char*> rows[] = {{"uniform/100000", "uniform 10^5"},

@@ -21,7 +21,7 @@
 #include <vector>
 
 #include "geomcheck/delaunay_3d.hpp"
-#include "heap_accounting.hpp"
+#include "pointset_bench.hpp"
 
 namespace {
 
@@ -95,21 +95,6 @@ void BM_cgal(benchmark::State& s) {
 BENCHMARK(BM_geomcheck)->DenseRange(0, kSets - 1)->Unit(benchmark::kMillisecond)->Iterations(2);
 BENCHMARK(BM_cgal)->DenseRange(0, kSets - 1)->Unit(benchmark::kMillisecond)->Iterations(2);
 
-class Capture : public benchmark::ConsoleReporter {
- public:
-  std::map<std::string, std::pair<double, double>> runs;  // name -> (ms, peak MB)
-  void ReportRuns(const std::vector<Run>& rs) override {
-    for (const Run& r : rs) {
-      if (r.error_occurred || r.run_type != Run::RT_Iteration) continue;
-      const auto peak = r.counters.find("peak_MB");
-      std::string name = r.benchmark_name();
-      name = name.substr(0, name.find("/iterations"));
-      runs[name] = {r.GetAdjustedRealTime(), peak == r.counters.end() ? 0.0 : double(peak->second)};
-    }
-    ConsoleReporter::ReportRuns(rs);
-  }
-};
-
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -117,7 +102,7 @@ int main(int argc, char** argv) {
   if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
   std::printf("delaunay_3d vs CGAL Delaunay_triangulation_3 (Epick, range insert); points seed %llu\n",
               static_cast<unsigned long long>(kSeed));
-  Capture reporter;
+  Capture reporter("/iterations");
   benchmark::RunSpecifiedBenchmarks(&reporter);
   std::printf("\n%-22s %12s %10s %8s %13s %9s %8s\n", "input", "geomcheck ms", "CGAL ms", "ratio", "geomcheck MB",
               "CGAL MB", "ratio");

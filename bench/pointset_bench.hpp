@@ -1,10 +1,18 @@
-// geomcheck benchmarks — the heap accounting of the point-set benchmarks:
-// current and peak bytes of this process, counted by replacing the global
-// operator new and delete. Defines them: include it in one translation unit
-// of a program.
+// geomcheck benchmarks — what the point-set benchmarks (bench_delaunay_2d,
+// bench_delaunay_3d) share: the heap accounting (current and peak bytes of
+// this process, counted by replacing the global operator new and delete;
+// this header defines them: include it in one translation unit of a
+// program) and the reporter that keeps each run's time and peak heap for
+// the ratio table.
 #pragma once
 
+#include <benchmark/benchmark.h>
 #include <malloc.h>
+
+#include <map>
+#include <string>
+#include <utility>
+#include <vector>
 
 #include <atomic>
 #include <cstdint>
@@ -48,5 +56,27 @@ double peak_mb(F&& build) {
   build();
   return static_cast<double>(g_peak.load() - base) / (1024.0 * 1024.0);
 }
+
+// Keeps the per-run real time and peak memory (counter peak_MB) for the
+// ratio table, by benchmark name cut before `cut` ("/min_time",
+// "/iterations").
+class Capture : public benchmark::ConsoleReporter {
+ public:
+  explicit Capture(std::string cut) : cut_(std::move(cut)) {}
+  std::map<std::string, std::pair<double, double>> runs;  // name -> (ms, peak MB)
+  void ReportRuns(const std::vector<Run>& rs) override {
+    for (const Run& r : rs) {
+      if (r.error_occurred || r.run_type != Run::RT_Iteration) continue;
+      const auto peak = r.counters.find("peak_MB");
+      std::string name = r.benchmark_name();
+      name = name.substr(0, name.find(cut_));
+      runs[name] = {r.GetAdjustedRealTime(), peak == r.counters.end() ? 0.0 : double(peak->second)};
+    }
+    ConsoleReporter::ReportRuns(rs);
+  }
+
+ private:
+  std::string cut_;
+};
 
 }  // namespace
