@@ -153,23 +153,27 @@ class Builder {
 
   std::vector<Vec3> pts_;
   std::vector<std::uint32_t> rep_;
-  std::vector<Quad> tv_, ta_;  // vertices; the corner across each facet
+  struct Tet {  // one cache line holds two: a test and the walk across its facets read both halves
+    Quad v;  // vertices (kInf for the vertex at infinity; v[0] == kDead once freed)
+    Quad a;  // a[i]: the corner of the neighbour across the facet opposite v[i]
+  };
+  std::vector<Tet> tets_;
   std::vector<std::uint32_t> mark_, free_, cavity_, stack_;
   std::vector<Face> boundary_;
   std::vector<Slot> edges_;
   std::uint32_t stamp_ = 0, edge_stamp_ = 0, last_ = 0, walk_ = 0;
 
-  std::uint32_t& V(std::uint32_t c) { return tv_[c >> 2][c & 3]; }
-  std::uint32_t& A(std::uint32_t c) { return ta_[c >> 2][c & 3]; }
+  std::uint32_t& V(std::uint32_t c) { return tets_[c >> 2].v[c & 3]; }
+  std::uint32_t& A(std::uint32_t c) { return tets_[c >> 2].a[c & 3]; }
   int inf_corner(std::uint32_t t) const {
-    const Quad& q = tv_[t];
+    const Quad& q = tets_[t].v;
     for (int i = 0; i < 4; ++i)
       if (q[i] == kInf) return i;
     return -1;
   }
 
   bool in_conflict(std::uint32_t t, const Vec3& p) {
-    const Quad& q = tv_[t];
+    const Quad& q = tets_[t].v;
     const int k = inf_corner(t);
     if (k < 0) return insphere(pts_[q[1]], pts_[q[0]], pts_[q[2]], pts_[q[3]], p) > 0;
     const Vec3& a = pts_[q[kFacet[k][0]]];
@@ -189,19 +193,19 @@ class Builder {
   // circumsphere), or an infinite one whose hull facet p sees strictly.
   std::uint32_t locate(const Vec3& p) {
     std::uint32_t t = last_;
-    if (tv_[t][0] == kDead || inf_corner(t) >= 0)
+    if (tets_[t].v[0] == kDead || inf_corner(t) >= 0)
       throw DelaunayFailure("delaunay_3d: the walk's start is not a live finite tetrahedron");
     std::uint32_t from = kNone;
-    const std::uint64_t limit = 4ull * tv_.size() + 16;
+    const std::uint64_t limit = 4ull * tets_.size() + 16;
     for (std::uint64_t steps = 0;; ++steps) {
       if (steps > limit) throw DelaunayFailure("delaunay_3d: point location walked in a cycle");
-      const Quad& q = tv_[t];
+      const Quad& q = tets_[t].v;
       walk_ = walk_ * 1103515245u + 12345u;
       const std::uint32_t off = (walk_ >> 16) & 3;
       std::uint32_t next = kNone;
       for (std::uint32_t r = 0; r < 4; ++r) {
         const std::uint32_t j = (r + off) & 3;
-        const std::uint32_t across = ta_[t][j] >> 2;
+        const std::uint32_t across = tets_[t].a[j] >> 2;
         if (across == from) continue;
         if (orient(pts_[q[kFacet[j][0]]], pts_[q[kFacet[j][1]]], pts_[q[kFacet[j][2]]], p) < 0) {
           next = across;
@@ -221,10 +225,10 @@ class Builder {
       free_.pop_back();
       return t;
     }
-    if (tv_.size() >= (kDead >> 2))
+    if (tets_.size() >= (kDead >> 2))
       throw DelaunayFailure("delaunay_3d: more tetrahedra than 32-bit corners can name");
-    tv_.push_back({}), ta_.push_back({}), mark_.push_back(0);
-    return static_cast<std::uint32_t>(tv_.size() - 1);
+    tets_.push_back({}), mark_.push_back(0);
+    return static_cast<std::uint32_t>(tets_.size() - 1);
   }
 
   // Pairs the facet through directed edge (from, to) with the one through
@@ -250,8 +254,10 @@ class Builder {
 
   void insert(std::uint32_t v) {
     const Vec3 p = pts_[v];
+    // In conflict without a test: p lies in the closed finite tetrahedron
+    // and is none of its vertices (duplicates are merged), so strictly
+    // inside its circumsphere; or strictly beyond an infinite one's facet.
     const std::uint32_t t0 = locate(p);
-    if (!in_conflict(t0, p)) throw DelaunayFailure("delaunay_3d: the located tetrahedron is not in conflict");
     const std::uint32_t in = ++stamp_, out = ++stamp_;
     cavity_.clear(), stack_.clear(), boundary_.clear();
     mark_[t0] = in;
@@ -270,11 +276,11 @@ class Builder {
           }
           mark_[u] = out;
         }
-        const Quad& q = tv_[t];
+        const Quad& q = tets_[t].v;
         boundary_.push_back({{q[kFacet[j][0]], q[kFacet[j][1]], q[kFacet[j][2]]}, o});
       }
     }
-    for (std::uint32_t t : cavity_) tv_[t][0] = kDead, free_.push_back(t);
+    for (std::uint32_t t : cavity_) tets_[t].v[0] = kDead, free_.push_back(t);
     std::size_t need = 16;
     while (need < 4 * boundary_.size()) need *= 2;
     if (edges_.size() < need) edges_.assign(need, Slot{0, 0, 0}), edge_stamp_ = 0;
@@ -284,7 +290,7 @@ class Builder {
     }
     for (const Face& f : boundary_) {
       const std::uint32_t t = new_tet();
-      tv_[t] = {f.f[0], f.f[1], f.f[2], v};
+      tets_[t].v = {f.f[0], f.f[1], f.f[2], v};
       mark_[t] = 0;
       A(4 * t + 3) = f.outside, A(f.outside) = 4 * t + 3;
       // The facet opposite f[k] holds p and the edge f[k+1] -> f[k+2].
@@ -297,24 +303,24 @@ class Builder {
 
   void build(std::uint32_t third, std::uint32_t fourth) {
     const std::size_t m = pts_.size();
-    tv_.reserve(7 * m), ta_.reserve(7 * m), mark_.reserve(7 * m);
+    tets_.reserve(7 * m), mark_.reserve(7 * m);
     std::uint32_t a = 0, b = 1, c = third, d = fourth;
     if (orient(pts_[a], pts_[b], pts_[c], pts_[d]) < 0) std::swap(a, b);
     const std::uint32_t t0 = new_tet();
-    tv_[t0] = {a, b, c, d};
+    tets_[t0].v = {a, b, c, d};
     for (std::uint32_t j = 0; j < 4; ++j) {  // one infinite tetrahedron on each facet, seen from outside
       const std::uint32_t t = new_tet();
-      const Quad& q = tv_[t0];
-      tv_[t] = {q[kFacet[j][0]], q[kFacet[j][2]], q[kFacet[j][1]], kInf};
+      const Quad& q = tets_[t0].v;
+      tets_[t].v = {q[kFacet[j][0]], q[kFacet[j][2]], q[kFacet[j][1]], kInf};
     }
     for (std::uint32_t s = 0; s < 5; ++s)  // pair the 20 facets by their vertex sets
       for (std::uint32_t i = 0; i < 4; ++i)
         for (std::uint32_t u = s + 1; u < 5; ++u)
           for (std::uint32_t k = 0; k < 4; ++k) {
             std::array<std::uint32_t, 3> x{}, y{};
-            for (int e = 0; e < 3; ++e) x[e] = tv_[s][kFacet[i][e]], y[e] = tv_[u][kFacet[k][e]];
+            for (int e = 0; e < 3; ++e) x[e] = tets_[s].v[kFacet[i][e]], y[e] = tets_[u].v[kFacet[k][e]];
             std::sort(x.begin(), x.end()), std::sort(y.begin(), y.end());
-            if (x == y) ta_[s][i] = 4 * u + k, ta_[u][k] = 4 * s + i;
+            if (x == y) tets_[s].a[i] = 4 * u + k, tets_[u].a[k] = 4 * s + i;
           }
     last_ = t0;
     for (std::uint32_t v = 2; v < m; ++v)
@@ -324,11 +330,11 @@ class Builder {
   // The finite tetrahedra, compacted, with input indices; links to
   // infinite ones become kNone.
   void emit(DelaunayTetrahedralization& out) {
-    const std::uint32_t nt = static_cast<std::uint32_t>(tv_.size());
+    const std::uint32_t nt = static_cast<std::uint32_t>(tets_.size());
     std::vector<std::uint32_t> index(nt, kNone);
     std::uint32_t finite = 0, infinite = 0;
     for (std::uint32_t t = 0; t < nt; ++t) {
-      if (tv_[t][0] == kDead) continue;
+      if (tets_[t].v[0] == kDead) continue;
       if (inf_corner(t) >= 0) ++infinite;
       else index[t] = finite++;
     }
@@ -339,8 +345,8 @@ class Builder {
       auto& tv = out.tetrahedra[index[t]];
       auto& ta = out.neighbors[index[t]];
       for (int i = 0; i < 4; ++i) {
-        tv[i] = rep_[tv_[t][i]];
-        ta[i] = index[ta_[t][i] >> 2];
+        tv[i] = rep_[tets_[t].v[i]];
+        ta[i] = index[tets_[t].a[i] >> 2];
       }
     }
     out.hull_facets = infinite;
