@@ -1,17 +1,19 @@
 // geomcheck — internal: fixed-width exact integers for the 3D predicates'
 // big-integer stage (predicates3d.cpp), where the coordinates, scaled to
 // integers by one power of two, span at most 125 bits: the common case of
-// arbitrary doubles of one order of magnitude (points on a sphere, whose
-// in-sphere determinants the floating-point filters cannot decide). A
-// determinant of degree k of such integers fits in a few 64-bit limbs, so
-// it is computed in N limbs of two's complement, modulo 2^(64 N), which is
-// exact when the caller has chosen N so that every intermediate value fits
-// (`fits`); wider spans go to the arbitrary-precision stage.
+// arbitrary doubles of one order of magnitude (points on a sphere, every
+// in-sphere determinant of which the floating-point filters cannot
+// decide). Each step of a determinant has a width known when it is
+// compiled (a difference 2 limbs, a 2x2 minor 4, a 3x3 minor 6, the
+// in-sphere determinant 10), so the products are unrolled schoolbook
+// multiplications of two's-complement limbs; wider spans go to the
+// arbitrary-precision stage.
 #pragma once
 
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <cstring>
 
 namespace geomcheck::detail::exact_wide {
 
@@ -50,29 +52,6 @@ struct Wide {
   }
   /// The negation modulo 2^(64 N).
   Wide operator-() const { return Wide() - *this; }
-  /// The product modulo 2^(64 N) (the low N limbs). Computed on the
-  /// magnitudes (a negative value's high limbs are all ones: its magnitude
-  /// has as few limbs as the number), so a product of small values costs a
-  /// few limb products, then signed.
-  friend Wide operator*(const Wide& a, const Wide& b) {
-    const bool na_neg = a.w[N - 1] >> 63, nb_neg = b.w[N - 1] >> 63;
-    const Wide ma = na_neg ? -a : a, mb = nb_neg ? -b : b;
-    int na = N, nb = N;  // zero high limbs contribute nothing
-    while (na > 1 && ma.w[na - 1] == 0) --na;
-    while (nb > 1 && mb.w[nb - 1] == 0) --nb;
-    Wide r;
-    for (int i = 0; i < na; ++i) {
-      unsigned __int128 carry = 0;
-      const int jend = N - i < nb ? N - i : nb;
-      for (int j = 0; j < jend; ++j) {
-        carry += static_cast<unsigned __int128>(ma.w[i]) * mb.w[j] + r.w[i + j];
-        r.w[i + j] = static_cast<std::uint64_t>(carry);
-        carry >>= 64;
-      }
-      if (i + jend < N) r.w[i + jend] = static_cast<std::uint64_t>(carry);  // above every earlier row's reach
-    }
-    return na_neg != nb_neg ? -r : r;
-  }
   int sign() const {
     if (w[N - 1] >> 63) return -1;
     for (int i = 0; i < N; ++i)
@@ -84,6 +63,47 @@ struct Wide {
 template <int N>
 int sign_of(const Wide<N>& v) {
   return v.sign();
+}
+
+/// a * b modulo 2^(64 NR), NR <= NA + NB: the unsigned product of the
+/// limbs, then a negative operand's weight taken off (a = a_u - 2^(64 NA)
+/// when negative, so a b = a_u b_u - 2^(64 NA) b_u - 2^(64 NB) a_u, the
+/// product of the two weights vanishing modulo 2^(64 NR)).
+template <int NR, int NA, int NB>
+__attribute__((always_inline)) inline Wide<NR> mul(const Wide<NA>& a, const Wide<NB>& b) {
+  static_assert(NR <= NA + NB, "a product has at most NA + NB limbs");
+  Wide<NR> r;
+  for (int i = 0; i < NA; ++i) {
+    unsigned __int128 carry = 0;
+    for (int j = 0; j < NB && i + j < NR; ++j) {
+      carry += static_cast<unsigned __int128>(a.w[i]) * b.w[j] + r.w[i + j];
+      r.w[i + j] = static_cast<std::uint64_t>(carry);
+      carry >>= 64;
+    }
+    if (i + NB < NR) r.w[i + NB] = static_cast<std::uint64_t>(carry);
+  }
+  auto take_shifted = [&r](const std::uint64_t* x, int nx, int shift) {  // r -= x 2^(64 shift)
+    unsigned __int128 borrow = 0;
+    for (int k = shift; k < NR; ++k) {
+      const std::uint64_t xk = k - shift < nx ? x[k - shift] : 0;
+      const unsigned __int128 d = static_cast<unsigned __int128>(r.w[k]) - xk - borrow;
+      r.w[k] = static_cast<std::uint64_t>(d);
+      borrow = (d >> 64) & 1;
+    }
+  };
+  if (a.w[NA - 1] >> 63) take_shifted(b.w, NB, NA);
+  if (b.w[NB - 1] >> 63) take_shifted(a.w, NA, NB);
+  return r;
+}
+
+/// v sign-extended to M >= N limbs.
+template <int M, int N>
+Wide<M> widen(const Wide<N>& v) {
+  static_assert(M >= N, "widen only");
+  Wide<M> r;
+  const std::uint64_t fill = (v.w[N - 1] >> 63) ? ~std::uint64_t(0) : 0;
+  for (int i = 0; i < M; ++i) r.w[i] = i < N ? v.w[i] : fill;
+  return r;
 }
 
 /// The coordinates as integers of one common scale 2^emin (emin the
@@ -98,19 +118,21 @@ struct ScaledSmall {
 
   explicit ScaledSmall(const double (&xs)[M]) {
     std::uint64_t mant[M];
-    int low[M];  // the exponent of each mantissa's unit
+    int low[M];  // the exponent of each mantissa's unit: |xs[i]| = mant[i] 2^low[i]
     int emin = 0, emax = 0;
     bool any = false;
     for (std::size_t i = 0; i < M; ++i) {
-      mant[i] = 0, low[i] = 0;
-      if (xs[i] == 0) continue;
-      int ex;
-      const double f = std::frexp(xs[i], &ex);  // |xs[i]| = |f| 2^ex < 2^ex
-      mant[i] = static_cast<std::uint64_t>(std::ldexp(std::fabs(f), 53));  // exact: |f| in [0.5, 1)
-      low[i] = ex - 53;
+      std::uint64_t u;
+      std::memcpy(&u, &xs[i], sizeof u);
+      const int field = static_cast<int>((u >> 52) & 0x7FF);
+      const std::uint64_t frac = u & ((std::uint64_t(1) << 52) - 1);
+      mant[i] = field == 0 ? frac : frac | (std::uint64_t(1) << 52);  // subnormal, or the hidden bit
+      low[i] = field == 0 ? -1074 : field - 1075;
+      if (mant[i] == 0) continue;
+      const int top = low[i] + 64 - __builtin_clzll(mant[i]);  // |xs[i]| < 2^top
       const int lowest = low[i] + __builtin_ctzll(mant[i]);
       emin = any && emin < lowest ? emin : lowest;
-      emax = any && emax > ex ? emax : ex;
+      emax = any && emax > top ? emax : top;
       any = true;
     }
     bits = any ? emax - emin : 0;
@@ -119,7 +141,7 @@ struct ScaledSmall {
     for (std::size_t i = 0; i < M; ++i) {
       v[i] = 0;
       if (mant[i] == 0) continue;
-      const int shift = low[i] - emin;  // from -52 (only zero bits shifted out) to bits - 53
+      const int shift = low[i] - emin;  // from -52 (only zero bits shifted out) to bits - 1
       const __int128 m = shift >= 0 ? static_cast<__int128>(mant[i]) << shift : static_cast<__int128>(mant[i] >> -shift);
       v[i] = xs[i] < 0 ? -m : m;
     }

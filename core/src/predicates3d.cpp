@@ -144,42 +144,64 @@ int insphere_sign(const S& s) {
   return sign_of(T((dlift * abc - clift * dab) + (blift * cda - alift * bcd)));
 }
 
-// Fixed-width limbs where the coordinates span few bits (exact_wide.hpp):
-// with every |coordinate| < 2^b, every difference is below 2^(b+1) and the
-// determinant of degree k below 2^(k (b+1) + 7) (insphere: 4 terms of a
-// lift below 3 2^(2(b+1)) times a 3x3 minor below 6 2^(3(b+1))). The limbs
-// compute modulo 2^(64 N), so the sign is exact once that final value fits,
-// k (b + 1) + 7 < 64 N, whatever the partial sums do (a wrap cancels out).
-// 2 when too wide.
-template <std::size_t M, int Degree>
-int sign_in_limbs(const double (&xs)[M]) {
+// Fixed-width limbs where the coordinates span at most 125 bits
+// (exact_wide.hpp). With every |coordinate| < 2^b, b <= 125, and b' = b + 1:
+// a difference is below 2^b' (2 limbs); a 2x2 minor below 2^(2b'+1) and a
+// lift below 3 2^(2b') (4 limbs, 255 bits); a 3x3 minor below 6 2^(3b')
+// (6 limbs, 383 bits); orient3d is one, and insphere's four terms of a lift
+// times a 3x3 minor are below 72 2^(5b') <= 2^637 (10 limbs, 639 bits).
+// Every step fits its width, so nothing wraps. 2 when the span is wider.
+int orient3d_limbs(const __int128 (&s)[12]) {
   using namespace exact_wide;
-  const ScaledSmall<M> s(xs);
+  using W2 = Wide<2>;
+  const W2 adx(s[0] - s[9]), ady(s[1] - s[10]), adz(s[2] - s[11]);
+  const W2 bdx(s[3] - s[9]), bdy(s[4] - s[10]), bdz(s[5] - s[11]);
+  const W2 cdx(s[6] - s[9]), cdy(s[7] - s[10]), cdz(s[8] - s[11]);
+  const Wide<4> bc = mul<4>(bdx, cdy) - mul<4>(cdx, bdy), ca = mul<4>(cdx, ady) - mul<4>(adx, cdy);
+  const Wide<4> ab = mul<4>(adx, bdy) - mul<4>(bdx, ady);
+  return (mul<6>(adz, bc) + mul<6>(bdz, ca) + mul<6>(cdz, ab)).sign();
+}
+
+int insphere_limbs(const __int128 (&s)[15]) {
+  using namespace exact_wide;
+  using W2 = Wide<2>;
+  using W4 = Wide<4>;
+  using W6 = Wide<6>;
+  const W2 aex(s[0] - s[12]), aey(s[1] - s[13]), aez(s[2] - s[14]);
+  const W2 bex(s[3] - s[12]), bey(s[4] - s[13]), bez(s[5] - s[14]);
+  const W2 cex(s[6] - s[12]), cey(s[7] - s[13]), cez(s[8] - s[14]);
+  const W2 dex(s[9] - s[12]), dey(s[10] - s[13]), dez(s[11] - s[14]);
+  auto minor = [](const W2& p, const W2& q, const W2& r, const W2& t) { return mul<4>(p, q) - mul<4>(r, t); };
+  const W4 ab = minor(aex, bey, bex, aey), bc = minor(bex, cey, cex, bey), cd = minor(cex, dey, dex, cey);
+  const W4 da = minor(dex, aey, aex, dey), ac = minor(aex, cey, cex, aey), bd = minor(bex, dey, dex, bey);
+  const W6 abc = mul<6>(aez, bc) - mul<6>(bez, ac) + mul<6>(cez, ab);
+  const W6 bcd = mul<6>(bez, cd) - mul<6>(cez, bd) + mul<6>(dez, bc);
+  const W6 cda = mul<6>(cez, da) + mul<6>(dez, ac) + mul<6>(aez, cd);
+  const W6 dab = mul<6>(dez, ab) + mul<6>(aez, bd) + mul<6>(bez, da);
+  auto lift = [](const W2& x, const W2& y, const W2& z) { return mul<4>(x, x) + mul<4>(y, y) + mul<4>(z, z); };
+  const W4 al = lift(aex, aey, aez), bl = lift(bex, bey, bez), cl = lift(cex, cey, cez), dl = lift(dex, dey, dez);
+  return ((mul<10>(dl, abc) - mul<10>(cl, dab)) + (mul<10>(bl, cda) - mul<10>(al, bcd))).sign();
+}
+
+template <std::size_t M>
+int sign_in_limbs(const double (&xs)[M]) {
+  const exact_wide::ScaledSmall<M> s(xs);
   if (!s.ok) return 2;
-  const int need = Degree * (s.bits + 1) + 7;
-  auto eval = [&](auto tag) {
-    using T = decltype(tag);
-    if constexpr (Degree == 3) return orient3d_sign<T>(s.v);
-    else return insphere_sign<T>(s.v);
-  };
-  if (need < 64 * 4) return eval(Wide<4>());
-  if (need < 64 * 6) return eval(Wide<6>());
-  if (need < 64 * 8) return eval(Wide<8>());
-  if (need < 64 * 10) return eval(Wide<10>());
-  return 2;
+  if constexpr (M == 12) return orient3d_limbs(s.v);
+  else return insphere_limbs(s.v);
 }
 
 }  // namespace
 
 int orient3d_rational(Vec3 a, Vec3 b, Vec3 c, Vec3 d) {
   const double xs[] = {a.x, a.y, a.z, b.x, b.y, b.z, c.x, c.y, c.z, d.x, d.y, d.z};
-  const int w = sign_in_limbs<12, 3>(xs);
+  const int w = sign_in_limbs<12>(xs);
   return w != 2 ? w : orient3d_sign<Int>(Scaled<12>(xs));
 }
 
 int insphere_rational(Vec3 a, Vec3 b, Vec3 c, Vec3 d, Vec3 e) {
   const double xs[] = {a.x, a.y, a.z, b.x, b.y, b.z, c.x, c.y, c.z, d.x, d.y, d.z, e.x, e.y, e.z};
-  const int w = sign_in_limbs<15, 5>(xs);
+  const int w = sign_in_limbs<15>(xs);
   return w != 2 ? w : insphere_sign<Int>(Scaled<15>(xs));
 }
 
