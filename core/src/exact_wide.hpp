@@ -10,7 +10,6 @@
 // arbitrary-precision stage.
 #pragma once
 
-#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
@@ -50,8 +49,6 @@ struct Wide {
     }
     return r;
   }
-  /// The negation modulo 2^(64 N).
-  Wide operator-() const { return Wide() - *this; }
   int sign() const {
     if (w[N - 1] >> 63) return -1;
     for (int i = 0; i < N; ++i)
@@ -60,10 +57,6 @@ struct Wide {
   }
 };
 
-template <int N>
-int sign_of(const Wide<N>& v) {
-  return v.sign();
-}
 
 /// a * b modulo 2^(64 NR), NR <= NA + NB: the unsigned product of the
 /// limbs, then a negative operand's weight taken off (a = a_u - 2^(64 NA)
@@ -93,16 +86,6 @@ __attribute__((always_inline)) inline Wide<NR> mul(const Wide<NA>& a, const Wide
   };
   if (a.w[NA - 1] >> 63) take_shifted(b.w, NB, NA);
   if (b.w[NB - 1] >> 63) take_shifted(a.w, NA, NB);
-  return r;
-}
-
-/// v sign-extended to M >= N limbs.
-template <int M, int N>
-Wide<M> widen(const Wide<N>& v) {
-  static_assert(M >= N, "widen only");
-  Wide<M> r;
-  const std::uint64_t fill = (v.w[N - 1] >> 63) ? ~std::uint64_t(0) : 0;
-  for (int i = 0; i < M; ++i) r.w[i] = i < N ? v.w[i] : fill;
   return r;
 }
 
