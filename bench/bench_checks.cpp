@@ -2,11 +2,12 @@
 // held to it, every property: what a campaign does per case), per registered
 // query, on one core, over the campaign's generator mix (the first N cases of
 // `geomcheck campaign --seed 20261121`), two ways in the same run:
-//   before  the engine without its double-double round, and the truth asked
+//   before  the engine without its double-double round, the cast's closed
+//           form without its interval filter (oracle::set_cast_filter), and the truth asked
 //           twice per case (evaluate, then check_all: as campaigns did), and
 //           again by every check that compares the case with a moved copy;
 //   after   the engine's cascade as built (interval filter, doubles,
-//           double-double, then 128 and 384 digits), and the truth asked once
+//           double-double, then 128 and 384 digits), the cast's filter on, and the truth asked once
 //           (check_all(c, e), and evaluate()'s memo: set_evaluation_memo).
 // Both decide with certainty: only the speed differs. Printed after the
 // benchmarks: cases per second of CPU time each way, their ratio, and the
@@ -30,6 +31,7 @@
 #include <string>
 #include <vector>
 
+#include "geomcheck/oracles/cast_segment_cylinder.hpp"
 #include "geomcheck/oracles/engine.hpp"
 #include "geomcheck/properties/checks.hpp"
 #include "geomcheck/properties/spec.hpp"
@@ -73,6 +75,7 @@ template <QueryId Q>
 void bm_check(benchmark::State& state, bool after, int n) {
   static const auto cases = campaign_cases<Q>(n);
   oracle::set_double_double_default(after);
+  oracle::set_cast_filter(after);
   set_evaluation_memo(after);
   Figures& fig = figures()[info(Q).name];
   fig.cases = n;
@@ -114,6 +117,7 @@ void bm_check(benchmark::State& state, bool after, int n) {
   (after ? fig.after : fig.before) = done / s;
   if (after) fig.stages = stages, fig.stage_cases = stage_cases, fig.stage_seconds = stage_seconds;
   oracle::set_double_double_default(true);
+  oracle::set_cast_filter(true);
   set_evaluation_memo(true);
 }
 

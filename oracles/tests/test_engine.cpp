@@ -8,6 +8,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <string>
 #include <utility>
 
@@ -209,6 +210,63 @@ TEST(EngineClosedForm, TimeOfImpactMatchesSegmentCast) {
       RC_ASSERT((r.kind == ImpactResult::Kind::StartsInside) == (truth.t.hi == 0));
     }
   });
+}
+
+// The cast's interval filter (cast_hits, cast_meets_adjusted) gives the
+// rational answer: on the generators' cases (many exact ties), at random
+// margins, and at the margin where the answer flips (found by bisection over
+// the doubles), where the filter is at its bound: there and a few parts in
+// 2^40 either side. It must also decide most of them itself.
+bool meets_adjusted_exactly(const QSegment& s, const QCylinder& c, const Q& delta, int sign) {
+  if (sign > 0) return solve_cast(s, grown(c, delta)).hit;
+  const auto sh = shrunk(c, delta);
+  return sh && solve_cast(s, *sh).hit;
+}
+
+TEST(EngineClosedForm, CastFilterAgreesWithRationals) {
+  const CastFilterCounts before = cast_filter_counts();
+  expect_property("the cast filter's answers are the rational ones", [] {
+    const Cylinder c = *cylinder();
+    const Segment s = *segment();
+    const QSegment qs = to_q(s);
+    const QCylinder qc = to_q(c);
+    RC_LOG() << show(c) << " " << show(s) << "\n";
+    const bool hit = solve_cast(qs, qc).hit;
+    RC_ASSERT(cast_hits(qs, qc) == hit);
+    // A prefix of the segment ends at a rational that is not a double (as
+    // the checks' "S([0, t])" does).
+    const double t = *rc::gen::map(rc::gen::inRange(0, 1 << 20), [](int v) { return v * 0x1p-20 + 0x1p-60; });
+    const QSegment prefix{qs.a, qs.a + to_q(t) * (qs.b - qs.a)};
+    RC_ASSERT(cast_hits(prefix, qc) == solve_cast(prefix, qc).hit);
+    const int k = *rc::gen::inRange(-60, 2);
+    for (int sign : {+1, -1}) {
+      const Q delta = to_q(std::ldexp(1.0, k));
+      RC_ASSERT(cast_meets_adjusted(qs, qc, delta, sign) == meets_adjusted_exactly(qs, qc, delta, sign));
+    }
+    // The flip: a miss meets the cylinder grown enough; a hit misses it shrunk enough.
+    const int sign = hit ? -1 : +1;
+    auto meets = [&](double delta) { return cast_meets_adjusted(qs, qc, to_q(delta), sign); };
+    std::uint64_t lo = 0, hi = 0x4000000000000000;  // the bits of 0 and 2
+    const bool at_lo = meets(0x1p-1074), at_hi = meets(2.0);
+    RC_PRE(at_lo != at_hi);
+    lo = 1;
+    while (hi - lo > 1) {
+      const std::uint64_t mid = lo + (hi - lo) / 2;
+      double m;
+      std::memcpy(&m, &mid, sizeof m);
+      (meets(m) == at_lo ? lo : hi) = mid;
+    }
+    double flip;
+    std::memcpy(&flip, &hi, sizeof flip);
+    RC_LOG() << "flip at " << hex(flip) << "\n";
+    for (double delta : {flip, std::nextafter(flip, 0.0), flip * (1 + 0x1p-40), flip * (1 - 0x1p-40)})
+      RC_ASSERT(meets(delta) == meets_adjusted_exactly(qs, qc, to_q(delta), sign));
+  });
+  const CastFilterCounts after = cast_filter_counts();
+  const std::uint64_t decided = after.decided - before.decided, exact = after.exact - before.exact;
+  std::printf("cast filter: %llu decisions in intervals, %llu in rationals\n", static_cast<unsigned long long>(decided),
+              static_cast<unsigned long long>(exact));
+  EXPECT_GT(decided, 2 * exact) << "the filter decides most cases itself";
 }
 
 TEST(EngineClosedForm, SphereSweepMatchesQuadratic) {

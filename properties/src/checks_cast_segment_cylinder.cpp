@@ -34,9 +34,7 @@ namespace {
 
 // Does the segment meet the cylinder grown (sign > 0) or shrunk (sign < 0) by delta?
 bool meets_adjusted(const oracle::QSegment& s, const oracle::QCylinder& c, const Q& delta, int sign) {
-  if (sign > 0) return oracle::solve_cast(s, oracle::grown(c, delta)).hit;
-  const auto sh = oracle::shrunk(c, delta);
-  return sh && oracle::solve_cast(s, *sh).hit;
+  return oracle::cast_meets_adjusted(s, c, delta, sign);
 }
 
 // How far from touching a disagreeing case is, as a multiple of scale: the
@@ -151,7 +149,7 @@ CheckResult check_metamorphic(const SegmentCylinderCase& c, int move, const Cast
     const Q delta = times_scale(std::max(bounds(c, impl).verdict, bounds(t, impl).verdict), moved_scale) + times_scale(moves::rigid_slack(c.b), moved_scale);
     const oracle::QSegment qs = oracle::to_q(c.a);
     const oracle::QCylinder qc = oracle::to_q(c.b);
-    const bool truth = oracle::solve_cast(qs, qc).hit;
+    const bool truth = oracle::cast_hits(qs, qc);
     const bool certain = truth ? meets_adjusted(qs, qc, delta, -1) : !meets_adjusted(qs, qc, delta, +1);
     if (!certain) return std::nullopt;
     return Failure{what, "verdict changed beyond the band and the motion's rounding: " + describe(h0) + " vs " + describe(h1)};

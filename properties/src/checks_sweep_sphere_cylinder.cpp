@@ -54,8 +54,7 @@ bool path_meets(const SweepCylinderCase& c, double t, const Q& dr) {
     const oracle::DistanceResult d = oracle::classify(oracle::make_shape(c.b), oracle::make_capsule(a, b, r));
     return d.verdict != oracle::Verdict::Separated;
   }
-  const auto sh = oracle::shrunk(oracle::to_q(c.b), -r);
-  return sh && oracle::solve_cast(oracle::QSegment{a, b}, *sh).hit;
+  return oracle::cast_meets_adjusted(oracle::QSegment{a, b}, oracle::to_q(c.b), -r, -1);
 }
 
 }  // namespace

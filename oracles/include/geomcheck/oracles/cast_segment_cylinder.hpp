@@ -12,6 +12,7 @@
 // square-root bracket in the cancellation-free form qc / (-qb + sqrt(D)).
 #pragma once
 
+#include <cstdint>
 #include <optional>
 
 #include "geomcheck/oracles/exact.hpp"
@@ -34,6 +35,27 @@ struct CastTruth {
 /// Exact first hit of the segment with the closed cylinder. Valid input only.
 CastTruth solve_cast(const QSegment& s, const QCylinder& c);
 CastTruth solve_cast(const Segment& s, const Cylinder& c);
+
+/// How many decisions of cast_hits and cast_meets_adjusted the interval
+/// filter took, and how many fell back to rationals (this thread's, since it
+/// started; the tests read them to see the filter decide).
+struct CastFilterCounts {
+  std::uint64_t decided = 0, exact = 0;
+};
+CastFilterCounts& cast_filter_counts();
+
+/// Turns the interval filter of cast_hits and cast_meets_adjusted off (every
+/// decision in rationals) or on (the default); bench_checks compares the two.
+void set_cast_filter(bool on);
+
+/// solve_cast(s, c).hit, decided in outward-rounded double intervals first
+/// and in rationals only where the intervals cannot tell (the same answer).
+bool cast_hits(const QSegment& s, const QCylinder& c);
+
+/// Whether the segment meets `grown(c, delta)` (sign > 0) or `shrunk(c,
+/// delta)` (sign < 0; false when that is empty), decided like cast_hits:
+/// exactly, with the interval filter first.
+bool cast_meets_adjusted(const QSegment& s, const QCylinder& c, const Q& delta, int sign);
 
 /// The cylinder grown by at least `delta` (radius + delta, each cap moved
 /// out by at least delta): contains every point within delta of `c`.
