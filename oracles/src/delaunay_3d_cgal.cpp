@@ -9,6 +9,7 @@
 #include <CGAL/Triangulation_vertex_base_with_info_3.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <numeric>
 #include <utility>
@@ -32,6 +33,70 @@ std::string tet_text(const std::vector<Vec3>& pts, std::uint32_t i, const Tetrah
   return "tetrahedron " + std::to_string(i) + " (" + pt(pts, t[0]) + ", " + pt(pts, t[1]) + ", " + pt(pts, t[2]) +
          ", " + pt(pts, t[3]) + ")";
 }
+
+}  // namespace
+
+IntegerSigns3::IntegerSigns3(const std::vector<Vec3>& pts) {
+  // Each coordinate is m 2^e with m an odd integer: the span from the
+  // lowest set bit of any coordinate to the highest of any.
+  int lowest = 1 << 20, highest = -(1 << 20);
+  for (const Vec3& p : pts)
+    for (double v : {p.x, p.y, p.z}) {
+      if (v == 0) continue;
+      if (!std::isfinite(v)) return;
+      int e = 0;
+      const double f = std::frexp(v, &e);  // |f| in [0.5, 1), v = f 2^e
+      const auto m = static_cast<std::int64_t>(std::ldexp(std::fabs(f), 53));
+      lowest = std::min(lowest, e - 53 + __builtin_ctzll(static_cast<unsigned long long>(m)));
+      highest = std::max(highest, e);
+    }
+  if (highest - lowest > kMaxBits) return;
+  if (highest < lowest) lowest = 0;  // every coordinate zero
+  coords_.reserve(pts.size());
+  for (const Vec3& p : pts)
+    coords_.push_back({std::llround(std::ldexp(p.x, -lowest)), std::llround(std::ldexp(p.y, -lowest)),
+                       std::llround(std::ldexp(p.z, -lowest))});
+  ok_ = true;
+}
+
+int IntegerSigns3::orientation(std::uint32_t p, std::uint32_t q, std::uint32_t r, std::uint32_t s) const {
+  // CGAL's orientationC3: the sign of det(q - p, r - p, s - p).
+  const auto& a = coords_[p];
+  const __int128 qx = coords_[q][0] - a[0], qy = coords_[q][1] - a[1], qz = coords_[q][2] - a[2];
+  const __int128 rx = coords_[r][0] - a[0], ry = coords_[r][1] - a[1], rz = coords_[r][2] - a[2];
+  const __int128 sx = coords_[s][0] - a[0], sy = coords_[s][1] - a[1], sz = coords_[s][2] - a[2];
+  const __int128 det = qx * (ry * sz - rz * sy) - qy * (rx * sz - rz * sx) + qz * (rx * sy - ry * sx);
+  return (det > 0) - (det < 0);
+}
+
+int IntegerSigns3::side_of_oriented_sphere(std::uint32_t p, std::uint32_t q, std::uint32_t r, std::uint32_t s,
+                                           std::uint32_t t) const {
+  // CGAL's side_of_oriented_sphereC3: the sign of the 4x4 determinant of
+  // the rows p - t, r - t, q - t, s - t, each with its squared length.
+  const auto& o = coords_[t];
+  __int128 m[4][4];
+  const std::uint32_t rows[4] = {p, r, q, s};
+  for (int i = 0; i < 4; ++i) {
+    const auto& v = coords_[rows[i]];
+    const __int128 x = v[0] - o[0], y = v[1] - o[1], z = v[2] - o[2];
+    m[i][0] = x, m[i][1] = y, m[i][2] = z, m[i][3] = x * x + y * y + z * z;
+  }
+  // Expansion along the last column by 2x2 minors of the first two rows and
+  // of the last two.
+  auto minor2 = [&](int r0, int r1, int c0, int c1) { return m[r0][c0] * m[r1][c1] - m[r0][c1] * m[r1][c0]; };
+  __int128 det = 0;
+  // Laplace expansion over the column pairs of rows (0, 1) and (2, 3).
+  static constexpr int kPairs[6][2] = {{0, 1}, {0, 2}, {0, 3}, {1, 2}, {1, 3}, {2, 3}};
+  static constexpr int kSigns[6] = {1, -1, 1, 1, -1, 1};
+  for (int k = 0; k < 6; ++k) {
+    const int c0 = kPairs[k][0], c1 = kPairs[k][1];
+    const int d0 = kPairs[5 - k][0], d1 = kPairs[5 - k][1];  // the complementary columns
+    det += kSigns[k] * minor2(0, 1, c0, c1) * minor2(2, 3, d0, d1);
+  }
+  return (det > 0) - (det < 0);
+}
+
+namespace {
 
 // Smallest index of each distinct point, by sorting.
 std::vector<std::uint32_t> representatives(const std::vector<Vec3>& pts) {
@@ -115,6 +180,17 @@ std::string check_delaunay_3d(const std::vector<Vec3>& pts, const std::vector<Te
   }
   if (tets.empty()) return "no tetrahedron for points that span a volume";
 
+  // Exact signs: in integers where the coordinates allow, else CGAL's.
+  const IntegerSigns3 ints(pts);
+  auto orientation = [&](std::uint32_t p, std::uint32_t q, std::uint32_t r, std::uint32_t s) {
+    if (ints.ok()) return ints.orientation(p, q, r, s);
+    return static_cast<int>(CGAL::orientation(cg(pts[p]), cg(pts[q]), cg(pts[r]), cg(pts[s])));
+  };
+  auto inside_sphere = [&](const Tetrahedron& t, std::uint32_t v) {
+    if (ints.ok()) return ints.side_of_oriented_sphere(t[0], t[1], t[2], t[3], v) > 0;
+    return CGAL::side_of_oriented_sphere(cg(pts[t[0]]), cg(pts[t[1]]), cg(pts[t[2]]), cg(pts[t[3]]), cg(pts[v])) ==
+           CGAL::ON_POSITIVE_SIDE;
+  };
   std::vector<Occurrence> occ;
   occ.reserve(4 * tets.size());
   std::vector<char> used(n, 0);
@@ -125,8 +201,7 @@ std::string check_delaunay_3d(const std::vector<Vec3>& pts, const std::vector<Te
         return "tetrahedron " + std::to_string(i) + " names " + std::to_string(t[k]) + ", not a vertex";
       used[t[k]] = 1;
     }
-    if (CGAL::orientation(cg(pts[t[0]]), cg(pts[t[1]]), cg(pts[t[2]]), cg(pts[t[3]])) != CGAL::POSITIVE)
-      return tet_text(pts, i, t) + " is not positively oriented (or is flat)";
+    if (orientation(t[0], t[1], t[2], t[3]) <= 0) return tet_text(pts, i, t) + " is not positively oriented (or is flat)";
     for (int k = 0; k < 4; ++k)
       occ.push_back({rotated({t[kOutward[k][0]], t[kOutward[k][1]], t[kOutward[k][2]]}), i, k});
   }
@@ -150,19 +225,16 @@ std::string check_delaunay_3d(const std::vector<Vec3>& pts, const std::vector<Te
       // Locally Delaunay, both ways round (exact; on the sphere allowed).
       const Tetrahedron& ty = tets[y.t];
       const std::uint32_t vy = ty[y.k], vx = tx[x.k];
-      if (CGAL::side_of_oriented_sphere(cg(pts[tx[0]]), cg(pts[tx[1]]), cg(pts[tx[2]]), cg(pts[tx[3]]),
-                                        cg(pts[vy])) == CGAL::ON_POSITIVE_SIDE)
+      if (inside_sphere(tx, vy))
         return "not locally Delaunay: " + pt(pts, vy) + " lies strictly inside the circumsphere of " +
                tet_text(pts, x.t, tx);
-      if (CGAL::side_of_oriented_sphere(cg(pts[ty[0]]), cg(pts[ty[1]]), cg(pts[ty[2]]), cg(pts[ty[3]]),
-                                        cg(pts[vx])) == CGAL::ON_POSITIVE_SIDE)
+      if (inside_sphere(ty, vx))
         return "not locally Delaunay: " + pt(pts, vx) + " lies strictly inside the circumsphere of " +
                tet_text(pts, y.t, ty);
     } else {
       // A boundary facet: no distinct point strictly outside its plane.
-      const P3 a = cg(pts[x.f[0]]), b = cg(pts[x.f[1]]), c = cg(pts[x.f[2]]);
       for (std::uint32_t p : distinct)
-        if (CGAL::orientation(a, b, c, cg(pts[p])) == CGAL::POSITIVE)
+        if (orientation(x.f[0], x.f[1], x.f[2], p) > 0)
           return "boundary facet (" + std::to_string(x.f[0]) + ", " + std::to_string(x.f[1]) + ", " +
                  std::to_string(x.f[2]) + ") of tetrahedron " + std::to_string(x.t) + " is not on the hull: " +
                  pt(pts, p) + " lies outside it";
@@ -257,11 +329,12 @@ std::string check_convex_hull_3d(const std::vector<Vec3>& pts, const ConvexHull3
              std::to_string(edges[j][2]) + " has no facet on its other side";
   }
   // Every facet on the hull.
+  const IntegerSigns3 ints(pts);
   for (std::uint32_t i = 0; i < hull.facets.size(); ++i) {
     const Facet& f = hull.facets[i];
     const P3 a = cg(pts[f[0]]), b = cg(pts[f[1]]), c = cg(pts[f[2]]);
     for (std::uint32_t q : distinct)
-      if (CGAL::orientation(a, b, c, cg(pts[q])) == CGAL::POSITIVE)
+      if (ints.ok() ? ints.orientation(f[0], f[1], f[2], q) > 0 : CGAL::orientation(a, b, c, cg(pts[q])) == CGAL::POSITIVE)
         return "facet " + std::to_string(i) + " is not on the hull: " + pt(pts, q) + " lies outside its plane";
   }
   // Enclosed volume (from the first point) against the hull's.

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "geomcheck/oracles/delaunay_3d.hpp"
+#include "exact_signs_3d.hpp"
 #include "point_sets_3d.hpp"
 
 namespace geomcheck::oracle {
@@ -146,6 +147,41 @@ TEST(Delaunay3dChecker, CanonicalKeepsOrientation) {
   } while (std::next_permutation(t.begin(), t.end()));
   EXPECT_EQ(seen_even, 12);
   EXPECT_EQ(seen_odd, 12);
+}
+
+// The checkers' integer signs (IntegerSigns3) against rational
+// determinants: small coordinates (ties everywhere), coordinates at the
+// edge of the span, at any power-of-two scale; and the sets they must
+// leave to CGAL.
+TEST(Delaunay3dOracle, IntegerSignsAgreeWithRationals) {
+  std::mt19937_64 rng(kSeed);
+  const std::int64_t edge = (std::int64_t(1) << IntegerSigns3::kMaxBits) - 1;
+  int ties = 0;
+  for (int round = 0; round < 4000; ++round) {
+    std::uniform_int_distribution<std::int64_t> small(-2, 2), wide(-edge, edge), pick(0, 1);
+    const bool at_edge = round % 2 == 1;
+    std::vector<Vec3> p;
+    for (int i = 0; i < 5; ++i) {
+      auto c = [&] { return static_cast<double>(at_edge && pick(rng) ? (pick(rng) ? edge : -edge) : at_edge ? wide(rng) : small(rng)); };
+      p.push_back({c(), c(), c()});
+    }
+    const int k = std::uniform_int_distribution<int>(-1000, 1000)(rng);
+    p = scaled(p, k);
+    const IntegerSigns3 ints(p);
+    ASSERT_TRUE(ints.ok()) << "round " << round;
+    const int o = ints.orientation(0, 1, 2, 3);
+    ASSERT_EQ(o, -test::orient3d_q(p[0], p[1], p[2], p[3])) << "round " << round;
+    const int s = ints.side_of_oriented_sphere(0, 1, 2, 3, 4);
+    ASSERT_EQ(s, -test::insphere_q(p[0], p[1], p[2], p[3], p[4])) << "round " << round;
+    ties += (o == 0) + (s == 0);
+  }
+  EXPECT_GT(ties, 400) << "the small coordinates make ties";
+  // Not for these: a span of 21 bits, a coordinate that is no short
+  // binary fraction, a NaN.
+  EXPECT_FALSE(IntegerSigns3({{0, 0, 0}, {double(std::int64_t(1) << 21), 1, 0}}).ok());
+  EXPECT_FALSE(IntegerSigns3({{0.1, 0, 0}, {1, 1, 1}}).ok());
+  EXPECT_FALSE(IntegerSigns3({{NAN, 0, 0}}).ok());
+  EXPECT_TRUE(IntegerSigns3({{0, 0, 0}}).ok());
 }
 
 }  // namespace

@@ -1,7 +1,9 @@
 // geomcheck — oracles for a 3D Delaunay tetrahedralization and a convex
 // hull: exact validity checkers and CGAL's Delaunay_triangulation_3, both on CGAL's
 // exact predicates (Epick: interval filter, exact fallback), independent of
-// production's (predicates3d.hpp).
+// production's (predicates3d.hpp); the checkers take their signs from 128-bit
+// integers instead where every coordinate is a short integer times one power
+// of two (IntegerSigns3).
 //
 // A tetrahedralization of points p[0..n) is a list of index quadruples. Its
 // conventions, which check_delaunay_3d holds:
@@ -43,6 +45,30 @@
 namespace geomcheck::oracle {
 
 using Tetrahedron = std::array<std::uint32_t, 4>;
+
+/// Exact orientation and in-sphere signs in 128-bit integers, for point
+/// sets whose coordinates are all integers times one power of two, spanning
+/// at most kMaxBits bits (grids, integer spheres and planes, small integers,
+/// at any exact power-of-two scale): the checkers ask these first and CGAL's
+/// predicates for any other set. Signs follow CGAL's orientation and
+/// side_of_oriented_sphere on the points of the given indices.
+class IntegerSigns3 {
+ public:
+  static constexpr int kMaxBits = 20;  // |x| < 2^20: an in-sphere determinant stays below 2^112
+  explicit IntegerSigns3(const std::vector<Vec3>& points);
+  /// Whether the set qualifies (else neither sign may be asked).
+  bool ok() const { return ok_; }
+  /// CGAL::orientation(p, q, r, s): +1 when s is on the positive side of pqr.
+  int orientation(std::uint32_t p, std::uint32_t q, std::uint32_t r, std::uint32_t s) const;
+  /// CGAL::side_of_oriented_sphere(p, q, r, s, t): +1 when t is inside the
+  /// sphere of the positively oriented pqrs.
+  int side_of_oriented_sphere(std::uint32_t p, std::uint32_t q, std::uint32_t r, std::uint32_t s,
+                              std::uint32_t t) const;
+
+ private:
+  bool ok_ = false;
+  std::vector<std::array<std::int64_t, 3>> coords_;
+};
 
 /// "" when `tets` is a Delaunay tetrahedralization of `points` (above), else
 /// the first violation found, in words, naming the tetrahedron, facet or
