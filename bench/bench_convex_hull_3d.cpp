@@ -16,11 +16,11 @@
 #include <cstdint>
 #include <cstdio>
 #include <map>
-#include <random>
 #include <string>
 #include <vector>
 
 #include "geomcheck/convex_hull_3d.hpp"
+#include "point_sets_3d.hpp"
 
 namespace {
 
@@ -35,24 +35,10 @@ const std::vector<Vec3>& point_set(int k) {
   static std::map<int, std::vector<Vec3>> cache;
   auto& p = cache[k];
   if (!p.empty()) return p;
-  std::mt19937_64 rng(kSeed);
-  std::uniform_real_distribution<double> u(-1, 1);
-  std::normal_distribution<double> g(0, 1);
-  if (k == 0 || k == 1 || k == 4 || k == 5) {
-    p.resize(k == 0 ? 100000 : 1000000);
-    const int e = k == 4 ? 500 : (k == 5 ? -500 : 0);
-    for (Vec3& q : p) q = {std::ldexp(u(rng), e), std::ldexp(u(rng), e), std::ldexp(u(rng), e)};
-  } else if (k == 2) {
-    p.resize(100000);
-    for (Vec3& q : p) {
-      const Vec3 v{g(rng), g(rng), g(rng)};
-      q = (1 / length(v)) * v;
-    }
-  } else {
-    for (int x = 0; x < 100; ++x)
-      for (int y = 0; y < 100; ++y)
-        for (int z = 0; z < 100; ++z) p.push_back({double(x), double(y), double(z)});
-  }
+  namespace b = geomcheck::bench3d;
+  if (k == 2) p = b::sphere(100000, kSeed);
+  else if (k == 3) p = b::grid(100);
+  else p = b::uniform(k == 0 ? 100000 : 1000000, -1, 1, k == 4 ? 500 : (k == 5 ? -500 : 0), kSeed);
   return p;
 }
 constexpr const char* kNames[] = {"uniform-1e5", "uniform-1e6", "sphere-1e5", "grid-100^3", "uniform-1e6-x2^500",
@@ -73,9 +59,7 @@ void BM_geomcheck(benchmark::State& s) {
 
 void BM_cgal(benchmark::State& s) {
   const std::vector<Vec3>& p = point_set(static_cast<int>(s.range(0)));
-  std::vector<K::Point_3> pts;
-  pts.reserve(p.size());
-  for (const Vec3& q : p) pts.emplace_back(q.x, q.y, q.z);
+  const std::vector<K::Point_3> pts = geomcheck::bench3d::cgal_points<K>(p);
   std::size_t facets = 0;
   for (auto _ : s) {
     CGAL::Surface_mesh<K::Point_3> m;

@@ -16,11 +16,11 @@
 #include <cstdint>
 #include <cstdio>
 #include <map>
-#include <random>
 #include <string>
 #include <vector>
 
 #include "geomcheck/delaunay_3d.hpp"
+#include "point_sets_3d.hpp"
 #include "pointset_bench.hpp"
 
 namespace {
@@ -40,24 +40,10 @@ const std::vector<Vec3>& point_set(int k) {
   static std::map<int, std::vector<Vec3>> cache;
   auto& p = cache[k];
   if (!p.empty()) return p;
-  std::mt19937_64 rng(kSeed);
-  std::uniform_real_distribution<double> u(0, 1);
-  std::normal_distribution<double> g(0, 1);
-  if (k == 2) {
-    for (int x = 0; x < 100; ++x)
-      for (int y = 0; y < 100; ++y)
-        for (int z = 0; z < 100; ++z) p.push_back({double(x), double(y), double(z)});
-  } else if (k == 3) {
-    p.resize(100000);
-    for (Vec3& q : p) {
-      const Vec3 v{g(rng), g(rng), g(rng)};
-      q = (1 / length(v)) * v;
-    }
-  } else {
-    p.resize(k == 0 ? 100000 : 1000000);
-    const int e = k == 4 ? 500 : (k == 5 ? -500 : 0);
-    for (Vec3& q : p) q = {std::ldexp(u(rng), e), std::ldexp(u(rng), e), std::ldexp(u(rng), e)};
-  }
+  namespace b = geomcheck::bench3d;
+  if (k == 2) p = b::grid(100);
+  else if (k == 3) p = b::sphere(100000, kSeed);
+  else p = b::uniform(k == 0 ? 100000 : 1000000, 0, 1, k == 4 ? 500 : (k == 5 ? -500 : 0), kSeed);
   return p;
 }
 
@@ -75,9 +61,7 @@ void BM_geomcheck(benchmark::State& s) {
 
 void BM_cgal(benchmark::State& s) {
   const std::vector<Vec3>& p = point_set(static_cast<int>(s.range(0)));
-  std::vector<K::Point_3> pts;
-  pts.reserve(p.size());
-  for (const Vec3& q : p) pts.emplace_back(q.x, q.y, q.z);
+  const std::vector<K::Point_3> pts = geomcheck::bench3d::cgal_points<K>(p);
   std::size_t tets = 0;
   for (auto _ : s) {
     DT dt(pts.begin(), pts.end());
